@@ -1,0 +1,41 @@
+#pragma once
+// The mesh type every conformal algorithm works on: an OpenMesh half-edge triangle mesh with
+// double-precision points (curvature to 1e-10 needs doubles end to end).
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include <filesystem>
+#include <string>
+
+namespace confvis::conformal {
+
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble>;
+using Vec3 = TriMesh::Point;
+
+struct MeshTopology {
+  int vertices = 0;
+  int edges = 0;
+  int faces = 0;
+  int boundaryLoops = 0;
+  int isolatedVertices = 0;
+  int eulerCharacteristic = 0;  // V - E + F
+  int components = 0;
+  bool isDisk() const {
+    return components == 1 && boundaryLoops == 1 && eulerCharacteristic == 1 &&
+           isolatedVertices == 0;
+  }
+  std::string describe() const;  // "V=…, F=…, Euler characteristic …, … boundary loops"
+};
+
+MeshTopology analyzeTopology(const TriMesh& mesh);
+
+// Throws Error(InvalidInput) naming `what` unless the mesh is a single topological disk.
+void requireDisk(const TriMesh& mesh, const std::string& what);
+
+// Reads any format OpenMesh reads (OBJ, OFF, PLY, STL). Throws FileNotFound / InvalidInput with
+// the path; rejects meshes with no faces, non-finite coordinates or zero-length edges.
+TriMesh readMesh(const std::filesystem::path& path);
+
+// Boundary loops as vertex index lists, each following the boundary half-edges.
+std::vector<std::vector<int>> boundaryLoops(const TriMesh& mesh);
+
+}  // namespace confvis::conformal

@@ -1,0 +1,36 @@
+#pragma once
+// Progress for long-running commands: a redrawn bar on a terminal, occasional plain lines
+// otherwise (CI logs), nothing when disabled. Thread-safe: workers may call advance().
+#include <atomic>
+#include <chrono>
+#include <cstddef>
+#include <mutex>
+#include <string>
+
+namespace confvis {
+
+class Progress {
+ public:
+  Progress(std::string label, std::size_t total, bool enabled = true);
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  void advance(std::size_t steps = 1);
+  void finish();
+
+ private:
+  void draw(std::size_t done, bool final);
+
+  std::string label_;
+  std::size_t total_;
+  bool enabled_;
+  bool tty_;
+  std::atomic<std::size_t> done_{0};
+  std::mutex drawMutex_;
+  std::chrono::steady_clock::time_point start_, lastDraw_;
+  int lastPercentPrinted_ = -1;
+  bool finished_ = false;
+};
+
+}  // namespace confvis

@@ -1,0 +1,25 @@
+#pragma once
+// Subcommands register themselves (one .cpp per subcommand, compiled into the confvis binary),
+// so adding a command never touches main.cpp.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace confvis::cli {
+
+struct Command {
+  std::string name;
+  std::string description;
+  // Adds options to `sub` and returns the action to run when the subcommand is chosen.
+  std::function<std::function<int()>(CLI::App& sub)> setup;
+};
+
+std::vector<Command>& commandRegistry();
+
+struct RegisterCommand {
+  explicit RegisterCommand(Command command) { commandRegistry().push_back(std::move(command)); }
+};
+
+}  // namespace confvis::cli

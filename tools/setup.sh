@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs everything confvis needs to build and test on Debian 12 (bookworm), as root.
+# Debian packages only; no downloads besides apt.
+set -euo pipefail
+packages=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git
+  # rendering: Vulkan (lavapipe for headless CI), shader compiler, Embree
+  mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers glslang-tools glslang-dev spirv-tools
+  libembree-dev libtbb-dev
+  # geometry and numerics
+  libglm-dev libopenmesh-dev libeigen3-dev
+  # image and scene I/O: EXR, PNG previews, OBJ and glTF loaders (tinygltf uses stb + nlohmann)
+  libopenexr-dev libpng-dev libtinyobjloader-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
+  # CLI parsing and tests
+  libcli11-dev libgtest-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+echo "setup: all ${#packages[@]} packages present"
