@@ -5,6 +5,7 @@
 
 #include "command.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/engine/version.hpp"
 
 namespace confvis::cli {
 std::vector<Command>& commandRegistry() {
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "confvis: conformal retargeting of the full field of view onto CAVEs and display walls"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", confvis::versionString());
   auto& registry = commandRegistry();
   std::sort(registry.begin(), registry.end(),
             [](const Command& a, const Command& b) { return a.name < b.name; });
