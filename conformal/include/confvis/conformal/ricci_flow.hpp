@@ -1,0 +1,81 @@
+#pragma once
+// The unified discrete surface Ricci flow (dissertation Chapter 4, Algorithm 7 of Appendix B):
+// Newton's method on the discrete Ricci energy of a circle packing metric, for every scheme and
+// background geometry, with step control that keeps every triangle valid, a sparse LDLᵀ whose
+// symbolic analysis is reused across iterations, and optional (power) Delaunay edge flips.
+#include <Eigen/SparseCore>
+
+#include <functional>
+#include <vector>
+
+#include "confvis/conformal/circle_packing.hpp"
+#include "confvis/conformal/intrinsic_triangulation.hpp"
+
+namespace confvis::conformal {
+
+struct CirclePackingMetric {
+  Geometry geometry = Geometry::Euclidean;
+  Scheme scheme = Scheme::Yamabe;
+  std::vector<double> u;        // conformal factor per vertex
+  std::vector<int> epsilon;     // scheme coefficient per vertex: +1, 0 or -1
+  std::vector<double> eta;      // conformal structure coefficient per edge
+};
+
+// ε per vertex used by Scheme::Mixed when none is given: +1 on even, 0 on odd vertex indices.
+std::vector<int> defaultMixedEpsilon(int vertexCount);
+
+// Initial metric per Appendix B, Step 1: radii chosen per scheme, then η solved from (4.1.2)
+// so that the metric reproduces `lengths` (edge lengths in the background geometry). Exact for
+// inversive distance, Yamabe, virtual radius and mixed; tangential (η ≡ 1) and Thurston
+// (η ∈ [0,1]) cannot represent arbitrary lengths and only approximate them.
+CirclePackingMetric initialMetric(const IntrinsicTriangulation& tri,
+                                  const std::vector<double>& lengths, Scheme scheme,
+                                  Geometry geometry, const std::vector<int>& mixedEpsilon = {});
+
+// Edge lengths of a metric; throws Error(InvalidInput) naming the edge where (4.1.2) has no
+// solution.
+std::vector<double> metricEdgeLengths(const IntrinsicTriangulation& tri,
+                                      const CirclePackingMetric& metric);
+
+// Angle-deficit curvature (2π minus the angle sum inside, π on the boundary); throws naming the
+// face if a triangle is invalid.
+std::vector<double> vertexCurvature(const IntrinsicTriangulation& tri,
+                                    const CirclePackingMetric& metric);
+
+// The Hessian H = ∂K/∂u (full symmetric matrix), for tests and diagnostics.
+Eigen::SparseMatrix<double> curvatureJacobian(const IntrinsicTriangulation& tri,
+                                              const CirclePackingMetric& metric);
+
+// Checks a target against Gauss-Bonnet and the per-vertex bounds before any flow runs.
+// Euclidean: Σ K̄ = 2πχ. Hyperbolic: Σ K̄ > 2πχ (the excess is the area). Spherical: Σ K̄ < 2πχ.
+// Throws Error(Unreachable) saying which condition fails, by how much.
+void checkTargetCurvature(const IntrinsicTriangulation& tri, Geometry geometry,
+                          const std::vector<double>& target);
+
+struct RicciFlowOptions {
+  double tolerance = 1e-10;      // on max |K̄ - K|
+  int maxIterations = 100;
+  bool delaunayFlips = false;    // keep the triangulation (power) Delaunay by edge flips
+  // Called after each Newton iteration with (iteration, max curvature error).
+  std::function<void(int, double)> onIteration;
+};
+
+struct RicciFlowReport {
+  int iterations = 0;
+  double maxCurvatureError = 0;
+  int flips = 0;
+  int stepHalvings = 0;          // total line-search reductions
+  int factorizations = 0;
+  int symbolicAnalyses = 0;
+  std::vector<double> errorHistory;
+};
+
+// Runs the flow in place: on return metric.u realises `target` to options.tolerance (and, with
+// flips, `tri` is the final Delaunay triangulation). Throws Error(Unreachable) with the reason
+// when the target is inadmissible, the flow stalls (no step keeps the triangles valid and
+// reduces the error) or the iteration cap is hit. Never returns NaN.
+RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
+                             const std::vector<double>& target,
+                             const RicciFlowOptions& options = {});
+
+}  // namespace confvis::conformal

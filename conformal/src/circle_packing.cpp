@@ -1,0 +1,173 @@
+#include "confvis/conformal/circle_packing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "confvis/base/error.hpp"
+
+namespace confvis::conformal {
+
+const char* toString(Geometry g) noexcept {
+  switch (g) {
+    case Geometry::Euclidean: return "euclidean";
+    case Geometry::Hyperbolic: return "hyperbolic";
+    case Geometry::Spherical: return "spherical";
+  }
+  return "?";
+}
+
+const char* toString(Scheme s) noexcept {
+  switch (s) {
+    case Scheme::Tangential: return "tangential";
+    case Scheme::Thurston: return "thurston";
+    case Scheme::InversiveDistance: return "inversive";
+    case Scheme::Yamabe: return "yamabe";
+    case Scheme::VirtualRadius: return "virtual";
+    case Scheme::Mixed: return "mixed";
+  }
+  return "?";
+}
+
+Geometry parseGeometry(const std::string& name) {
+  for (Geometry g : kAllGeometries)
+    if (name == toString(g)) return g;
+  throw Error(ErrorCode::InvalidInput,
+              "unknown geometry '" + name + "' (expected euclidean, hyperbolic or spherical)");
+}
+
+Scheme parseScheme(const std::string& name) {
+  for (Scheme s : kAllSchemes)
+    if (name == toString(s)) return s;
+  throw Error(ErrorCode::InvalidInput,
+              "unknown scheme '" + name +
+                  "' (expected tangential, thurston, inversive, yamabe, virtual or mixed)");
+}
+
+double conformalFactorFromRadius(Geometry g, double r) {
+  switch (g) {
+    case Geometry::Euclidean: return std::log(r);
+    case Geometry::Hyperbolic: return std::log(std::tanh(r / 2));
+    case Geometry::Spherical: return std::log(std::tan(r / 2));
+  }
+  return 0;
+}
+
+double radiusFromConformalFactor(Geometry g, double u) {
+  switch (g) {
+    case Geometry::Euclidean: return std::exp(u);
+    case Geometry::Hyperbolic: return 2 * std::atanh(std::exp(u));
+    case Geometry::Spherical: return 2 * std::atan(std::exp(u));
+  }
+  return 0;
+}
+
+double backgroundCurvature(Geometry g) noexcept {
+  return g == Geometry::Euclidean ? 0.0 : (g == Geometry::Hyperbolic ? -1.0 : 1.0);
+}
+
+// (4.1.2) with a_i = ε_i e^{2u_i} and c = 4η e^{u_i+u_j}:
+//   H²: cosh l = (c + (1+a_i)(1+a_j)) / ((1-a_i)(1-a_j))
+//   S²: cos  l = (-c + (1-a_i)(1-a_j)) / ((1+a_i)(1+a_j))
+// Differentiating, ∂a_i/∂u_i = 2a_i and ∂c/∂u_i = c.
+EdgeLength edgeLength(Geometry g, double ui, double uj, double eta, int epsi, int epsj) {
+  EdgeLength r;
+  if (g == Geometry::Euclidean) {
+    const double xi = std::exp(ui), xj = std::exp(uj);
+    const double cross = eta * xi * xj;
+    const double l2 = 2 * cross + epsi * xi * xi + epsj * xj * xj;
+    if (!(l2 > 0) || !std::isfinite(l2)) return r;
+    r.length = std::sqrt(l2);
+    r.dLength_dui = (cross + epsi * xi * xi) / r.length;
+    r.dLength_duj = (cross + epsj * xj * xj) / r.length;
+    r.valid = true;
+    return r;
+  }
+  const double ai = epsi * std::exp(2 * ui), aj = epsj * std::exp(2 * uj);
+  const double c = 4 * eta * std::exp(ui + uj);
+  const double sign = g == Geometry::Hyperbolic ? 1.0 : -1.0;  // H² vs S² pattern
+  const double num = sign * c + (1 + sign * ai) * (1 + sign * aj);
+  const double den = (1 - sign * ai) * (1 - sign * aj);
+  if (!(den > 0) || !std::isfinite(num)) return r;
+  const double C = num / den;
+  const double dNum_dui = sign * c + 2 * sign * ai * (1 + sign * aj);
+  const double dNum_duj = sign * c + 2 * sign * aj * (1 + sign * ai);
+  const double dDen_dui = -2 * sign * ai * (1 - sign * aj);
+  const double dDen_duj = -2 * sign * aj * (1 - sign * ai);
+  const double dC_dui = (dNum_dui * den - num * dDen_dui) / (den * den);
+  const double dC_duj = (dNum_duj * den - num * dDen_duj) / (den * den);
+  if (g == Geometry::Hyperbolic) {
+    if (!(C > 1)) return r;
+    r.length = std::acosh(C);
+    const double s = std::sinh(r.length);
+    r.dLength_dui = dC_dui / s;
+    r.dLength_duj = dC_duj / s;
+  } else {
+    if (!(C < 1 && C > -1)) return r;
+    r.length = std::acos(C);
+    const double s = std::sin(r.length);
+    r.dLength_dui = -dC_dui / s;
+    r.dLength_duj = -dC_duj / s;
+  }
+  r.valid = std::isfinite(r.dLength_dui) && std::isfinite(r.dLength_duj);
+  return r;
+}
+
+double etaForLength(Geometry g, double length, double ui, double uj, int epsi, int epsj) {
+  if (g == Geometry::Euclidean) {
+    const double xi = std::exp(ui), xj = std::exp(uj);
+    return (length * length - epsi * xi * xi - epsj * xj * xj) / (2 * xi * xj);
+  }
+  const double ai = epsi * std::exp(2 * ui), aj = epsj * std::exp(2 * uj);
+  const double scale = 4 * std::exp(ui + uj);
+  if (g == Geometry::Hyperbolic)
+    return (std::cosh(length) * (1 - ai) * (1 - aj) - (1 + ai) * (1 + aj)) / scale;
+  return ((1 - ai) * (1 - aj) - std::cos(length) * (1 + ai) * (1 + aj)) / scale;
+}
+
+namespace {
+// s(x) of Table B.1: the "sine" of the geometry.
+double sineOf(Geometry g, double x) {
+  return g == Geometry::Euclidean ? x : (g == Geometry::Hyperbolic ? std::sinh(x) : std::sin(x));
+}
+}  // namespace
+
+bool cornerAngles(Geometry g, const std::array<double, 3>& l, std::array<double, 3>& angles) {
+  for (int c = 0; c < 3; ++c) {
+    const double a = l[c], b = l[(c + 1) % 3], d = l[(c + 2) % 3];
+    if (!(a < b + d)) return false;  // also rejects NaN
+  }
+  if (g == Geometry::Spherical && !(l[0] + l[1] + l[2] < 2 * std::numbers::pi)) return false;
+  for (int c = 0; c < 3; ++c) {
+    const double li = l[c], lj = l[(c + 1) % 3], lk = l[(c + 2) % 3];
+    double cosTheta;
+    switch (g) {
+      case Geometry::Euclidean: cosTheta = (lj * lj + lk * lk - li * li) / (2 * lj * lk); break;
+      case Geometry::Hyperbolic:
+        cosTheta = (std::cosh(lj) * std::cosh(lk) - std::cosh(li)) / (std::sinh(lj) * std::sinh(lk));
+        break;
+      default:
+        cosTheta = (std::cos(li) - std::cos(lj) * std::cos(lk)) / (std::sin(lj) * std::sin(lk));
+    }
+    // Valid triangles give |cos| ≤ 1 up to rounding; clamp only that rounding.
+    angles[c] = std::acos(std::clamp(cosTheta, -1.0, 1.0));
+  }
+  return true;
+}
+
+// Derivative cosine law: with A = sinθ_i s(l_j) s(l_k) (the same for every corner by the sine
+// law), ∂θ_i/∂l_i = s(l_i)/A and ∂θ_i/∂l_j = -s(l_i) cosθ_k / A.
+void angleLengthDerivatives(Geometry g, const std::array<double, 3>& l,
+                            const std::array<double, 3>& angles,
+                            std::array<std::array<double, 3>, 3>& d) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    const double A = std::sin(angles[i]) * sineOf(g, l[j]) * sineOf(g, l[k]);
+    const double si = sineOf(g, l[i]);
+    d[i][i] = si / A;
+    d[i][j] = -si * std::cos(angles[k]) / A;
+    d[i][k] = -si * std::cos(angles[j]) / A;
+  }
+}
+
+}  // namespace confvis::conformal
