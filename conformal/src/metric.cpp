@@ -72,7 +72,8 @@ bool flippedEdgeLength(const IntrinsicTriangulation& tri, const MetricEvaluation
   // f0 = (p, q, r), f1 = (s, r, q): angles at q and r, summed over both triangles.
   const double angleQ = eval.angles[f0][(c0 + 1) % 3] + eval.angles[f1][(c1 + 2) % 3];
   const double angleR = eval.angles[f0][(c0 + 2) % 3] + eval.angles[f1][(c1 + 1) % 3];
-  if (!(angleQ < std::numbers::pi && angleR < std::numbers::pi)) return false;
+  constexpr double margin = 1e-9;  // strictly convex quads only: flat ones round badly
+  if (!(angleQ < std::numbers::pi - margin && angleR < std::numbers::pi - margin)) return false;
   const double a = eval.edges[tri.faceEdges[f0][(c0 + 2) % 3]].length;  // pq
   const double b = eval.edges[tri.faceEdges[f1][(c1 + 1) % 3]].length;  // qs
   const double cosA = std::cos(angleQ);

@@ -115,12 +115,20 @@ int restoreDelaunay(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
       if (weight >= -1e-12) continue;
       double newLength;
       if (!detail::flippedEdgeLength(tri, eval, metric.geometry, e, newLength)) continue;
+      const double oldEta = metric.eta[e];
       tri.flip(e);
       const int p = tri.edgeVertices[e][0], s = tri.edgeVertices[e][1];
       metric.eta[e] = etaForLength(metric.geometry, newLength, metric.u[p], metric.u[s],
                                    metric.epsilon[p], metric.epsilon[s]);
       detail::evaluateMetric(tri, metric, metric.u, eval);
-      if (!eval.valid()) throw Error(ErrorCode::Internal, "edge flip produced an invalid metric");
+      if (!eval.valid()) {
+        // A nearly flat quad: rounding makes a new triangle invalid. Undo; flipping the new
+        // diagonal restores the old one.
+        tri.flip(e);
+        metric.eta[e] = oldEta;
+        detail::evaluateMetric(tri, metric, metric.u, eval);
+        continue;
+      }
       ++flips;
       changed = true;
     }

@@ -1,0 +1,41 @@
+#pragma once
+// The Riemann map of a topological disk onto the unit disk (dissertation §8.2): remove the face
+// farthest from the boundary, flatten the annulus by Euclidean Ricci flow with zero target
+// curvature everywhere (a flat cylinder with straight boundaries), cut it along a shortest
+// edge path, lay it out, scale the period to 2πi, apply exp, normalise the outer circle to 1.
+#include <complex>
+#include <functional>
+#include <vector>
+
+#include "confvis/conformal/mesh.hpp"
+#include "confvis/conformal/ricci_flow.hpp"
+
+namespace confvis::conformal {
+
+enum class FlipPolicy { Off, On, Auto };  // Auto: retry with flips if the flow stalls
+
+struct DiskMapOptions {
+  Scheme scheme = Scheme::Yamabe;
+  double tolerance = 1e-10;
+  int maxIterations = 100;
+  FlipPolicy flips = FlipPolicy::Auto;
+  int removedFace = -1;  // face index to remove; -1 = the one farthest from the boundary
+  std::function<void(int, double)> onIteration;
+};
+
+struct DiskMap {
+  std::vector<std::complex<double>> uv;  // per input vertex, in the closed unit disk
+  int removedFace = -1;
+  bool usedFlips = false;
+  RicciFlowReport flow;
+};
+
+// Throws Error(InvalidInput) for a mesh that is not a disk (naming its Euler characteristic and
+// boundary loops) or too coarse to have a face off the boundary; Error(Unreachable) if the
+// flow fails. The map preserves the input orientation.
+DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options = {});
+
+// Applies a Möbius alignment sending boundary vertices a, b, c to 1, i, -1.
+void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c);
+
+}  // namespace confvis::conformal

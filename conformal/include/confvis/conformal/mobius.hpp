@@ -1,0 +1,30 @@
+#pragma once
+// Möbius transformations z ↦ (az + b)/(cz + d), built from exact cross-ratios (dissertation
+// §8.3.3, whose printed second map is garbled): align(p, q, r) sends p, q, r to 1, i, -1.
+#include <complex>
+
+namespace confvis::conformal {
+
+using Complex = std::complex<double>;
+
+class Mobius {
+ public:
+  Mobius() = default;  // identity
+  Mobius(Complex a, Complex b, Complex c, Complex d) : a_(a), b_(b), c_(c), d_(d) {}
+
+  Complex operator()(Complex z) const { return (a_ * z + b_) / (c_ * z + d_); }
+  Mobius inverse() const { return {d_, -b_, -c_, a_}; }
+  // (f * g)(z) = f(g(z))
+  Mobius operator*(const Mobius& g) const;
+
+  // Sends p, q, r to 0, ∞, 1: m(z) = ((z - p)(r - q)) / ((z - q)(r - p)).
+  static Mobius crossRatio(Complex p, Complex q, Complex r);
+  // Sends p, q, r to 1, i, -1. For p, q, r counter-clockwise on the unit circle the result maps
+  // the unit disk onto itself; throws Error(InvalidInput) for clockwise or coincident markers.
+  static Mobius alignMarkers(Complex p, Complex q, Complex r);
+
+ private:
+  Complex a_{1}, b_{0}, c_{0}, d_{1};
+};
+
+}  // namespace confvis::conformal

@@ -1,0 +1,230 @@
+#include "confvis/conformal/disk_map.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <queue>
+
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/mobius.hpp"
+
+namespace confvis::conformal {
+namespace {
+
+using Complex = std::complex<double>;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Shortest distances along edges from a set of source vertices. `blocked(v)` vertices are
+// never expanded (they may still be reached); `edgeAllowed(e)` filters edges.
+template <typename Blocked, typename EdgeAllowed>
+std::vector<double> dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengths,
+                             const std::vector<int>& sources, std::vector<int>& parentEdge,
+                             Blocked blocked, EdgeAllowed edgeAllowed) {
+  std::vector<std::vector<int>> incident(tri.vertexCount);
+  for (int e = 0; e < tri.edgeCount(); ++e)
+    for (int v : tri.edgeVertices[e]) incident[v].push_back(e);
+  std::vector<double> dist(tri.vertexCount, kInf);
+  parentEdge.assign(tri.vertexCount, -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (int s : sources) {
+    dist[s] = 0;
+    queue.push({0.0, s});
+  }
+  while (!queue.empty()) {
+    auto [d, v] = queue.top();
+    queue.pop();
+    if (d > dist[v] || blocked(v)) continue;
+    for (int e : incident[v]) {
+      if (!edgeAllowed(e)) continue;
+      const int w = tri.edgeVertices[e][0] == v ? tri.edgeVertices[e][1] : tri.edgeVertices[e][0];
+      if (d + lengths[e] < dist[w]) {
+        dist[w] = d + lengths[e];
+        parentEdge[w] = e;
+        queue.push({dist[w], w});
+      }
+    }
+  }
+  return dist;
+}
+
+int faceFarthestFromBoundary(const TriMesh& mesh) {
+  const auto tri = buildTriangulation(mesh);
+  const auto lengths = embeddedEdgeLengths(tri, mesh);
+  std::vector<int> boundary, parent;
+  for (int v = 0; v < tri.vertexCount; ++v)
+    if (tri.vertexOnBoundary[v]) boundary.push_back(v);
+  const auto dist = dijkstra(tri, lengths, boundary, parent, [](int) { return false; },
+                             [](int) { return true; });
+  int best = -1;
+  double bestScore = 0;
+  for (int f = 0; f < tri.faceCount(); ++f) {
+    const auto& fv = tri.faceVertices[f];
+    const double score = std::min({dist[fv[0]], dist[fv[1]], dist[fv[2]]});
+    if (score > bestScore) {
+      bestScore = score;
+      best = f;
+    }
+  }
+  if (best < 0)
+    throw Error(ErrorCode::InvalidInput,
+                "mesh is too coarse for a disk map: every face touches the boundary (refine it)");
+  return best;
+}
+
+// Develops the cut annulus into the plane face by face; returns per-corner positions.
+std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
+                                           const std::vector<double>& lengths,
+                                           const std::vector<char>& edgeCut) {
+  std::vector<std::array<Complex, 3>> corner(tri.faceCount());
+  std::vector<char> placed(tri.faceCount(), 0);
+  auto angleAt = [&](int f, int c) {  // Euclidean cosine law at corner c
+    const double a = lengths[tri.faceEdges[f][c]], b = lengths[tri.faceEdges[f][(c + 1) % 3]],
+                 d = lengths[tri.faceEdges[f][(c + 2) % 3]];
+    return std::acos(std::clamp((b * b + d * d - a * a) / (2 * b * d), -1.0, 1.0));
+  };
+  // Third corner of face f given corners c1 = c0+1 and c2 = c0+2 already placed (CCW order).
+  auto placeThird = [&](int f, int c0) {
+    const int c1 = (c0 + 1) % 3, c2 = (c0 + 2) % 3;
+    // In a CCW triangle the ray c2→c0 is the ray c2→c1 turned clockwise by the angle at c2.
+    const Complex toC1 = (corner[f][c1] - corner[f][c2]) / std::abs(corner[f][c1] - corner[f][c2]);
+    const double len = lengths[tri.faceEdges[f][c1]];  // edge c2-c0 is opposite c1
+    corner[f][c0] = corner[f][c2] + len * toC1 * std::polar(1.0, -angleAt(f, c2));
+  };
+  std::queue<int> queue;
+  {
+    const int f = 0;
+    corner[f][0] = 0;
+    corner[f][1] = lengths[tri.faceEdges[f][2]];  // edge 0-1 is opposite corner 2
+    placeThird(f, 2);
+    placed[f] = 1;
+    queue.push(f);
+  }
+  while (!queue.empty()) {
+    const int f = queue.front();
+    queue.pop();
+    for (int c = 0; c < 3; ++c) {
+      const int e = tri.faceEdges[f][c];
+      if (edgeCut[e] || tri.edgeOnBoundary(e)) continue;
+      const int g = tri.edgeFaces[e][0] == f ? tri.edgeFaces[e][1] : tri.edgeFaces[e][0];
+      if (placed[g]) continue;
+      const int cg = tri.cornerOpposite(g, e);
+      // Shared edge: in g it runs (cg+1) → (cg+2), the reverse of f's (c+1) → (c+2).
+      corner[g][(cg + 1) % 3] = corner[f][(c + 2) % 3];
+      corner[g][(cg + 2) % 3] = corner[f][(c + 1) % 3];
+      placeThird(g, cg);
+      placed[g] = 1;
+      queue.push(g);
+    }
+  }
+  for (char p : placed)
+    if (!p) throw Error(ErrorCode::Internal, "disk map layout did not reach every face");
+  return corner;
+}
+
+DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options,
+                   bool flips) {
+  DiskMap result;
+  result.removedFace = removedFace;
+  result.usedFlips = flips;
+  IntrinsicTriangulation tri = buildTriangulation(mesh, removedFace);
+  CirclePackingMetric metric =
+      initialMetric(tri, embeddedEdgeLengths(tri, mesh), options.scheme, Geometry::Euclidean);
+  RicciFlowOptions flowOptions;
+  flowOptions.tolerance = options.tolerance;
+  flowOptions.maxIterations = options.maxIterations;
+  flowOptions.delaunayFlips = flips;
+  flowOptions.onIteration = options.onIteration;
+  result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
+  const std::vector<double> lengths = metricEdgeLengths(tri, metric);
+
+  // Inner boundary = the removed face's corners.
+  std::vector<char> inner(tri.vertexCount, 0);
+  std::vector<int> innerVertices;
+  for (auto v : mesh.fv_range(TriMesh::FaceHandle(removedFace))) {
+    inner[v.idx()] = 1;
+    innerVertices.push_back(v.idx());
+  }
+  // Shortest interior edge path from the inner to the outer boundary.
+  std::vector<int> parent;
+  const auto dist = dijkstra(
+      tri, lengths, innerVertices, parent,
+      [&](int v) { return tri.vertexOnBoundary[v] && !inner[v]; },
+      [&](int e) { return !tri.edgeOnBoundary(e); });
+  int outerEnd = -1;
+  for (int v = 0; v < tri.vertexCount; ++v)
+    if (tri.vertexOnBoundary[v] && !inner[v] && dist[v] < kInf &&
+        (outerEnd < 0 || dist[v] < dist[outerEnd]))
+      outerEnd = v;
+  if (outerEnd < 0) throw Error(ErrorCode::Internal, "no cut path from inner to outer boundary");
+  std::vector<char> edgeCut(tri.edgeCount(), 0);
+  int firstCutEdge = -1;
+  for (int v = outerEnd; parent[v] >= 0;) {
+    const int e = parent[v];
+    edgeCut[e] = 1;
+    firstCutEdge = e;
+    v = tri.edgeVertices[e][0] == v ? tri.edgeVertices[e][1] : tri.edgeVertices[e][0];
+    if (inner[v]) break;
+  }
+  const auto corner = layOut(tri, lengths, edgeCut);
+
+  // The period: the same cut vertex seen from the two faces beside the cut edge.
+  const int f0 = tri.edgeFaces[firstCutEdge][0], f1 = tri.edgeFaces[firstCutEdge][1];
+  Complex period = 0;
+  for (int v : tri.edgeVertices[firstCutEdge]) {
+    Complex p0, p1;
+    for (int c = 0; c < 3; ++c) {
+      if (tri.faceVertices[f0][c] == v) p0 = corner[f0][c];
+      if (tri.faceVertices[f1][c] == v) p1 = corner[f1][c];
+    }
+    period += 0.5 * (p1 - p0);
+  }
+  if (!(std::abs(period) > 0)) throw Error(ErrorCode::Internal, "degenerate cylinder period");
+  const Complex scale = Complex(0, 2 * std::numbers::pi) / period;
+
+  // Real parts of the two straight boundaries after scaling; the outer one must be larger.
+  double innerRe = 0, outerRe = 0;
+  int innerCount = 0, outerCount = 0;
+  std::vector<Complex> w(tri.vertexCount);
+  for (int f = 0; f < tri.faceCount(); ++f)
+    for (int c = 0; c < 3; ++c) w[tri.faceVertices[f][c]] = corner[f][c] * scale;
+  for (int v = 0; v < tri.vertexCount; ++v) {
+    if (!tri.vertexOnBoundary[v]) continue;
+    (inner[v] ? innerRe : outerRe) += w[v].real();
+    ++(inner[v] ? innerCount : outerCount);
+  }
+  innerRe /= innerCount;
+  outerRe /= outerCount;
+  const double sign = outerRe > innerRe ? 1.0 : -1.0;
+  result.uv.resize(tri.vertexCount);
+  for (int v = 0; v < tri.vertexCount; ++v) {
+    result.uv[v] = std::exp(sign * w[v] - sign * outerRe);
+    if (!std::isfinite(result.uv[v].real()) || !std::isfinite(result.uv[v].imag()))
+      throw Error(ErrorCode::Internal, "disk map produced a non-finite coordinate");
+  }
+  return result;
+}
+
+}  // namespace
+
+DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
+  requireDisk(mesh, "mesh");
+  const int removed = options.removedFace >= 0 ? options.removedFace : faceFarthestFromBoundary(mesh);
+  if (removed >= static_cast<int>(mesh.n_faces()))
+    throw Error(ErrorCode::InvalidInput, "removed face index out of range");
+  if (options.flips != FlipPolicy::Auto)
+    return mapAnnulus(mesh, removed, options, options.flips == FlipPolicy::On);
+  try {
+    return mapAnnulus(mesh, removed, options, false);
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::Unreachable) throw;
+    return mapAnnulus(mesh, removed, options, true);
+  }
+}
+
+void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {
+  const Mobius m = Mobius::alignMarkers(uv.at(a), uv.at(b), uv.at(c));
+  for (auto& z : uv) z = m(z);
+}
+
+}  // namespace confvis::conformal

@@ -1,0 +1,136 @@
+// The Riemann map against closed forms: a hemisphere maps by stereographic projection (up to a
+// disk Möbius map), a round flat disk maps to itself; irregular meshes give no flipped faces.
+#include "confvis/conformal/disk_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/distortion.hpp"
+#include "confvis/conformal/mesh_generators.hpp"
+#include "confvis/conformal/mobius.hpp"
+
+using namespace confvis;
+using namespace confvis::conformal;
+using Complex = std::complex<double>;
+
+namespace {
+
+// Boundary vertices nearest to azimuths 0°, 120°, 240° (counter-clockwise seen from +z).
+std::array<int, 3> markers(const TriMesh& mesh) {
+  std::array<int, 3> best{-1, -1, -1};
+  std::array<double, 3> bestDist{1e9, 1e9, 1e9};
+  for (auto v : mesh.vertices()) {
+    if (!mesh.is_boundary(v)) continue;
+    const auto& p = mesh.point(v);
+    for (int k = 0; k < 3; ++k) {
+      const double a = 2 * std::numbers::pi * k / 3;
+      const double d = std::hypot(p[0] - std::cos(a), p[1] - std::sin(a));
+      if (d < bestDist[k]) {
+        bestDist[k] = d;
+        best[k] = v.idx();
+      }
+    }
+  }
+  return best;
+}
+
+// Max distance between the computed map and a reference, both aligned at the same markers.
+double alignedError(const TriMesh& mesh, std::vector<Complex> uv, std::vector<Complex> reference) {
+  const auto m = markers(mesh);
+  alignDiskMap(uv, m[0], m[1], m[2]);
+  alignDiskMap(reference, m[0], m[1], m[2]);
+  double err = 0;
+  for (std::size_t i = 0; i < uv.size(); ++i) err = std::max(err, std::abs(uv[i] - reference[i]));
+  return err;
+}
+
+double hemisphereError(int n) {
+  const TriMesh mesh = makeHemisphere(n, 0.2, 11);
+  const DiskMap map = computeDiskMap(mesh);
+  std::vector<Complex> stereo;
+  for (auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    stereo.emplace_back(p[0] / (1 + p[2]), p[1] / (1 + p[2]));  // from the south pole
+  }
+  return alignedError(mesh, map.uv, stereo);
+}
+
+TEST(DiskMap, HemisphereConvergesToStereographicProjection) {
+  const double e8 = hemisphereError(8), e16 = hemisphereError(16), e32 = hemisphereError(32);
+  // Each refinement halves the edge length; the error must shrink, at least linearly.
+  EXPECT_LT(e16, 0.6 * e8) << e8 << " " << e16;
+  EXPECT_LT(e32, 0.6 * e16) << e16 << " " << e32;
+  EXPECT_LT(e32, 0.02);
+  const double rate = std::log2(e16 / e32);
+  EXPECT_GT(rate, 0.9) << "observed convergence rate " << rate;
+  RecordProperty("hemisphere_error_n32", std::to_string(e32));
+  RecordProperty("hemisphere_rate", std::to_string(rate));
+}
+
+TEST(DiskMap, RoundFlatDiskMapsToItself) {
+  const TriMesh mesh = makeRoundDisk(24, 0.2, 4);
+  const DiskMap map = computeDiskMap(mesh);
+  std::vector<Complex> identity;
+  for (auto v : mesh.vertices()) identity.emplace_back(mesh.point(v)[0], mesh.point(v)[1]);
+  // The discrete map of a polygonal disk differs from the identity by the polygon's corners.
+  EXPECT_LT(alignedError(mesh, map.uv, identity), 0.02);
+}
+
+TEST(DiskMap, OutputIsInTheUnitDiskWithRoundBoundaryAndPreservesOrientation) {
+  const TriMesh mesh = makeLopsidedDisk(20, 0.3, 8);
+  const DiskMap map = computeDiskMap(mesh);
+  const DistortionStats stats = measureDistortion(mesh, map.uv);
+  EXPECT_EQ(stats.flippedFaces, 0);
+  EXPECT_LT(stats.boundaryRoundness, 1e-8);
+  for (const auto& z : map.uv) EXPECT_LE(std::abs(z), 1 + 1e-8);
+  EXPECT_LE(map.flow.maxCurvatureError, 1e-10);
+  // Angles are preserved on a good mesh (on the sliver-ridden one above the flow needs flips,
+  // so the input's own triangles are not those of the conformal metric).
+  const TriMesh good = makeRoundDisk(20, 0.1, 8);
+  const DistortionStats quality = measureDistortion(good, computeDiskMap(good).uv);
+  EXPECT_LT(quality.logAngleRatioStd, 0.05);
+  EXPECT_LT(quality.ratioP50, 1.05);
+  EXPECT_LT(quality.ratioP99, 1.3);
+}
+
+TEST(DiskMap, IrregularMeshesNeverFlipFacesForAnyRobustScheme) {
+  for (Scheme scheme : {Scheme::InversiveDistance, Scheme::Yamabe}) {
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      const TriMesh mesh = makeLopsidedDisk(16, 0.2, seed);
+      DiskMapOptions options;
+      options.scheme = scheme;
+      const DiskMap map = computeDiskMap(mesh, options);
+      EXPECT_EQ(measureDistortion(mesh, map.uv).flippedFaces, 0)
+          << toString(scheme) << " seed " << seed;
+    }
+  }
+}
+
+TEST(DiskMap, NonDiskInputIsRejectedWithItsTopology) {
+  try {
+    computeDiskMap(makeIcosphere(1));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("Euler characteristic 2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("0 boundary loops"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(computeDiskMap(makeDiskWithTwoHoles(8)), Error);
+  EXPECT_THROW(computeDiskMap(makeGridDisk(1)), Error);  // every face touches the boundary
+}
+
+TEST(Mobius, AlignsMarkersAndKeepsTheDisk) {
+  const Complex p = std::polar(1.0, 0.3), q = std::polar(1.0, 2.0), r = std::polar(1.0, 4.0);
+  const Mobius m = Mobius::alignMarkers(p, q, r);
+  EXPECT_LT(std::abs(m(p) - 1.0), 1e-12);
+  EXPECT_LT(std::abs(m(q) - Complex(0, 1)), 1e-12);
+  EXPECT_LT(std::abs(m(r) + 1.0), 1e-12);
+  for (double t = 0; t < 6.28; t += 0.1) EXPECT_NEAR(std::abs(m(std::polar(1.0, t))), 1.0, 1e-12);
+  EXPECT_LT(std::abs(m(0.2 * p + 0.1 * q)), 1.0);
+  EXPECT_LT(std::abs((m.inverse() * m)(Complex(0.3, -0.2)) - Complex(0.3, -0.2)), 1e-12);
+  EXPECT_THROW(Mobius::alignMarkers(p, r, q), Error);  // clockwise
+}
+
+}  // namespace
