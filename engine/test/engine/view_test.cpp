@@ -57,10 +57,11 @@ TEST(ViewFrustum, EyeHalfAMetreRightGivesTheHandComputedAsymmetricFrusta) {
   const glm::dvec3 eye{0.5, 0.0, 0.0};
   // Wall right axes: front +x, back -x, right +z, left -z, floor/ceiling +x.
   const std::map<std::string, Extents> expected{
-      {"front", {-2.0, 1.0, -1.5, 1.5, 1.5}},  {"back", {-1.0, 2.0, -1.5, 1.5, 1.5}},
-      {"right", {-1.5, 1.5, -1.5, 1.5, 1.0}},  {"left", {-1.5, 1.5, -1.5, 1.5, 2.0}},
-      {"floor", {-2.0, 1.0, -1.5, 1.5, 1.5}},  {"ceiling", {-2.0, 1.0, -1.5, 1.5, 1.5}}};
-  for (const auto& [name, extents] : expected) expectExtents(makeWallView(cave.wall(name), eye), extents);
+      {"front", {-2.0, 1.0, -1.5, 1.5, 1.5}}, {"back", {-1.0, 2.0, -1.5, 1.5, 1.5}},
+      {"right", {-1.5, 1.5, -1.5, 1.5, 1.0}}, {"left", {-1.5, 1.5, -1.5, 1.5, 2.0}},
+      {"floor", {-2.0, 1.0, -1.5, 1.5, 1.5}}, {"ceiling", {-2.0, 1.0, -1.5, 1.5, 1.5}}};
+  for (const auto& [name, extents] : expected)
+    expectExtents(makeWallView(cave.wall(name), eye), extents);
 }
 
 TEST(ViewFrustum, ViewMatrixPutsTheEyeAtTheOriginAndTheWallAtMinusDistance) {
@@ -77,7 +78,7 @@ TEST(ViewFrustum, ViewMatrixPutsTheEyeAtTheOriginAndTheWallAtMinusDistance) {
 TEST(ViewProjection, WallCornersLandOnTheClipBorderInGLAndVulkan) {
   const DisplayConfig cave = shippedConfig("cave5.json");
   const double near = 0.1, far = 50.0;
-  for (const WallView& v : makeViews(cave, HeadPose{{0.3, -0.2, 0.4}, {}}, Eye::Center)) {
+  for (const WallView& v : makeViews(cave, HeadPose{{0.3, -0.2, 0.4}}, Eye::Center)) {
     SCOPED_TRACE(v.wall->name);
     const Wall& w = *v.wall;
     const glm::dmat4 gl = v.projectionGL(near, far), vk = v.projectionVulkan(near, far);
@@ -144,7 +145,7 @@ TEST(ViewErrors, EyeOnOrBehindAWallPlaneIsNamed) {
   const DisplayConfig cave = shippedConfig("cave4.json");
   for (const glm::dvec3& eye : {glm::dvec3(0, 0, -1.5), glm::dvec3(0.2, 0.1, -2.0)}) {
     try {
-      (void)makeViews(cave, HeadPose{eye, {}}, Eye::Center);
+      (void)makeViews(cave, HeadPose{eye}, Eye::Center);
       ADD_FAILURE() << "expected an Error";
     } catch (const Error& e) {
       EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
@@ -154,7 +155,8 @@ TEST(ViewErrors, EyeOnOrBehindAWallPlaneIsNamed) {
 }
 
 TEST(Viewer, EyesSitAlongTheHeadsRightAxis) {
-  HeadPose head{{0.0, 1.7, 0.0}, {}};
+  HeadPose head{{0.0, 1.7, 0.0}};  // default orientation: identity
+  EXPECT_EQ(head.orientation, glm::dquat(1.0, 0.0, 0.0, 0.0));
   EXPECT_TRUE(vecNear(eyePosition(head, Eye::Left, 0.064), {-0.032, 1.7, 0}));
   EXPECT_TRUE(vecNear(eyePosition(head, Eye::Right, 0.064), {0.032, 1.7, 0}));
   EXPECT_TRUE(vecNear(eyePosition(head, Eye::Center, 0.064), {0, 1.7, 0}));

@@ -10,6 +10,7 @@ enum class Eye { Left, Center, Right };
 struct HeadPose {
   glm::dvec3 position{0.0};
   // Identity: looking down -z with +y up, the physical frame's "forward" (design note §2).
+  // Write HeadPose{position} for the identity; HeadPose{position, {}} is the zero quaternion.
   glm::dquat orientation{1.0, 0.0, 0.0, 0.0};
 };
 
