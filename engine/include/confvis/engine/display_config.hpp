@@ -1,0 +1,87 @@
+#pragma once
+// A physical display: planar rectangular walls around a reference point c (design note §2).
+// Frame: metres, right-handed, +y up, -z forward. A wall is given by three corners as seen by a
+// viewer standing at c and looking at it (lower-left, lower-right, upper-left), the SGCT /
+// ParaView .pvx / VR Juggler convention; the upper-right corner is implied.
+//
+// JSON schema (also in configs/README.md); unknown keys are errors at every level:
+//   {
+//     "name": "cave5",                          required, non-empty string
+//     "reference": [0, 0, 0],                   optional, default [0,0,0]
+//     "source": {"field": "sphere",             optional: "sphere" (default) | "hemisphere"
+//                "axis": [0, 0, -1]},           optional, hemisphere centre direction
+//     "edge_length": 0.2,                       optional, metres, > 0
+//     "cube_resolution": 256,                   optional, texels per face, 8..8192
+//     "stereo": {"eye_separation": 0.064},      optional, metres, >= 0
+//     "walls": [{                               required, at least one
+//       "name": "front",                        required, unique
+//       "lower_left": [x,y,z], "lower_right": [x,y,z], "upper_left": [x,y,z],   required
+//       "resolution": [width, height],          required, pixels of the lit area
+//       "bezel": {"left": 0, "right": 0, "bottom": 0, "top": 0}   optional, metres
+//     }]
+//   }
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+namespace confvis {
+
+// Unlit frame inside a wall rectangle, metres from each edge. The wall's pixels cover only the
+// lit area, so a tiled wall is modelled by rectangles that share edges, with bezels inside them.
+struct Bezel {
+  double left = 0, right = 0, bottom = 0, top = 0;
+};
+
+struct Wall {
+  std::string name;
+  glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
+  int width = 0, height = 0;  // pixels of the lit area
+  Bezel bezel;
+
+  glm::dvec3 upperRight() const;
+  glm::dvec3 right() const;   // unit, lower-left -> lower-right
+  glm::dvec3 up() const;      // unit, lower-left -> upper-left
+  glm::dvec3 normal() const;  // unit, right x up: points to the viewer's side
+  double widthMetres() const;
+  double heightMetres() const;
+  // s along right(), t along up(), both in [0,1] over this rectangle.
+  glm::dvec3 pointAt(double s, double t) const;
+  // Centre of pixel (x, y) of this rectangle, image convention: row 0 at the top. Pixels span the
+  // lit area, so for a wall with bezels call litRectangle().pixelCenter(...).
+  glm::dvec3 pixelCenter(int x, int y) const;
+  // The wall shrunk by its bezels, same name and resolution, zero bezel.
+  Wall litRectangle() const;
+};
+
+enum class SourceField { FullSphere, Hemisphere };
+
+struct DisplayConfig {
+  std::string name;
+  std::vector<Wall> walls;
+  glm::dvec3 reference{0.0};
+  SourceField source = SourceField::FullSphere;
+  glm::dvec3 hemisphereAxis{0.0, 0.0, -1.0};  // unit
+  double edgeLength = 0.20;                  // template refinement threshold, metres
+  int cubeResolution = 256;                  // baked cube-map face size, texels
+  double eyeSeparation = 0.064;              // metres
+  // Hex FNV-1a 64 of toJson(*this).dump(): identifies a display for caches of baked maps.
+  std::string hash;
+
+  // Throws Error(InvalidInput) naming the unknown wall and listing the known ones.
+  const Wall& wall(const std::string& wallName) const;
+};
+
+// Reads and validates a config; Error(FileNotFound) naming the path if it cannot be read,
+// Error(InvalidInput) naming the file and the culprit (wall, key) for any invalid content.
+DisplayConfig loadDisplayConfig(const std::filesystem::path& path);
+
+// Validates `json`; sourceName (usually the file name) prefixes every error message.
+DisplayConfig parseDisplayConfig(const nlohmann::json& json, const std::string& sourceName);
+
+// Canonical form: every field written out, defaults included, so equal displays dump equally.
+nlohmann::json toJson(const DisplayConfig& config);
+
+}  // namespace confvis
