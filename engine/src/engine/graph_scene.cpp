@@ -133,11 +133,11 @@ glm::vec3 clusterColor(int cluster) {
 namespace builtin {
 
 Scene buildGraph(const BuiltinSceneOptions& options) {
-  const int subdivisions = optionOrDefault(options.subdivision, 1, "subdivision", "graph");
-  if (subdivisions > 4)
-    throw Error(ErrorCode::InvalidInput, "built-in scene 'graph': subdivision " +
-                                             std::to_string(subdivisions) + " exceeds 4");
-  const Mesh unitSphere = unitIcosphere(subdivisions);
+  const int detail = optionOrDefault(options.subdivision, 2, "subdivision", "graph");
+  if (detail > 5)
+    throw Error(ErrorCode::InvalidInput, "built-in scene 'graph': subdivision (node detail) " +
+                                             std::to_string(detail) + " exceeds 5");
+  const Mesh unitSphere = unitIcosphere(detail - 1);
   Random random(kGraphSeed);
   Scene scene;
 

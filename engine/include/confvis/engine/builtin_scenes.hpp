@@ -17,7 +17,8 @@ struct BuiltinSceneOptions {
   //   checker-sphere: quads per cube-face edge (default 32; a multiple of 8 keeps every
   //                   triangle inside one checker square);
   //   checker-tunnel: quads per metre of wall (default 1);
-  //   graph:          icosphere subdivisions of each node (default 1).
+  //   graph:          node detail level: 1 = icosahedron (20 triangles), each level more
+  //                   splits every triangle in four (default 2, at most 5).
   int subdivision = 0;
   // Texels along one checker square edge, 0 = default (16). Small values make small tests.
   int texelsPerSquare = 0;
