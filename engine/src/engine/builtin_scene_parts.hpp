@@ -26,8 +26,14 @@ int addMaterial(Scene& scene, const std::string& name, glm::vec3 color, int text
 // winding is counter-clockwise seen from the side `facing` points to.
 void addQuad(Mesh& mesh, unsigned a, unsigned b, unsigned c, unsigned d, glm::vec3 facing);
 
+// Triangulates a grid of (countA + 1) x (countB + 1) vertices appended row by row (index
+// j * (countA + 1) + i, starting at mesh.positions index `first`), facing `facing`.
+void addGridQuads(Mesh& mesh, unsigned first, int countA, int countB, glm::vec3 facing);
+
 // Reads an option that must be non-negative; 0 selects `fallback`.
 int optionOrDefault(int value, int fallback, const char* what, const std::string& scene);
+// BuiltinSceneOptions::texelsPerSquare checked, with kDefaultTexelsPerSquare for 0.
+int texelsPerSquare(const BuiltinSceneOptions& options, const std::string& scene);
 
 Scene buildCheckerSphere(const BuiltinSceneOptions& options);
 Scene buildCheckerTunnel(const BuiltinSceneOptions& options);

@@ -85,12 +85,25 @@ void addQuad(Mesh& mesh, unsigned a, unsigned b, unsigned c, unsigned d, glm::ve
   }
 }
 
+void addGridQuads(Mesh& mesh, unsigned first, int countA, int countB, glm::vec3 facing) {
+  const auto vertex = [first, countA](int i, int j) {
+    return first + static_cast<unsigned>(j * (countA + 1) + i);
+  };
+  for (int j = 0; j < countB; ++j)
+    for (int i = 0; i < countA; ++i)
+      addQuad(mesh, vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1), facing);
+}
+
 int optionOrDefault(int value, int fallback, const char* what, const std::string& scene) {
   if (value < 0)
     throw Error(ErrorCode::InvalidInput, "built-in scene '" + scene + "': option " + what +
                                              " must not be negative (got " +
                                              std::to_string(value) + ")");
   return value == 0 ? fallback : value;
+}
+
+int texelsPerSquare(const BuiltinSceneOptions& options, const std::string& scene) {
+  return optionOrDefault(options.texelsPerSquare, kDefaultTexelsPerSquare, "texelsPerSquare", scene);
 }
 
 }  // namespace builtin

@@ -57,10 +57,8 @@ glm::vec3 checkerSphereColor(glm::dvec3 direction) {
 namespace builtin {
 
 Scene buildCheckerSphere(const BuiltinSceneOptions& options) {
-  const std::string sceneName = "checker-sphere";
-  const int n = optionOrDefault(options.subdivision, 32, "subdivision", sceneName);
-  const int texels =
-      optionOrDefault(options.texelsPerSquare, kDefaultTexelsPerSquare, "texelsPerSquare", sceneName);
+  const int n = optionOrDefault(options.subdivision, 32, "subdivision", "checker-sphere");
+  const int texels = texelsPerSquare(options, "checker-sphere");
   Scene scene;
   // Faces of one axis share a texture: the checker rule depends only on (a, b).
   std::array<int, 3> axisTexture{};
@@ -85,11 +83,7 @@ Scene buildCheckerSphere(const BuiltinSceneOptions& options) {
         mesh.uvs.emplace_back((a + 1.0) * 0.5, (b + 1.0) * 0.5);
       }
     }
-    const auto vertex = [n](int i, int j) { return static_cast<unsigned>(j * (n + 1) + i); };
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i)
-        addQuad(mesh, vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1),
-                glm::vec3(-face.n));
+    addGridQuads(mesh, 0, n, n, glm::vec3(-face.n));
     scene.meshes.push_back(std::move(mesh));
   }
   return scene;

@@ -56,10 +56,8 @@ std::optional<glm::vec3> checkerTunnelColor(glm::dvec3 direction) {
 namespace builtin {
 
 Scene buildCheckerTunnel(const BuiltinSceneOptions& options) {
-  const std::string sceneName = "checker-tunnel";
-  const int perMetre = optionOrDefault(options.subdivision, 1, "subdivision", sceneName);
-  const int texels =
-      optionOrDefault(options.texelsPerSquare, kDefaultTexelsPerSquare, "texelsPerSquare", sceneName);
+  const int perMetre = optionOrDefault(options.subdivision, 1, "subdivision", "checker-tunnel");
+  const int texels = texelsPerSquare(options, "checker-tunnel");
   Scene scene;
   const double range[3][2] = {{-kTunnelHalfWidth, kTunnelHalfWidth},
                               {-kTunnelHalfWidth, kTunnelHalfWidth},
@@ -87,11 +85,7 @@ Scene buildCheckerTunnel(const BuiltinSceneOptions& options) {
         mesh.uvs.emplace_back(p[wall.axisA] * 0.5, p[wall.axisB] * 0.5);
       }
     }
-    const auto vertex = [countA](int i, int j) { return static_cast<unsigned>(j * (countA + 1) + i); };
-    for (int j = 0; j < countB; ++j)
-      for (int i = 0; i < countA; ++i)
-        addQuad(mesh, vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1),
-                glm::vec3(inward));
+    addGridQuads(mesh, 0, countA, countB, glm::vec3(inward));
     scene.meshes.push_back(std::move(mesh));
   }
   return scene;
