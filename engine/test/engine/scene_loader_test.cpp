@@ -183,6 +183,36 @@ TEST_F(SceneLoader, GlbWithBinaryChunk) {
   expectTransformedTriangle(loadScene(write("tri.glb", glb)));
 }
 
+TEST_F(SceneLoader, GltfBaseColorTextureDecodedFromSrgb) {
+  // 1 x 2 PNG: row 0 (uv v = 0 in glTF) sRGB 188 (linear ~0.5), row 1 black.
+  const unsigned char pixels[6] = {188, 188, 188, 0, 0, 0};
+  std::string png;
+  stbi_write_png_to_func(
+      [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                   static_cast<std::size_t>(size));
+      },
+      &png, 1, 2, 3, pixels, 3);
+  TriangleGltf gltf = triangleGltf();
+  const float uvs[6] = {0.5f, 0.25f, 0.5f, 0.25f, 0.5f, 0.25f};  // centre of row 0
+  gltf.buffer.append(reinterpret_cast<const char*>(uvs), sizeof uvs);
+  gltf.json["buffers"][0] = {{"byteLength", gltf.buffer.size()},
+                             {"uri", "data:application/octet-stream;base64," + base64(gltf.buffer)}};
+  gltf.json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 44}, {"byteLength", 24}});
+  gltf.json["accessors"].push_back(
+      {{"bufferView", 2}, {"componentType", 5126}, {"count", 3}, {"type", "VEC2"}});
+  gltf.json["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] = 2;
+  gltf.json["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"] = {{"index", 0}};
+  gltf.json["textures"] = {{{"source", 0}}};
+  gltf.json["images"] = {{{"uri", "data:image/png;base64," + base64(png)}}};
+  const Scene scene = loadScene(write("textured.gltf", gltf.json.dump()));
+  ASSERT_EQ(scene.textures.size(), 1u);
+  const glm::vec4 color = scene.baseColorAt(0, 0, {0.2f, 0.2f});
+  // factor (0.2, 0.4, 0.6) times sRGB 188 decoded to linear 0.5029.
+  EXPECT_NEAR(color.r, 0.2f * 0.5029f, 1e-3f);
+  EXPECT_NEAR(color.b, 0.6f * 0.5029f, 1e-3f);
+}
+
 TEST_F(SceneLoader, ErrorsNameTheFile) {
   expectErrorNaming([&] { loadScene(dir_ / "absent.obj"); }, ErrorCode::FileNotFound, "absent.obj");
   expectErrorNaming([&] { loadScene(dir_ / "absent.glb"); }, ErrorCode::FileNotFound, "absent.glb");
