@@ -2,9 +2,9 @@
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
-#include <ImfMultiView.h>
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
+#include <half.h>
 
 #include <algorithm>
 #include <array>
@@ -24,6 +24,12 @@ constexpr float kHalfMax = 65504.0f;  // larger values would be stored as infini
 std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 const Imf::StringVector kStereoViews = {"left", "right"};
+
+// Multi-view channel naming: the default (first) view's channels are bare, view i's are
+// prefixed "<name>.".
+std::string viewPrefix(const Imf::StringVector& views, std::size_t i) {
+  return i == 0 ? std::string() : views.at(i) + ".";
+}
 }  // namespace
 
 namespace detail {
@@ -54,19 +60,26 @@ void writeExrLayers(const fs::path& path, const std::vector<ExrLayer>& layers, E
                                                " as half: values exceed 65504 (use Float)");
   }
   const Imf::PixelType fileType = pixel == ExrPixel::Half ? Imf::HALF : Imf::FLOAT;
+  // OpenEXR converts pixel types only when reading: half files need a half frame buffer.
+  std::vector<std::vector<half>> halfCopies;
+  if (pixel == ExrPixel::Half)
+    for (const ExrLayer& layer : layers)
+      halfCopies.emplace_back(layer.image->pixels.begin(), layer.image->pixels.end());
   writeFileAtomically(path, [&](const fs::path& temp) {
     Imf::Header header(first.width, first.height);
     header.compression() = Imf::ZIP_COMPRESSION;
     Imf::FrameBuffer frameBuffer;
     const Imath::Box2i window = header.dataWindow();
-    for (const ExrLayer& layer : layers) {
+    const std::size_t sampleSize = pixel == ExrPixel::Half ? sizeof(half) : sizeof(float);
+    for (std::size_t l = 0; l < layers.size(); ++l) {
+      const char* base = pixel == ExrPixel::Half
+                             ? reinterpret_cast<const char*>(halfCopies[l].data())
+                             : reinterpret_cast<const char*>(layers[l].image->pixels.data());
       for (std::size_t c = 0; c < kChannels.size(); ++c) {
-        const std::string name = layer.prefix + kChannels[c];
+        const std::string name = layers[l].prefix + kChannels[c];
         header.channels().insert(name, Imf::Channel(fileType));
-        // The frame buffer stays float; OpenEXR converts to half while writing if asked to.
-        frameBuffer.insert(name, Imf::Slice::Make(Imf::FLOAT, layer.image->pixels.data() + c,
-                                                  window, 4 * sizeof(float),
-                                                  4 * sizeof(float) * first.width));
+        frameBuffer.insert(name, Imf::Slice::Make(fileType, base + c * sampleSize, window,
+                                                  4 * sampleSize, 4 * sampleSize * first.width));
       }
     }
     if (addAttributes) addAttributes(header);
@@ -126,10 +139,9 @@ ImageRGBA readExr(const fs::path& path) {
 }
 
 void writeStereoExr(const fs::path& path, const ImageRGBA& left, const ImageRGBA& right) {
-  // insertViewName leaves the default (first) view's names bare and prefixes the others.
   detail::writeExrLayers(path,
-                         {{Imf::insertViewName("", kStereoViews, 0), &left},
-                          {Imf::insertViewName("", kStereoViews, 1) , &right}},
+                         {{viewPrefix(kStereoViews, 0), &left},
+                          {viewPrefix(kStereoViews, 1), &right}},
                          ExrPixel::Float,
                          [](Imf::Header& header) { Imf::addMultiView(header, kStereoViews); });
 }
@@ -141,13 +153,13 @@ std::pair<ImageRGBA, ImageRGBA> readStereoExr(const fs::path& path) {
       throw Error(ErrorCode::IoFailure,
                   "EXR file " + quoted(path) + " is not a stereo (multi-view) image");
     const Imf::StringVector& names = Imf::multiView(file.header());
-    auto indexOf = [&](const std::string& name, int fallback) {
+    auto prefixOf = [&](const std::string& name, std::size_t fallback) {
       const auto it = std::find(names.begin(), names.end(), name);
-      return it == names.end() ? fallback : static_cast<int>(it - names.begin());
+      return viewPrefix(names, it == names.end() ? fallback
+                                                 : static_cast<std::size_t>(it - names.begin()));
     };
-    views.first = detail::readExrLayer(file, path, Imf::insertViewName("", names, indexOf("left", 0)));
-    views.second =
-        detail::readExrLayer(file, path, Imf::insertViewName("", names, indexOf("right", 1)));
+    views.first = detail::readExrLayer(file, path, prefixOf("left", 0));
+    views.second = detail::readExrLayer(file, path, prefixOf("right", 1));
   });
   return views;
 }
