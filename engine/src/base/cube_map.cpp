@@ -50,8 +50,7 @@ void requireFaceSize(int n) {
 }
 
 // Major axis selection; ties go to x, then y (Imf::CubeMap::faceAndPixelPosition).
-void locate(const FrameTable& frames, const Vec3d& d, int n, CubeFace& face, double& x,
-            double& y) {
+void locate(const FrameTable& frames, const Vec3d& d, int n, CubeFace& face, double& x, double& y) {
   requireFaceSize(n);
   const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
   if (!isFinite(d) || (ax == 0 && ay == 0 && az == 0))
@@ -81,9 +80,9 @@ void requireWellFormed(const CubeMap& map) {
   for (const ImageRGBA& f : map.faces)
     if (f.width != map.faceSize || f.height != map.faceSize ||
         f.pixels.size() != f.pixelCount() * 4)
-      throw Error(ErrorCode::InvalidInput,
-                  "cube map faces must all be " + std::to_string(map.faceSize) + "x" +
-                      std::to_string(map.faceSize));
+      throw Error(ErrorCode::InvalidInput, "cube map faces must all be " +
+                                               std::to_string(map.faceSize) + "x" +
+                                               std::to_string(map.faceSize));
 }
 
 // Texel (x, y) of `face`, where x or y may lie one texel beyond the face: such a texel is taken

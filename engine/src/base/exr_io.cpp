@@ -38,8 +38,8 @@ void requireWritableImage(const fs::path& path, const ImageRGBA& image, const ch
   if (image.empty() || image.pixels.size() != image.pixelCount() * 4)
     throw Error(ErrorCode::InvalidInput,
                 std::string("refusing to write ") + quoted(path) + ": the " + what +
-                    " is empty or its pixel buffer does not match " +
-                    std::to_string(image.width) + "x" + std::to_string(image.height));
+                    " is empty or its pixel buffer does not match " + std::to_string(image.width) +
+                    "x" + std::to_string(image.height));
   if (!image.allFinite())
     throw Error(ErrorCode::InvalidInput, std::string("refusing to write ") + quoted(path) +
                                              ": the " + what + " has NaN or infinite values");
@@ -108,16 +108,16 @@ ImageRGBA readExrLayer(Imf::InputFile& file, const fs::path& path, const std::st
   const Imf::ChannelList& channels = file.header().channels();
   for (std::size_t c = 0; c < 3; ++c)
     if (!channels.findChannel(prefix + kChannels[c]))
-      throw Error(ErrorCode::IoFailure, "EXR file " + quoted(path) + " has no channel '" +
-                                            prefix + kChannels[c] + "'");
+      throw Error(ErrorCode::IoFailure,
+                  "EXR file " + quoted(path) + " has no channel '" + prefix + kChannels[c] + "'");
   ImageRGBA image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
   Imf::FrameBuffer frameBuffer;
   for (std::size_t c = 0; c < kChannels.size(); ++c) {
     const double fill = c == 3 ? 1.0 : 0.0;  // opaque when the file has no alpha
-    frameBuffer.insert(prefix + kChannels[c],
-                       Imf::Slice::Make(Imf::FLOAT, image.pixels.data() + c, window,
-                                        4 * sizeof(float), 4 * sizeof(float) * image.width, 1,
-                                        1, fill));
+    frameBuffer.insert(
+        prefix + kChannels[c],
+        Imf::Slice::Make(Imf::FLOAT, image.pixels.data() + c, window, 4 * sizeof(float),
+                         4 * sizeof(float) * image.width, 1, 1, fill));
   }
   file.setFrameBuffer(frameBuffer);
   file.readPixels(window.min.y, window.max.y);
@@ -132,18 +132,15 @@ void writeExr(const fs::path& path, const ImageRGBA& image, ExrPixel pixel) {
 
 ImageRGBA readExr(const fs::path& path) {
   ImageRGBA image;
-  detail::withExrInput(path, [&](Imf::InputFile& file) {
-    image = detail::readExrLayer(file, path, "");
-  });
+  detail::withExrInput(path,
+                       [&](Imf::InputFile& file) { image = detail::readExrLayer(file, path, ""); });
   return image;
 }
 
 void writeStereoExr(const fs::path& path, const ImageRGBA& left, const ImageRGBA& right) {
-  detail::writeExrLayers(path,
-                         {{viewPrefix(kStereoViews, 0), &left},
-                          {viewPrefix(kStereoViews, 1), &right}},
-                         ExrPixel::Float,
-                         [](Imf::Header& header) { Imf::addMultiView(header, kStereoViews); });
+  detail::writeExrLayers(
+      path, {{viewPrefix(kStereoViews, 0), &left}, {viewPrefix(kStereoViews, 1), &right}},
+      ExrPixel::Float, [](Imf::Header& header) { Imf::addMultiView(header, kStereoViews); });
 }
 
 std::pair<ImageRGBA, ImageRGBA> readStereoExr(const fs::path& path) {
@@ -155,8 +152,8 @@ std::pair<ImageRGBA, ImageRGBA> readStereoExr(const fs::path& path) {
     const Imf::StringVector& names = Imf::multiView(file.header());
     auto prefixOf = [&](const std::string& name, std::size_t fallback) {
       const auto it = std::find(names.begin(), names.end(), name);
-      return viewPrefix(names, it == names.end() ? fallback
-                                                 : static_cast<std::size_t>(it - names.begin()));
+      return viewPrefix(
+          names, it == names.end() ? fallback : static_cast<std::size_t>(it - names.begin()));
     };
     views.first = detail::readExrLayer(file, path, prefixOf("left", 0));
     views.second = detail::readExrLayer(file, path, prefixOf("right", 1));

@@ -56,8 +56,7 @@ void writePng(const fs::path& path, const ImageRGBA& image, const PngOptions& op
     png.format = options.alpha ? PNG_FORMAT_RGBA : PNG_FORMAT_RGB;
     if (!options.srgb) png.flags |= PNG_IMAGE_FLAG_COLORSPACE_NOT_sRGB;
     if (!png_image_write_to_file(&png, temp.c_str(), 0, codes.data(), 0, nullptr))
-      throw Error(ErrorCode::IoFailure,
-                  "cannot write PNG '" + path.string() + "': " + png.message);
+      throw Error(ErrorCode::IoFailure, "cannot write PNG '" + path.string() + "': " + png.message);
   });
 }
 
@@ -68,7 +67,8 @@ ImageRGBA readPng(const fs::path& path, PngDecoding decoding) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str()))
-    throw Error(ErrorCode::IoFailure, "cannot read PNG file '" + path.string() + "': " + png.message);
+    throw Error(ErrorCode::IoFailure,
+                "cannot read PNG file '" + path.string() + "': " + png.message);
   png.format = PNG_FORMAT_RGBA;
   std::vector<std::uint8_t> codes(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, codes.data(), 0, nullptr)) {

@@ -2,8 +2,10 @@
 
 #include <ImfChannelList.h>
 #include <ImfEnvmap.h>
+#include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
 #include <gtest/gtest.h>
 
@@ -239,7 +241,26 @@ TEST(CubeMapFiles, ExrRoundTripKeepsEnvmapAndData) {
 TEST(CubeMapFiles, RefusesNonCubeFilesAndBadMaps) {
   const fs::path dir = freshTestDir("cube_bad");
   writeExr(dir / "plain.exr", ImageRGBA(4, 24, 0.5f));
-  EXPECT_THROW(readCubeExr(dir / "plain.exr"), Error);
+  try {
+    readCubeExr(dir / "plain.exr");
+    ADD_FAILURE() << "a plain EXR was read as a cube map";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("plain.exr"), std::string::npos) << e.what();
+  }
+  {  // envmap = cube, but 4 x 20 instead of N x 6N.
+    Imf::Header header(4, 20);
+    Imf::addEnvmap(header, Imf::ENVMAP_CUBE);
+    std::vector<float> zeros(4 * 20, 0.0f);
+    Imf::FrameBuffer fb;
+    for (const char* name : {"R", "G", "B"}) {
+      header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+      fb.insert(name, Imf::Slice::Make(Imf::FLOAT, zeros.data(), header.dataWindow()));
+    }
+    Imf::OutputFile out((dir / "short.exr").c_str(), header);
+    out.setFrameBuffer(fb);
+    out.writePixels(20);
+  }
+  EXPECT_THROW(readCubeExr(dir / "short.exr"), Error);
   EXPECT_THROW(readCubeExr(dir / "missing.exr"), Error);
   CubeMap map = directionMap(4);
   map.face(CubeFace::PosZ).at(1, 1)[0] = std::nanf("");
@@ -274,8 +295,8 @@ TEST(CubeMapFiles, CrossPreviewIsContinuousAndSeenFromInside) {
   EXPECT_LT(angleBetween(centre, {0, 0, -1}), 1.5 / n);  // pixel n/2 is half a texel off-centre
   EXPECT_GT(cross.at(n + n / 2 + 1, n + n / 2)[0], centre.x);
   EXPECT_GT(cross.at(n + n / 2, n + n / 2 - 1)[1], centre.y);
-  EXPECT_LT(angleBetween(rgb(cross.at(n + n / 2, n / 2)), {0, 1, 0}), 1.5 / n);       // ceiling
-  EXPECT_LT(angleBetween(rgb(cross.at(n / 2, n + n / 2)), {-1, 0, 0}), 1.5 / n);      // left
+  EXPECT_LT(angleBetween(rgb(cross.at(n + n / 2, n / 2)), {0, 1, 0}), 1.5 / n);          // ceiling
+  EXPECT_LT(angleBetween(rgb(cross.at(n / 2, n + n / 2)), {-1, 0, 0}), 1.5 / n);         // left
   EXPECT_LT(angleBetween(rgb(cross.at(3 * n + n / 2, n + n / 2)), {0, 0, 1}), 1.5 / n);  // back
   EXPECT_EQ(cross.at(0, 0)[3], 0.0f);
   const fs::path dir = freshTestDir("cube_cross");

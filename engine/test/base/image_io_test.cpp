@@ -164,8 +164,8 @@ TEST(ExrStereo, RoundTripKeepsEyesApartAndWritesMultiView) {
   std::vector<std::string> names;
   for (auto c = file.header().channels().begin(); c != file.header().channels().end(); ++c)
     names.push_back(c.name());
-  EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "right.A", "right.B",
-                                             "right.G", "right.R"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "G", "R", "right.A", "right.B", "right.G",
+                                             "right.R"}));
   // Readers unaware of multi-view see the default view: the left eye.
   EXPECT_EQ(readExr(dir / "s.exr").pixels, left.pixels);
   // A plain image is not a stereo pair; mismatched eyes are refused.

@@ -30,9 +30,8 @@ namespace confvis {
 
 enum class CubeFace { PosX, NegX, PosY, NegY, PosZ, NegZ };  // OpenEXR's and Vulkan's order
 
-inline constexpr std::array<CubeFace, 6> kCubeFaces = {CubeFace::PosX, CubeFace::NegX,
-                                                       CubeFace::PosY, CubeFace::NegY,
-                                                       CubeFace::PosZ, CubeFace::NegZ};
+inline constexpr std::array<CubeFace, 6> kCubeFaces = {
+    CubeFace::PosX, CubeFace::NegX, CubeFace::PosY, CubeFace::NegY, CubeFace::PosZ, CubeFace::NegZ};
 const char* toString(CubeFace face) noexcept;
 
 struct CubeMap {

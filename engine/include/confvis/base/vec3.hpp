@@ -9,8 +9,12 @@ struct Vec3d {
   double x = 0, y = 0, z = 0;
 
   friend bool operator==(const Vec3d&, const Vec3d&) = default;
-  friend Vec3d operator+(const Vec3d& a, const Vec3d& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-  friend Vec3d operator-(const Vec3d& a, const Vec3d& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+  friend Vec3d operator+(const Vec3d& a, const Vec3d& b) {
+    return {a.x + b.x, a.y + b.y, a.z + b.z};
+  }
+  friend Vec3d operator-(const Vec3d& a, const Vec3d& b) {
+    return {a.x - b.x, a.y - b.y, a.z - b.z};
+  }
   friend Vec3d operator-(const Vec3d& a) { return {-a.x, -a.y, -a.z}; }
   friend Vec3d operator*(double s, const Vec3d& a) { return {s * a.x, s * a.y, s * a.z}; }
   friend Vec3d operator*(const Vec3d& a, double s) { return s * a; }
