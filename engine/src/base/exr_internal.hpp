@@ -1,0 +1,41 @@
+#pragma once
+// OpenEXR plumbing shared by exr_io.cpp and cube_map_io.cpp. Private to confvis_base: OpenEXR is
+// a private dependency, so no public header includes it.
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "confvis/base/exr_io.hpp"
+#include "confvis/base/image.hpp"
+
+namespace confvis::detail {
+
+// Throws Error(InvalidInput) naming `path` if the image is empty or has NaN/infinite values.
+void requireWritableImage(const std::filesystem::path& path, const ImageRGBA& image,
+                          const char* what = "image");
+
+// One image stored as channels <prefix>R, <prefix>G, <prefix>B, <prefix>A.
+struct ExrLayer {
+  std::string prefix;
+  const ImageRGBA* image;
+};
+
+// Writes same-sized layers into one ZIP-compressed scanline EXR, atomically. `addAttributes` may
+// add header attributes (envmap, multiView). Validates the layers first.
+void writeExrLayers(const std::filesystem::path& path, const std::vector<ExrLayer>& layers,
+                    ExrPixel pixel, const std::function<void(Imf::Header&)>& addAttributes);
+
+// Opens `path` and runs `use(file)`, turning a missing file into Error(FileNotFound) and any
+// OpenEXR or system exception into Error(IoFailure); both messages name the file.
+void withExrInput(const std::filesystem::path& path,
+                  const std::function<void(Imf::InputFile&)>& use);
+
+// Reads channels <prefix>R, G, B (required) and A (optional, default 1) of the whole data window.
+ImageRGBA readExrLayer(Imf::InputFile& file, const std::filesystem::path& path,
+                       const std::string& prefix);
+
+}  // namespace confvis::detail
