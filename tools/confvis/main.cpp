@@ -1,4 +1,6 @@
 // confvis: conformal visualization for partially-immersive displays (command-line front end).
+#include <OpenMesh/Core/System/omstream.hh>
+
 #include <algorithm>
 #include <cstdio>
 #include <map>
@@ -16,6 +18,9 @@ std::vector<Command>& commandRegistry() {
 
 int main(int argc, char** argv) {
   using namespace confvis::cli;
+  // OpenMesh logs every file it writes; our own messages name files and errors instead.
+  omlog().disable();
+  omout().disable();
   CLI::App app{
       "confvis: conformal retargeting of the full field of view onto CAVEs and display walls"};
   app.require_subcommand(1);
