@@ -25,19 +25,37 @@ void evaluateMetric(const IntrinsicTriangulation& tri, const CirclePackingMetric
   }
   if (out.invalidEdge >= 0) return;
   out.angles.resize(tri.faceCount());
-  out.curvature.resize(tri.vertexCount);
-  for (int v = 0; v < tri.vertexCount; ++v)
-    out.curvature[v] = tri.vertexOnBoundary[v] ? std::numbers::pi : 2 * std::numbers::pi;
   for (int f = 0; f < tri.faceCount(); ++f) {
     const auto& fe = tri.faceEdges[f];
     const std::array<double, 3> l{out.edges[fe[0]].length, out.edges[fe[1]].length,
                                   out.edges[fe[2]].length};
-    if (!cornerAngles(metric.geometry, l, out.angles[f])) {
-      if (out.invalidFace < 0) out.invalidFace = f;
-      continue;
-    }
-    for (int c = 0; c < 3; ++c) out.curvature[tri.faceVertices[f][c]] -= out.angles[f][c];
+    if (!cornerAngles(metric.geometry, l, out.angles[f]) && out.invalidFace < 0) out.invalidFace = f;
   }
+  if (out.invalidFace < 0) refreshCurvature(tri, out);
+}
+
+void refreshCurvature(const IntrinsicTriangulation& tri, MetricEvaluation& eval) {
+  eval.curvature.resize(tri.vertexCount);
+  for (int v = 0; v < tri.vertexCount; ++v)
+    eval.curvature[v] = tri.vertexOnBoundary[v] ? std::numbers::pi : 2 * std::numbers::pi;
+  for (int f = 0; f < tri.faceCount(); ++f)
+    for (int c = 0; c < 3; ++c) eval.curvature[tri.faceVertices[f][c]] -= eval.angles[f][c];
+}
+
+bool updateAroundEdge(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
+                      int e, MetricEvaluation& eval) {
+  const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+  eval.edges[e] = edgeLength(metric.geometry, metric.u[a], metric.u[b], metric.eta[e],
+                             metric.epsilon[a], metric.epsilon[b]);
+  if (!eval.edges[e].valid) return false;
+  for (int f : tri.edgeFaces[e]) {
+    if (f < 0) continue;
+    const auto& fe = tri.faceEdges[f];
+    const std::array<double, 3> l{eval.edges[fe[0]].length, eval.edges[fe[1]].length,
+                                  eval.edges[fe[2]].length};
+    if (!cornerAngles(metric.geometry, l, eval.angles[f])) return false;
+  }
+  return true;
 }
 
 void faceAngleJacobian(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int f,

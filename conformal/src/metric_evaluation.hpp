@@ -22,6 +22,12 @@ struct MetricEvaluation {
 void evaluateMetric(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
                     const std::vector<double>& u, MetricEvaluation& out);
 
+// Recomputes edge e and the angles of its faces after a local change (an edge flip); the
+// curvature is left stale for the caller to refresh with refreshCurvature. False if invalid.
+bool updateAroundEdge(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
+                      int e, MetricEvaluation& eval);
+void refreshCurvature(const IntrinsicTriangulation& tri, MetricEvaluation& eval);
+
 // J[a][b] = ∂θ_a/∂u_b for the corners a, b of face f (chain rule through the edge lengths).
 void faceAngleJacobian(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int f,
                        std::array<std::array<double, 3>, 3>& J);

@@ -120,19 +120,20 @@ int restoreDelaunay(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
       const int p = tri.edgeVertices[e][0], s = tri.edgeVertices[e][1];
       metric.eta[e] = etaForLength(metric.geometry, newLength, metric.u[p], metric.u[s],
                                    metric.epsilon[p], metric.epsilon[s]);
-      detail::evaluateMetric(tri, metric, metric.u, eval);
-      if (!eval.valid()) {
+      if (!detail::updateAroundEdge(tri, metric, e, eval)) {
         // A nearly flat quad: rounding makes a new triangle invalid. Undo; flipping the new
         // diagonal restores the old one.
         tri.flip(e);
         metric.eta[e] = oldEta;
-        detail::evaluateMetric(tri, metric, metric.u, eval);
+        if (!detail::updateAroundEdge(tri, metric, e, eval))
+          throw Error(ErrorCode::Internal, "undoing an edge flip left an invalid triangle");
         continue;
       }
       ++flips;
       changed = true;
     }
   }
+  if (flips > 0) detail::refreshCurvature(tri, eval);
   return flips;
 }
 
