@@ -78,10 +78,12 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
                                            const std::vector<char>& edgeCut) {
   std::vector<std::array<Complex, 3>> corner(tri.faceCount());
   std::vector<char> placed(tri.faceCount(), 0);
-  auto angleAt = [&](int f, int c) {  // Euclidean cosine law at corner c
-    const double a = lengths[tri.faceEdges[f][c]], b = lengths[tri.faceEdges[f][(c + 1) % 3]],
-                 d = lengths[tri.faceEdges[f][(c + 2) % 3]];
-    return std::acos(std::clamp((b * b + d * d - a * a) / (2 * b * d), -1.0, 1.0));
+  auto angleAt = [&](int f, int c) {
+    const auto& fe = tri.faceEdges[f];
+    std::array<double, 3> angles;
+    if (!cornerAngles(Geometry::Euclidean, {lengths[fe[0]], lengths[fe[1]], lengths[fe[2]]}, angles))
+      throw Error(ErrorCode::Internal, "flat metric has a degenerate face " + std::to_string(f));
+    return angles[c];
   };
   // Third corner of face f given corners c1 = c0+1 and c2 = c0+2 already placed (CCW order).
   auto placeThird = [&](int f, int c0) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "confvis/base/error.hpp"
@@ -101,16 +102,20 @@ int restoreDelaunay(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
   int flips = 0;
   const int limit = 20 * tri.edgeCount() + 100;
   bool changed = true;
-  std::array<std::array<double, 3>, 3> J;
+  // Each face's angle Jacobian, computed once per pass; a flip refreshes only its two faces.
+  std::vector<std::array<std::array<double, 3>, 3>> faceJ(tri.faceCount());
+  auto refreshFacesOf = [&](int e) {
+    for (int f : tri.edgeFaces[e]) detail::faceAngleJacobian(tri, eval, f, faceJ[f]);
+  };
   while (changed && flips < limit) {
     changed = false;
+    for (int f = 0; f < tri.faceCount(); ++f) detail::faceAngleJacobian(tri, eval, f, faceJ[f]);
     for (int e = 0; e < tri.edgeCount() && flips < limit; ++e) {
       if (tri.edgeOnBoundary(e)) continue;
       double weight = 0;
       for (int f : tri.edgeFaces[e]) {
         const int c = tri.cornerOpposite(f, e);
-        detail::faceAngleJacobian(tri, eval, f, J);
-        weight += J[(c + 1) % 3][(c + 2) % 3];
+        weight += faceJ[f][(c + 1) % 3][(c + 2) % 3];
       }
       if (weight >= -1e-12) continue;
       double newLength;
@@ -127,8 +132,10 @@ int restoreDelaunay(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
         metric.eta[e] = oldEta;
         if (!detail::updateAroundEdge(tri, metric, e, eval))
           throw Error(ErrorCode::Internal, "undoing an edge flip left an invalid triangle");
+        refreshFacesOf(e);
         continue;
       }
+      refreshFacesOf(e);
       ++flips;
       changed = true;
     }
