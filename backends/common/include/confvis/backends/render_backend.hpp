@@ -1,0 +1,74 @@
+#pragma once
+// The one interface both renderers implement (Filament style: one backend interface, one
+// implementation per API). A backend renders every requested wall for every requested eye of a
+// display, either plainly (the ordinary off-axis view every CAVE package draws) or through the
+// conformal map (design note §5). Images come back in memory; render_output.hpp writes them.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "confvis/base/image.hpp"
+#include "confvis/conformal/retarget_map.hpp"
+#include "confvis/engine/display_config.hpp"
+#include "confvis/engine/scene.hpp"
+#include "confvis/engine/viewer.hpp"
+
+namespace confvis {
+
+enum class RenderMode { Plain, Conformal };
+// Stereo eyes in conformal mode (design note §5): Exact marches the bent virtual ray
+// W(e + t (p - e)) as straight segments; Fast shoots one straight ray from e towards W(p).
+enum class StereoRays { Exact, Fast };
+
+// Navigation in the virtual world, separate from the tracked head: the physical frame's
+// reference point c is placed at `position`, and the physical frame is turned by yaw (degrees,
+// about +y, positive turns left) then pitch (degrees, about the turned +x, positive looks up).
+// A physical point p is the virtual point position + R (p - c).
+struct VirtualCamera {
+  glm::dvec3 position{0.0};
+  double yawDegrees = 0.0;
+  double pitchDegrees = 0.0;
+  glm::dmat3 rotation() const;
+};
+
+struct RenderSettings {
+  RenderMode mode = RenderMode::Conformal;
+  std::vector<Eye> eyes{Eye::Center};  // mono: {Center}; stereo: {Left, Right}
+  StereoRays stereoRays = StereoRays::Exact;
+  std::vector<std::string> walls;      // names; empty = every wall, in config order
+  int samplesPerPixel = 1;
+  bool ambientOcclusion = false;
+  HeadPose head;                       // physical head pose (eyes derive from it)
+  VirtualCamera camera;
+  // Output size = round(wall resolution * resolutionScale), at least 1 pixel; tests render small.
+  double resolutionScale = 1.0;
+  bool showProgress = false;           // progress bar on stderr
+};
+
+struct WallImage {
+  std::string wall;
+  Eye eye = Eye::Center;
+  ImageRGBA image;  // linear RGB, alpha 1 where something was drawn
+};
+
+struct RenderResult {
+  std::vector<WallImage> images;   // walls in settings order (config order), eyes in settings order
+  nlohmann::json stats = nlohmann::json::object();  // backend, seconds, rays per second, ...
+};
+
+class RenderBackend {
+ public:
+  virtual ~RenderBackend() = default;
+  virtual std::string name() const = 0;
+  // Builds acceleration structures / uploads buffers; call once per scene. Keeps no reference.
+  virtual void setScene(const Scene& scene) = 0;
+  // `map` is required in conformal mode (Error(InvalidInput) otherwise) and ignored in plain mode.
+  // Unknown wall names give Error(InvalidInput) naming the wall.
+  virtual RenderResult render(const DisplayConfig& config, const RetargetMap* map,
+                              const RenderSettings& settings) = 0;
+};
+
+}  // namespace confvis
