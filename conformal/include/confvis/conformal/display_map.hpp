@@ -6,6 +6,7 @@
 // the other disk. The bake (bake.hpp) turns this into a RetargetMap.
 #include <array>
 #include <complex>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct SphereDiskMesh {
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> boundary;                  // boundary loop, vertex indices, in disk order
                                               // (counter-clockwise in the disk)
+  // Per triangle: 1 where the triangle lies on a lit part of a wall, 0 on a bezel (covered but
+  // unlit: the bake gives alpha 0 there). Empty means every triangle is lit.
+  std::vector<std::uint8_t> lit;
 };
 
 struct DisplayMap {
@@ -34,5 +38,18 @@ struct DisplayMap {
   // Seconds per stage ("template", "flow", "alignment") and mesh sizes, for bake.json.
   nlohmann::json stats = nlohmann::json::object();
 };
+
+struct DisplayConfig;
+
+struct DisplayMapOptions {
+  double edgeLength = 0.0;          // metres; <= 0 takes the config's edge_length
+  bool showProgress = false;
+};
+
+// Templates, refinement, projection to the sphere, both Riemann maps and the Möbius alignment
+// for a validated display config, with config.reference as the reference point.
+// Throws Error(InvalidInput) naming the culprit for displays it cannot map (visible region not a
+// disk, ...), Error(Unreachable) if a flow fails.
+DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOptions& options = {});
 
 }  // namespace confvis
