@@ -1,7 +1,9 @@
 #include "confvis/api/map_follower.hpp"
 
 #include <cmath>
+#include <condition_variable>
 #include <exception>
+#include <mutex>
 
 #include "confvis/base/error.hpp"
 

@@ -17,11 +17,9 @@
 // [](const DisplayConfig& c, const glm::dvec3&) { return bakeDisplay(c); }, since the config
 // handed to it already has its reference moved to the head. Not thread-safe: call it from the
 // render thread; the bakes run on their own thread, one at a time.
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
