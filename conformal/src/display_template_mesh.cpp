@@ -1,7 +1,7 @@
 // Template mesh plumbing: stitching fan cells, sub-meshes, cutting along a tree, topology.
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
-#include <map>
 #include <numbers>
 #include <numeric>
 
@@ -60,18 +60,30 @@ int vertexAt(TemplateBuild& mesh, const glm::dvec3& p) {
 // Directed edges of every triangle as (from, to, triangle, corner of `from`), sorted by the
 // undirected key, so each interior edge's two sides are neighbours.
 struct HalfEdge {
+  std::uint64_t sortKey;  // undirected edge, then direction
   int from, to, triangle, corner;
   std::pair<int, int> key() const { return edgeKey(from, to); }
+  std::uint64_t edge() const { return sortKey >> 1; }
 };
 std::vector<HalfEdge> sortedHalfEdges(const TemplateBuild& mesh) {
-  std::vector<HalfEdge> half;
-  half.reserve(mesh.triangles.size() * 3);
+  // Counting sort by the lower vertex, then the few half-edges per vertex by their key: linear
+  // time (a plain sort of all half-edges dominated the template stage).
+  std::vector<int> start(mesh.points.size() + 1, 0);
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++start[std::min(t[k], t[(k + 1) % 3]) + 1];
+  for (std::size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+  std::vector<HalfEdge> half(mesh.triangles.size() * 3);
+  std::vector<int> fill(start.begin(), start.end() - 1);
   for (int t = 0; t < static_cast<int>(mesh.triangles.size()); ++t)
-    for (int k = 0; k < 3; ++k)
-      half.push_back({mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3], t, k});
-  std::sort(half.begin(), half.end(), [](const HalfEdge& a, const HalfEdge& b) {
-    return a.key() < b.key() || (a.key() == b.key() && a.from < b.from);
-  });
+    for (int k = 0; k < 3; ++k) {
+      const int from = mesh.triangles[t][k], to = mesh.triangles[t][(k + 1) % 3];
+      const auto [lo, hi] = edgeKey(from, to);
+      const std::uint64_t edge = (static_cast<std::uint64_t>(lo) << 31) | static_cast<std::uint64_t>(hi);
+      half[fill[lo]++] = {(edge << 1) | (from > to ? 1u : 0u), from, to, t, k};
+    }
+  for (std::size_t v = 0; v + 1 < start.size(); ++v)
+    std::sort(half.begin() + start[v], half.begin() + start[v + 1],
+              [](const HalfEdge& a, const HalfEdge& b) { return a.sortKey < b.sortKey; });
   return half;
 }
 
@@ -81,7 +93,7 @@ UnionFind cornerWedges(const TemplateBuild& mesh, const std::vector<HalfEdge>& h
   UnionFind wedges(static_cast<int>(mesh.triangles.size()) * 3);
   for (std::size_t i = 0; i < half.size();) {
     std::size_t j = i;
-    while (j < half.size() && half[j].key() == half[i].key()) ++j;
+    while (j < half.size() && half[j].edge() == half[i].edge()) ++j;
     // Only manifold interior edges with opposite directions join wedges.
     const HalfEdge& a = half[i];
     if (j - i == 2 && a.from == half[i + 1].to && !(honourCut && mesh.cut.count(a.key()))) {
@@ -103,6 +115,21 @@ int TemplateBuild::addTriangle(const std::array<int, 3>& t, const FanCell& cell)
   spherical.push_back(cell.spherical ? 1 : 0);
   wall.push_back(cell.wall);
   return static_cast<int>(triangles.size()) - 1;
+}
+
+std::vector<EdgeSides> edgeSides(const TemplateBuild& mesh) {
+  const auto half = sortedHalfEdges(mesh);
+  std::vector<EdgeSides> edges;
+  edges.reserve(half.size() / 2 + 1);
+  for (std::size_t i = 0; i < half.size();) {
+    std::size_t j = i;
+    while (j < half.size() && half[j].edge() == half[i].edge()) ++j;
+    EdgeSides e{half[i].from, half[i].to, half[i].triangle, half[i].corner};
+    if (j - i >= 2) e.t1 = half[i + 1].triangle, e.k1 = half[i + 1].corner;
+    edges.push_back(e);
+    i = j;
+  }
+  return edges;
 }
 
 int findVertex(const TemplateBuild& mesh, const glm::dvec3& p) {
@@ -208,15 +235,15 @@ TriangleTopology analyzeTriangles(const TemplateBuild& mesh) {
   for (const auto& t : mesh.triangles)
     for (int v : t) used[v] = 1;
   topo.vertices = static_cast<int>(std::count(used.begin(), used.end(), 1));
-  std::map<int, int> boundaryNext;
+  std::vector<int> boundaryNext(mesh.points.size(), -1);
   for (std::size_t i = 0; i < half.size();) {
     std::size_t j = i;
-    while (j < half.size() && half[j].key() == half[i].key()) ++j;
+    while (j < half.size() && half[j].edge() == half[i].edge()) ++j;
     ++topo.edges;
     if (j - i > 2 || (j - i == 2 && half[i].from == half[i + 1].from))
       topo.nonManifoldEdges.push_back(half[i].key());
     if (j - i == 1) {
-      if (boundaryNext.count(half[i].from)) topo.nonManifoldVertices.push_back(half[i].from);
+      if (boundaryNext[half[i].from] >= 0) topo.nonManifoldVertices.push_back(half[i].from);
       boundaryNext[half[i].from] = half[i].to;
     }
     i = j;
@@ -244,11 +271,11 @@ TriangleTopology analyzeTriangles(const TemplateBuild& mesh) {
   for (std::size_t v = 0; v < mesh.points.size(); ++v)
     if (used[v] && components.find(static_cast<int>(v)) == static_cast<int>(v)) ++topo.components;
   if (!topo.manifold()) return topo;
-  std::map<int, char> visited;
-  for (const auto& [start, next] : boundaryNext) {
-    if (visited[start]) continue;
+  std::vector<char> visited(mesh.points.size(), 0);
+  for (int start = 0; start < static_cast<int>(boundaryNext.size()); ++start) {
+    if (boundaryNext[start] < 0 || visited[start]) continue;
     std::vector<int> loop;
-    for (int v = start; !visited[v]; v = boundaryNext.at(v)) {
+    for (int v = start; v >= 0 && !visited[v]; v = boundaryNext[v]) {
       visited[v] = 1;
       loop.push_back(v);
     }

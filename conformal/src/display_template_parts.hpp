@@ -60,6 +60,13 @@ int findVertex(const TemplateBuild& mesh, const glm::dvec3& p);
 // the template has no such edge.
 void addCutEdge(TemplateBuild& mesh, const glm::dvec3& a, const glm::dvec3& b);
 
+// Each undirected edge once, with the triangle and corner (where the edge starts) on each side;
+// t1 = -1 on the boundary. Linear time.
+struct EdgeSides {
+  int a, b, t0, k0, t1 = -1, k1 = -1;
+};
+std::vector<EdgeSides> edgeSides(const TemplateBuild& mesh);
+
 // Longest-edge bisection at mid-points until no edge exceeds maxEdge (metres). Edges of
 // spherical triangles split at the mid-direction around `reference` (radius averaged), all
 // others at the straight mid-point, so walls stay exactly planar. Cut edges stay cut.
