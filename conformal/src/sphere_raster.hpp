@@ -1,0 +1,95 @@
+#pragma once
+// Rasterises a triangle mesh on the unit sphere into the texels of a cube map (EXR layout,
+// confvis/base/cube_map.hpp): for every texel direction d covered by a triangle, calls
+// shade(face, x, y, triangle, barycentric, hint). The triangles are the flat chords between
+// their unit-vector corners, so d is inside triangle (a, b, c) exactly when the triple products
+// det(d, b, c), det(d, c, a), det(d, a, b) share det(a, b, c)'s sign, and those products,
+// normalised, are the barycentric coordinates of the point where the ray along d meets the chord
+// triangle: the piecewise-linear map's own coordinates, so coverage and values are exact.
+//
+// Work is split into (face, band of rows) tasks run in parallel; each texel belongs to one task,
+// so shaders write their texels without synchronisation. `hint` is one int per task, for the
+// shader's point-location walk (consecutive texels of a triangle land close together).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include "confvis/base/cube_map.hpp"
+#include "confvis/base/vec3.hpp"
+#include "parallel_for.hpp"
+
+namespace confvis::detail {
+
+// Texel (x, y) of a face has direction normal + c(x) right + c(y) down, c(i) = (2i + 1 - N) / N.
+struct CubeFaceFrame {
+  Vec3d normal, right, down;
+};
+CubeFaceFrame cubeFaceFrame(CubeFace face);
+inline double texelCoordinate(int i, int n) { return static_cast<double>(2 * i + 1 - n) / n; }
+
+// Texels per task band: enough tasks to balance 2..16 threads, few enough to bin cheaply.
+inline constexpr int kRasterBandRows = 16;
+
+struct RasterBinEntry {
+  int triangle, x0, x1, y0, y1;  // inclusive texel box on the task's face
+};
+
+// For each (face, band) task, the triangles whose projection may touch it, with their boxes.
+std::vector<std::vector<RasterBinEntry>> binSphereTriangles(
+    const std::vector<Vec3d>& sphere, const std::vector<std::array<int, 3>>& triangles, int n);
+
+template <class Shade>
+void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
+                         const std::vector<std::array<int, 3>>& triangles, int n, int threads,
+                         const std::function<void()>& onTaskDone, Shade&& shade) {
+  struct Edges {
+    std::array<Vec3d, 3> e;  // e[i] . d = det(d, corner i+1, corner i+2)
+    double sign;             // sign of det(a, b, c); 0 for a degenerate triangle
+  };
+  std::vector<Edges> edges(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const Vec3d& a = sphere[triangles[t][0]];
+    const Vec3d& b = sphere[triangles[t][1]];
+    const Vec3d& c = sphere[triangles[t][2]];
+    edges[t].e = {cross(b, c), cross(c, a), cross(a, b)};
+    const double det = dot(a, edges[t].e[0]);
+    edges[t].sign = det > 0 ? 1.0 : det < 0 ? -1.0 : 0.0;
+  }
+  const auto bins = binSphereTriangles(sphere, triangles, n);
+  const int bands = (n + kRasterBandRows - 1) / kRasterBandRows;
+  parallelFor(bins.size(), threads, [&](std::size_t task) {
+    const CubeFace face = kCubeFaces[task / bands];
+    const int band = static_cast<int>(task % bands);
+    const int bandY0 = band * kRasterBandRows, bandY1 = std::min(n, bandY0 + kRasterBandRows) - 1;
+    const CubeFaceFrame frame = cubeFaceFrame(face);
+    int hint = -1;
+    for (const RasterBinEntry& entry : bins[task]) {
+      const Edges& tri = edges[entry.triangle];
+      if (tri.sign == 0) continue;
+      std::array<double, 3> stepX;  // change of each triple product per texel along x
+      for (int i = 0; i < 3; ++i) stepX[i] = dot(frame.right, tri.e[i]) * (2.0 / n);
+      for (int y = std::max(entry.y0, bandY0); y <= std::min(entry.y1, bandY1); ++y) {
+        const Vec3d rowStart =
+            frame.normal + texelCoordinate(y, n) * frame.down + texelCoordinate(entry.x0, n) * frame.right;
+        std::array<double, 3> w;
+        for (int i = 0; i < 3; ++i) w[i] = tri.sign * dot(rowStart, tri.e[i]);
+        for (int x = entry.x0; x <= entry.x1; ++x) {
+          const double sum = w[0] + w[1] + w[2];
+          const double tolerance = -1e-12 * (std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]));
+          if (w[0] >= tolerance && w[1] >= tolerance && w[2] >= tolerance && sum > 0) {
+            const std::array<double, 3> barycentric{std::max(w[0], 0.0) / sum,
+                                                    std::max(w[1], 0.0) / sum,
+                                                    std::max(w[2], 0.0) / sum};
+            shade(face, x, y, entry.triangle, barycentric, hint);
+          }
+          for (int i = 0; i < 3; ++i) w[i] += tri.sign * stepX[i];
+        }
+      }
+    }
+    if (onTaskDone) onTaskDone();
+  });
+}
+
+}  // namespace confvis::detail
