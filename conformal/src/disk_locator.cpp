@@ -178,7 +178,10 @@ DiskLocator::Hit DiskLocator::locate(std::complex<double> z, int& hint) const {
   if (!(std::isfinite(z.real()) && std::isfinite(z.imag()))) z = 0;
   const bool found = (hint >= 0 && hint < static_cast<int>(affine_.size()) && walk(z, hint, hit)) ||
                      searchGrid(z, hit);
-  if (!found) hit = clampToBoundary(z);
+  if (!found) {
+    hit = clampToBoundary(z);
+    hit.inside = false;
+  }
   // Inside tolerance: renormalise tiny negative coordinates away.
   for (double& b : hit.barycentric) b = std::max(b, 0.0);
   const double sum = hit.barycentric[0] + hit.barycentric[1] + hit.barycentric[2];

@@ -19,6 +19,7 @@ class DiskLocator {
   struct Hit {
     int triangle = -1;
     std::array<double, 3> barycentric{};  // non-negative, sum 1
+    bool inside = true;                   // false: z was outside and has been clamped
   };
 
   // Throws Error(InvalidInput) if no triangle has a non-zero area.
