@@ -22,6 +22,17 @@ double secondsSince(Clock::time_point start) {
 
 constexpr int kMaxResolution = 8192;
 
+// Normalises `sum` into the RGBA texel. Only a triangle spanning antipodal corners could sum to
+// (nearly) zero; its corner stands in then.
+inline void writeDirection(float* texel, const Vec3d& sum, const Vec3d& fallback, float alpha) {
+  const double length = norm(sum);
+  const Vec3d dir = length > 1e-12 ? (1.0 / length) * sum : fallback;
+  texel[0] = static_cast<float>(dir.x);
+  texel[1] = static_cast<float>(dir.y);
+  texel[2] = static_cast<float>(dir.z);
+  texel[3] = alpha;
+}
+
 void validateMesh(const SphereDiskMesh& mesh, const std::string& name) {
   auto fail = [&](const std::string& what) {
     throw Error(ErrorCode::InvalidInput, "display map " + name + " mesh: " + what);
@@ -51,6 +62,11 @@ void validateMesh(const SphereDiskMesh& mesh, const std::string& name) {
 
 // One direction map: rasterise `domain` on the sphere, carry each texel through the disks into
 // `codomain`. alpha from the domain triangle's lit flag; `covered` marks every rasterised texel.
+//
+// Along a span of texels in one domain triangle the homogeneous disk point (sum w_i z_i, sum w_i)
+// is linear in x, and so are the homogeneous barycentric coordinates L in a fixed codomain
+// triangle: while a texel stays in the previous texel's codomain triangle (all L >= 0), its
+// direction is L0 s0 + L1 s1 + L2 s2 normalised, with no point location at all.
 void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codomain,
                       const detail::DiskLocator& codomainDisk, int threads, CubeMap& out,
                       std::vector<std::uint8_t>& covered, Progress* progress) {
@@ -59,27 +75,52 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
   const std::function<void()> onTaskDone = [progress] {
     if (progress) progress->advance();
   };
-  detail::rasterizeSphereMesh(
-      domain.sphere, domain.triangles, n, threads, onTaskDone,
-      [&](CubeFace face, int x, int y, int triangle, const std::array<double, 3>& b, int& hint) {
-        const auto& tri = domain.triangles[triangle];
-        const std::complex<double> z =
-            b[0] * domain.disk[tri[0]] + b[1] * domain.disk[tri[1]] + b[2] * domain.disk[tri[2]];
-        const detail::DiskLocator::Hit hit = codomainDisk.locate(z, hint);
+  auto shadeSpan = [&](const detail::RasterSpan& span, int& hint) {
+    const auto& tri = domain.triangles[span.triangle];
+    const std::complex<double> z0 = domain.disk[tri[0]], z1 = domain.disk[tri[1]],
+                               z2 = domain.disk[tri[2]];
+    auto homogeneous = [&](const std::array<double, 3>& w) {
+      return std::array<double, 3>{w[0] * z0.real() + w[1] * z1.real() + w[2] * z2.real(),
+                                   w[0] * z0.imag() + w[1] * z1.imag() + w[2] * z2.imag(),
+                                   w[0] + w[1] + w[2]};
+    };
+    const std::array<double, 3> h0 = homogeneous(span.w), dh = homogeneous(span.step);
+    const float alpha = domain.lit.empty() || domain.lit[span.triangle] ? 1.0f : 0.0f;
+    float* texel = out.face(span.face).at(span.xBegin, span.y);
+    std::uint8_t* mark = &covered[detail::texelIndex(span.face, span.xBegin, span.y, n)];
+    int current = hint;  // codomain triangle of the previous texel (-1: none, or clamped)
+    for (int x = span.xBegin; x <= span.xEnd; ++x, texel += 4, ++mark) {
+      const double k = x - span.xBegin;
+      const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
+      std::array<double, 3> l{-1, -1, -1};
+      if (current >= 0) {
+        const detail::DiskLocator::Affine& a = codomainDisk.affine(current);
+        const double px = hx - a.x0 * hw, py = hy - a.y0 * hw;
+        l[1] = a.m11 * px + a.m12 * py;
+        l[2] = a.m21 * px + a.m22 * py;
+        l[0] = hw - l[1] - l[2];
+      }
+      const double tolerance = -1e-12 * hw;
+      if (!(l[0] >= tolerance && l[1] >= tolerance && l[2] >= tolerance)) {
+        const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, hint);
+        l = hit.barycentric;
+        current = hit.inside ? hit.triangle : -1;  // outside: clamped, not linear in x
+        hint = hit.triangle;
         const auto& image = codomain.triangles[hit.triangle];
-        const Vec3d sum = hit.barycentric[0] * codomain.sphere[image[0]] +
-                          hit.barycentric[1] * codomain.sphere[image[1]] +
-                          hit.barycentric[2] * codomain.sphere[image[2]];
-        const double length = norm(sum);
-        // Only a triangle spanning antipodal corners could sum to zero; take its corner then.
-        const Vec3d dir = length > 1e-12 ? (1.0 / length) * sum : codomain.sphere[image[0]];
-        float* p = out.face(face).at(x, y);
-        p[0] = static_cast<float>(dir.x);
-        p[1] = static_cast<float>(dir.y);
-        p[2] = static_cast<float>(dir.z);
-        p[3] = domain.lit.empty() || domain.lit[triangle] ? 1.0f : 0.0f;
-        covered[detail::texelIndex(face, x, y, n)] = 1;
-      });
+        const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
+                          l[2] * codomain.sphere[image[2]];
+        writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
+      } else {
+        const auto& image = codomain.triangles[current];
+        const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
+                          l[2] * codomain.sphere[image[2]];
+        writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
+      }
+      *mark = 1;
+    }
+    if (current >= 0) hint = current;
+  };
+  detail::rasterizeSphereMesh(domain.sphere, domain.triangles, n, threads, onTaskDone, shadeSpan);
 }
 
 }  // namespace
@@ -124,14 +165,15 @@ RetargetMap bakeRetargetMap(const DisplayMap& map, int resolution, const BakeOpt
   t.geom = secondsSince(stage);
   stage = Clock::now();
   detail::parallelFor(2, options.threads, [&](std::size_t which) {
-    if (which == 0) detail::extendPastBoundary(result.ray, rayCovered);
-    else detail::extendPastBoundary(result.geom, geomCovered);
+    CubeMap& cube = which == 0 ? result.ray : result.geom;
+    detail::extendPastBoundary(cube, which == 0 ? rayCovered : geomCovered);
+    // Never NaN: every path above normalises a non-zero vector, but a broken invariant must not
+    // reach a renderer.
+    for (const ImageRGBA& face : cube.faces)
+      if (!face.allFinite()) throw Error(ErrorCode::Internal, "bake produced a non-finite texel");
   });
   t.extend = secondsSince(stage);
   if (progress) progress->finish();
-  for (const CubeMap* m : {&result.ray, &result.geom})
-    for (const ImageRGBA& face : m->faces)
-      if (!face.allFinite()) throw Error(ErrorCode::Internal, "bake produced a non-finite texel");
   t.total = secondsSince(start);
   if (timings) *timings = t;
   return result;

@@ -7,9 +7,7 @@
 
 namespace confvis::detail {
 
-TexelRef neighbourTexel(CubeFace face, int x, int y, int dx, int dy, int n) {
-  const int nx = x + dx, ny = y + dy;
-  if (nx >= 0 && nx < n && ny >= 0 && ny < n) return {face, nx, ny};
+TexelRef texelAcrossEdge(CubeFace face, int nx, int ny, int n) {
   CubeFace other;
   double ox, oy;
   directionToTexel(texelDirection(face, nx, ny, n), n, other, ox, oy);
@@ -63,72 +61,96 @@ void setTexelDirection(CubeMap& map, const TexelRef& t, const Vec3d& d) {
 void extendPastBoundary(CubeMap& map, const std::vector<std::uint8_t>& covered) {
   const int n = map.faceSize;
   if (std::find(covered.begin(), covered.end(), 1) == covered.end()) {  // nothing to extend
-    for (std::size_t i = 0; i < covered.size(); ++i) {
-      const TexelRef t = texelAt(i, n);
-      setTexelDirection(map, t, normalized(texelDirection(t.face, t.x, t.y, n)));
-    }
+    for (CubeFace face : kCubeFaces)
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+          setTexelDirection(map, {face, x, y}, normalized(texelDirection(face, x, y, n)));
     return;
   }
   // Rings of uncovered texels by graph distance from the covered region. A bilinear footprint
   // reaches at most two rings out from a point inside, so the first rings are extrapolated
-  // linearly (2 f(a) - f(b) for an earlier neighbour a and the texel b beyond it in the same
-  // face row/column); further rings copy a neighbour: the nearest value.
+  // linearly from an earlier neighbour a and the texel b beyond it; further rings copy a
+  // neighbour: the nearest value.
   constexpr int kExtrapolatedRings = 3;
-  constexpr int kUnfilled = -1;
-  std::vector<int> ringOf(covered.size(), kUnfilled);
-  std::vector<std::size_t> frontier, next;
-  for (std::size_t i = 0; i < covered.size(); ++i)
-    if (covered[i]) {
-      ringOf[i] = 0;
-      frontier.push_back(i);
-    }
-  for (int ring = 1; !frontier.empty(); ++ring) {
-    next.clear();
-    for (std::size_t i : frontier) {
-      const TexelRef t = texelAt(i, n);
-      for (const auto& step : kNeighbourSteps) {
-        const TexelRef nb = neighbourTexel(t.face, t.x, t.y, step[0], step[1], n);
-        const std::size_t j = texelIndex(nb.face, nb.x, nb.y, n);
-        if (ringOf[j] != kUnfilled) continue;
-        ringOf[j] = ring;
-        next.push_back(j);
+  constexpr std::uint16_t kUnfilled = 0xffff;  // rings stay below 3 N <= 24576
+  std::vector<std::uint16_t> ringOf(covered.size(), kUnfilled);
+  auto ringAt = [&](const TexelRef& t) -> std::uint16_t& { return ringOf[texelIndex(t.face, t.x, t.y, n)]; };
+  std::vector<TexelRef> frontier, next;
+  for (CubeFace face : kCubeFaces)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        if (covered[texelIndex(face, x, y, n)]) ringOf[texelIndex(face, x, y, n)] = 0;
+  for (CubeFace face : kCubeFaces)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        if (ringOf[texelIndex(face, x, y, n)] == 0) continue;
+        for (const auto& step : kNeighbourSteps)
+          if (ringAt(neighbourTexel(face, x, y, step[0], step[1], n)) == 0) {
+            frontier.push_back({face, x, y});
+            break;
+          }
       }
-    }
-    // Values of this ring read only earlier rings, so the order within a ring does not matter.
-    for (std::size_t i : next) {
-      const TexelRef t = texelAt(i, n);
+  for (const TexelRef& t : frontier) ringAt(t) = 1;
+
+  // The extrapolated rings: each value reads only earlier rings, so order within a ring does
+  // not matter.
+  int ring = 1;
+  for (; ring <= kExtrapolatedRings && !frontier.empty(); ++ring) {
+    for (const TexelRef& t : frontier) {
       Vec3d sum{}, first{};
       int count = 0;
+      const Vec3d dt = normalized(texelDirection(t.face, t.x, t.y, n));
       for (const auto& step : kNeighbourSteps) {
         const TexelRef a = neighbourTexel(t.face, t.x, t.y, step[0], step[1], n);
-        const int ringA = ringOf[texelIndex(a.face, a.x, a.y, n)];
-        if (ringA == kUnfilled || ringA >= ring) continue;
+        if (ringAt(a) >= ring) continue;  // unfilled, or this ring
         const Vec3d fa = texelValue(map, a);
         Vec3d value = fa;
-        if (ring <= kExtrapolatedRings) {
-          // b continues the line t -> a on the sphere (across a face edge if need be); the
-          // texel spacing differs between faces, so extrapolate by the ratio of the distances.
-          const Vec3d dt = normalized(texelDirection(t.face, t.x, t.y, n));
-          const Vec3d da = normalized(texelDirection(a.face, a.x, a.y, n));
-          CubeFace bFace;
-          double bx, by;
-          directionToTexel(2.0 * da - dt, n, bFace, bx, by);
-          const TexelRef b{bFace, std::clamp(static_cast<int>(bx), 0, n - 1),
-                           std::clamp(static_cast<int>(by), 0, n - 1)};
-          const int ringB = ringOf[texelIndex(b.face, b.x, b.y, n)];
-          const Vec3d db = normalized(texelDirection(b.face, b.x, b.y, n));
-          const double spacing = norm(da - db);
-          if (ringB != kUnfilled && ringB < ring && spacing > 0.5 * norm(dt - da)) {
-            const Vec3d extrapolated = fa + (norm(dt - da) / spacing) * (fa - texelValue(map, b));
-            if (norm(extrapolated) > 0.5) value = normalized(extrapolated);
-          }
+        // b continues the line t -> a on the sphere (across a face edge if need be); the
+        // texel spacing differs between faces, so extrapolate by the ratio of the distances.
+        const Vec3d da = normalized(texelDirection(a.face, a.x, a.y, n));
+        CubeFace bFace;
+        double bx, by;
+        directionToTexel(2.0 * da - dt, n, bFace, bx, by);
+        const TexelRef b{bFace, std::clamp(static_cast<int>(bx), 0, n - 1),
+                         std::clamp(static_cast<int>(by), 0, n - 1)};
+        const Vec3d db = normalized(texelDirection(b.face, b.x, b.y, n));
+        const double spacing = norm(da - db);
+        if (ringAt(b) < ring && spacing > 0.5 * norm(dt - da)) {
+          const Vec3d extrapolated = fa + (norm(dt - da) / spacing) * (fa - texelValue(map, b));
+          if (norm(extrapolated) > 0.5) value = normalized(extrapolated);
         }
         sum = sum + value;
         if (count++ == 0) first = value;
-        if (ring > kExtrapolatedRings) break;  // the nearest value: one neighbour is enough
       }
       // Opposite neighbours across a one-texel gap can cancel: keep the first value then.
-      setTexelDirection(map, t, norm(sum) > 1e-6 ? normalized(sum) : first);
+      setTexelDirection(map, t, count > 1 && norm(sum) > 1e-6 ? normalized(sum) : first);
+    }
+    next.clear();
+    for (const TexelRef& t : frontier)
+      for (const auto& step : kNeighbourSteps) {
+        const TexelRef nb = neighbourTexel(t.face, t.x, t.y, step[0], step[1], n);
+        std::uint16_t& r = ringAt(nb);
+        if (r != kUnfilled) continue;
+        r = static_cast<std::uint16_t>(ring + 1);
+        // The nearest value for now; the next extrapolated ring overwrites it.
+        std::copy_n(map.face(t.face).at(t.x, t.y), 3, map.face(nb.face).at(nb.x, nb.y));
+        next.push_back(nb);
+      }
+    frontier.swap(next);
+  }
+  // Further out, breadth first: each texel copies the texel that reached it, the nearest value.
+  for (; !frontier.empty(); ++ring) {
+    next.clear();
+    for (const TexelRef& t : frontier) {
+      const float* value = map.face(t.face).at(t.x, t.y);
+      for (const auto& step : kNeighbourSteps) {
+        const TexelRef nb = neighbourTexel(t.face, t.x, t.y, step[0], step[1], n);
+        std::uint16_t& r = ringAt(nb);
+        if (r != kUnfilled) continue;
+        r = static_cast<std::uint16_t>(std::min(ring + 1, 0xfffe));
+        std::copy_n(value, 3, map.face(nb.face).at(nb.x, nb.y));
+        next.push_back(nb);
+      }
     }
     frontier.swap(next);
   }

@@ -23,9 +23,17 @@ inline TexelRef texelAt(std::size_t index, int n) {
   return {kCubeFaces[index / perFace], rem % n, rem / n};
 }
 
+// Texel (x, y) of `face` with x or y one step off the face: the texel of the neighbouring face
+// nearest to its direction.
+TexelRef texelAcrossEdge(CubeFace face, int x, int y, int n);
+
 // The texel (x + dx, y + dy) of `face`, where a step off the face continues on the neighbouring
 // face (at the texel nearest to the stepped-off texel's direction).
-TexelRef neighbourTexel(CubeFace face, int x, int y, int dx, int dy, int n);
+inline TexelRef neighbourTexel(CubeFace face, int x, int y, int dx, int dy, int n) {
+  const int nx = x + dx, ny = y + dy;
+  if (nx >= 0 && nx < n && ny >= 0 && ny < n) return {face, nx, ny};
+  return texelAcrossEdge(face, nx, ny, n);
+}
 
 inline constexpr int kNeighbourSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 

@@ -30,11 +30,15 @@ class DiskLocator {
   // Always returns a triangle of non-zero area.
   Hit locate(std::complex<double> z, int& hint) const;
 
- private:
-  struct Affine {  // barycentric (l1, l2) = M (z - p0), l0 = 1 - l1 - l2
+  // Triangle t's barycentric coordinates as affine functions of z = x + iy:
+  // (l1, l2) = M (z - p0), l0 = 1 - l1 - l2.
+  struct Affine {
     double x0, y0, m11, m12, m21, m22;
-    bool valid;
+    bool valid;  // false for a triangle of (near) zero area, which is never returned
   };
+  const Affine& affine(int triangle) const { return affine_[triangle]; }
+
+ private:
   std::array<double, 3> barycentric(int t, std::complex<double> z) const;
   bool walk(std::complex<double> z, int start, Hit& hit) const;
   bool searchGrid(std::complex<double> z, Hit& hit) const;

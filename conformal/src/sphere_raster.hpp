@@ -1,7 +1,7 @@
 #pragma once
 // Rasterises a triangle mesh on the unit sphere into the texels of a cube map (EXR layout,
-// confvis/base/cube_map.hpp): for every texel direction d covered by a triangle, calls
-// shade(face, x, y, triangle, barycentric, hint). The triangles are the flat chords between
+// confvis/base/cube_map.hpp): for every row span of texels covered by a triangle, calls
+// shadeSpan(span, hint) (RasterSpan below). The triangles are the flat chords between
 // their unit-vector corners, so d is inside triangle (a, b, c) exactly when the triple products
 // det(d, b, c), det(d, c, a), det(d, a, b) share det(a, b, c)'s sign, and those products,
 // normalised, are the barycentric coordinates of the point where the ray along d meets the chord
@@ -32,6 +32,15 @@ inline double texelCoordinate(int i, int n) { return static_cast<double>(2 * i +
 // Texels per task band: enough tasks to balance 2..16 threads, few enough to bin cheaply.
 inline constexpr int kRasterBandRows = 16;
 
+// Texels xBegin..xEnd (inclusive) of row y of `face`, all inside `triangle`. The triple
+// products (sign-corrected to be >= 0 inside) are w at xBegin and change by step per texel;
+// the texel's barycentric coordinates are w / (w0 + w1 + w2).
+struct RasterSpan {
+  CubeFace face;
+  int y, xBegin, xEnd, triangle;
+  std::array<double, 3> w, step;
+};
+
 struct RasterBinEntry {
   int triangle, x0, x1, y0, y1;  // inclusive texel box on the task's face
 };
@@ -40,10 +49,10 @@ struct RasterBinEntry {
 std::vector<std::vector<RasterBinEntry>> binSphereTriangles(
     const std::vector<Vec3d>& sphere, const std::vector<std::array<int, 3>>& triangles, int n);
 
-template <class Shade>
+template <class ShadeSpan>
 void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
                          const std::vector<std::array<int, 3>>& triangles, int n, int threads,
-                         const std::function<void()>& onTaskDone, Shade&& shade) {
+                         const std::function<void()>& onTaskDone, ShadeSpan&& shadeSpan) {
   struct Edges {
     std::array<Vec3d, 3> e;  // e[i] . d = det(d, corner i+1, corner i+2)
     double sign;             // sign of det(a, b, c); 0 for a degenerate triangle
@@ -68,24 +77,38 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
     for (const RasterBinEntry& entry : bins[task]) {
       const Edges& tri = edges[entry.triangle];
       if (tri.sign == 0) continue;
-      std::array<double, 3> stepX;  // change of each triple product per texel along x
-      for (int i = 0; i < 3; ++i) stepX[i] = dot(frame.right, tri.e[i]) * (2.0 / n);
+      RasterSpan span{face, 0, 0, 0, entry.triangle, {}, {}};
+      // Change of each triple product per texel along x.
+      for (int i = 0; i < 3; ++i) span.step[i] = tri.sign * dot(frame.right, tri.e[i]) * (2.0 / n);
       for (int y = std::max(entry.y0, bandY0); y <= std::min(entry.y1, bandY1); ++y) {
-        const Vec3d rowStart =
-            frame.normal + texelCoordinate(y, n) * frame.down + texelCoordinate(entry.x0, n) * frame.right;
+        const Vec3d rowStart = frame.normal + texelCoordinate(y, n) * frame.down +
+                               texelCoordinate(entry.x0, n) * frame.right;
         std::array<double, 3> w;
         for (int i = 0; i < 3; ++i) w[i] = tri.sign * dot(rowStart, tri.e[i]);
+        // The triangle is convex: its texels in this row are one span.
+        int first = -1, last = -1;
+        std::array<double, 3> wFirst{};
         for (int x = entry.x0; x <= entry.x1; ++x) {
-          const double sum = w[0] + w[1] + w[2];
           const double tolerance = -1e-12 * (std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]));
-          if (w[0] >= tolerance && w[1] >= tolerance && w[2] >= tolerance && sum > 0) {
-            const std::array<double, 3> barycentric{std::max(w[0], 0.0) / sum,
-                                                    std::max(w[1], 0.0) / sum,
-                                                    std::max(w[2], 0.0) / sum};
-            shade(face, x, y, entry.triangle, barycentric, hint);
+          const bool inside = w[0] >= tolerance && w[1] >= tolerance && w[2] >= tolerance &&
+                              w[0] + w[1] + w[2] > 0;
+          if (inside) {
+            if (first < 0) {
+              first = x;
+              wFirst = w;
+            }
+            last = x;
+          } else if (first >= 0) {
+            break;
           }
-          for (int i = 0; i < 3; ++i) w[i] += tri.sign * stepX[i];
+          for (int i = 0; i < 3; ++i) w[i] += span.step[i];
         }
+        if (first < 0) continue;
+        span.y = y;
+        span.xBegin = first;
+        span.xEnd = last;
+        span.w = wFirst;
+        shadeSpan(span, hint);
       }
     }
     if (onTaskDone) onTaskDone();
