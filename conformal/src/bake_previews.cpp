@@ -76,12 +76,14 @@ ImageRGBA diskPreview(const SphereDiskMesh& mesh, int size) {
       Vec3d colour = checkerColour(s);
       if (!mesh.lit.empty() && !mesh.lit[hit.triangle]) colour = 0.3 * colour;
       // Mesh edges: within about half a pixel of the triangle's border (barycentric coordinate
-      // times the corner's distance to the opposite edge).
+      // times the corner's height over the opposite edge), where triangles are big enough for
+      // the lines not to hide the checkerboard.
       const double twiceArea = std::abs(((mesh.disk[t[1]] - mesh.disk[t[0]]) *
                                          std::conj(mesh.disk[t[2]] - mesh.disk[t[0]])).imag());
       for (int k = 0; k < 3; ++k) {
         const double edge = std::abs(mesh.disk[t[(k + 2) % 3]] - mesh.disk[t[(k + 1) % 3]]);
-        if (edge > 0 && hit.barycentric[k] * twiceArea / edge < 0.5 * pixel) {
+        const double height = edge > 0 ? twiceArea / edge : 0;
+        if (height > 6 * pixel && hit.barycentric[k] * height < 0.5 * pixel) {
           colour = 0.5 * colour + Vec3d{0.4, 0.4, 0.4};
           break;
         }
