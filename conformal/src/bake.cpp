@@ -75,7 +75,10 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
   const std::function<void()> onTaskDone = [progress] {
     if (progress) progress->advance();
   };
-  auto shadeSpan = [&](const detail::RasterSpan& span, int& hint) {
+  // hints[0]: the codomain triangle of the last texel shaded; hints[1]: that of the first texel
+  // of the last span, the best start for the next span (the next row of the same triangle).
+  auto shadeSpan = [&](const detail::RasterSpan& span, std::array<int, 2>& hints) {
+    int& hint = hints[0];
     const auto& tri = domain.triangles[span.triangle];
     const std::complex<double> z0 = domain.disk[tri[0]], z1 = domain.disk[tri[1]],
                                z2 = domain.disk[tri[2]];
@@ -88,7 +91,8 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
     const float alpha = domain.lit.empty() || domain.lit[span.triangle] ? 1.0f : 0.0f;
     float* texel = out.face(span.face).at(span.xBegin, span.y);
     std::uint8_t* mark = &covered[detail::texelIndex(span.face, span.xBegin, span.y, n)];
-    int current = hint;  // codomain triangle of the previous texel (-1: none, or clamped)
+    int current = hints[1] >= 0 ? hints[1] : hint;  // the previous texel's (-1: none, clamped)
+    if (hints[1] >= 0) hint = hints[1];
     for (int x = span.xBegin; x <= span.xEnd; ++x, texel += 4, ++mark) {
       const double k = x - span.xBegin;
       const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
@@ -117,6 +121,7 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
         writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
       }
       *mark = 1;
+      if (x == span.xBegin) hints[1] = current;
     }
     if (current >= 0) hint = current;
   };

@@ -8,8 +8,9 @@
 // triangle: the piecewise-linear map's own coordinates, so coverage and values are exact.
 //
 // Work is split into (face, band of rows) tasks run in parallel; each texel belongs to one task,
-// so shaders write their texels without synchronisation. `hint` is one int per task, for the
-// shader's point-location walk (consecutive texels of a triangle land close together).
+// so shaders write their texels without synchronisation. `hints` are two ints per task, for
+// the shader's point-location walk (consecutive texels of a triangle land close together); a
+// triangle's spans come row after row.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -73,7 +74,7 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
     const int band = static_cast<int>(task % bands);
     const int bandY0 = band * kRasterBandRows, bandY1 = std::min(n, bandY0 + kRasterBandRows) - 1;
     const CubeFaceFrame frame = cubeFaceFrame(face);
-    int hint = -1;
+    std::array<int, 2> hints{-1, -1};
     for (const RasterBinEntry& entry : bins[task]) {
       const Edges& tri = edges[entry.triangle];
       if (tri.sign == 0) continue;
@@ -83,32 +84,44 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
       for (int y = std::max(entry.y0, bandY0); y <= std::min(entry.y1, bandY1); ++y) {
         const Vec3d rowStart = frame.normal + texelCoordinate(y, n) * frame.down +
                                texelCoordinate(entry.x0, n) * frame.right;
-        std::array<double, 3> w;
-        for (int i = 0; i < 3; ++i) w[i] = tri.sign * dot(rowStart, tri.e[i]);
-        // The triangle is convex: its texels in this row are one span.
-        int first = -1, last = -1;
-        std::array<double, 3> wFirst{};
-        for (int x = entry.x0; x <= entry.x1; ++x) {
-          const double tolerance = -1e-12 * (std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]));
-          const bool inside = w[0] >= tolerance && w[1] >= tolerance && w[2] >= tolerance &&
-                              w[0] + w[1] + w[2] > 0;
-          if (inside) {
-            if (first < 0) {
-              first = x;
-              wFirst = w;
-            }
-            last = x;
-          } else if (first >= 0) {
-            break;
-          }
-          for (int i = 0; i < 3; ++i) w[i] += span.step[i];
+        std::array<double, 3> w0;
+        for (int i = 0; i < 3; ++i) w0[i] = tri.sign * dot(rowStart, tri.e[i]);
+        // The exact test of texel entry.x0 + k (tolerant on the edges, so that a texel on an
+        // edge shared by two triangles is found by at least one despite rounding).
+        auto inside = [&](int k) {
+          const double a = w0[0] + k * span.step[0], b = w0[1] + k * span.step[1],
+                       c = w0[2] + k * span.step[2];
+          const double tolerance = -1e-12 * (std::abs(a) + std::abs(b) + std::abs(c));
+          return a >= tolerance && b >= tolerance && c >= tolerance && a + b + c > 0;
+        };
+        // The triangle is convex, so its texels in this row are one span: solve each edge's
+        // linear inequality for k, then settle the ends with the exact test.
+        const int kMax = entry.x1 - entry.x0;
+        double lo = 0, hi = kMax;
+        for (int i = 0; i < 3; ++i) {
+          if (span.step[i] > 0) lo = std::max(lo, -w0[i] / span.step[i]);
+          else if (span.step[i] < 0) hi = std::min(hi, -w0[i] / span.step[i]);
+          else if (w0[i] < -1e-12 * (std::abs(w0[0]) + std::abs(w0[1]) + std::abs(w0[2])))
+            lo = kMax + 2.0;  // parallel to the row and outside it
         }
-        if (first < 0) continue;
+        if (!(lo <= hi + 1.0)) continue;  // more than a texel away from any texel centre
+        int first = std::clamp(static_cast<int>(std::floor(lo)), 0, kMax);
+        const int lastCandidate = std::clamp(static_cast<int>(std::ceil(hi)) + 1, 0, kMax);
+        while (first <= lastCandidate && !inside(first)) ++first;
+        if (first > lastCandidate) continue;
+        while (first > 0 && inside(first - 1)) --first;
+        int last = std::clamp(static_cast<int>(std::ceil(hi)), first, kMax);
+        while (last > first && !inside(last)) --last;
+        while (last < kMax && inside(last + 1)) ++last;
+        std::array<double, 3> wFirst;
+        for (int i = 0; i < 3; ++i) wFirst[i] = w0[i] + first * span.step[i];
+        first += entry.x0;
+        last += entry.x0;
         span.y = y;
         span.xBegin = first;
         span.xEnd = last;
         span.w = wFirst;
-        shadeSpan(span, hint);
+        shadeSpan(span, hints);
       }
     }
     if (onTaskDone) onTaskDone();

@@ -10,7 +10,8 @@
 // format and confvis version, so overrides, format changes and new releases never hit stale
 // entries. An entry is a bake directory (bake_files.hpp), written into a temporary folder and
 // renamed into place; one that does not load back (truncated EXR, sidecar that does not match)
-// is removed and rebuilt.
+// is removed and rebuilt. Maps that follow a tracked head (a new reference point every few
+// centimetres) are better baked with useCache = false: each reference point is a new entry.
 #include <filesystem>
 #include <functional>
 #include <optional>
