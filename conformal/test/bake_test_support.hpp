@@ -6,6 +6,11 @@
 #include <complex>
 #include <functional>
 
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "confvis/base/error.hpp"
 #include "confvis/base/vec3.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/mesh_generators.hpp"
@@ -84,6 +89,22 @@ inline std::vector<double> diskMapRatios(const SphereDiskMesh& mesh) {
     ratios.push_back((conformal + anti) / std::abs(conformal - anti));
   }
   return ratios;
+}
+
+}  // namespace confvis::test
+
+namespace confvis::test {
+
+// Expects call() to throw one confvis::Error with `code` whose message contains `fragment`.
+template <class Call>
+void expectError(Call&& call, ErrorCode code, const std::string& fragment) {
+  try {
+    call();
+    ADD_FAILURE() << "no error; expected one mentioning '" << fragment << "'";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), code) << e.what();
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace confvis::test
