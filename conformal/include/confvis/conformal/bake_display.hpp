@@ -1,0 +1,69 @@
+#pragma once
+// From a display config to its baked RetargetMap in one call, with an on-disk cache: what the
+// renderers, `confvis bake` and the public API use.
+//
+//   config -> effective config (overrides applied, validated, hashed) -> cache lookup ->
+//   on a miss: computeDisplayMap -> bakeRetargetMap -> bake directory written into the cache.
+//
+// The cache key is the effective config's hash (DisplayConfig::hash covers every field,
+// resolution, edge length and reference point included) under a folder named for the bake
+// format and confvis version, so overrides, format changes and new releases never hit stale
+// entries. An entry is a bake directory (bake_files.hpp), written into a temporary folder and
+// renamed into place; one that does not load back (truncated EXR, sidecar that does not match)
+// is removed and rebuilt. Maps that follow a tracked head (a new reference point every few
+// centimetres) are better baked with useCache = false: each reference point is a new entry.
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "confvis/conformal/bake.hpp"
+#include "confvis/conformal/display_map.hpp"
+#include "confvis/engine/display_config.hpp"
+
+namespace confvis {
+
+struct BakeDisplayOptions {
+  std::optional<int> resolution;      // texels per face; default: config.cubeResolution
+  std::optional<double> edgeLength;   // metres; default: config.edgeLength
+  std::optional<Vec3d> reference;     // default: config.reference
+  bool useCache = true;
+  std::filesystem::path cacheDirectory;  // empty: defaultCacheDirectory()
+  int threads = 0;                       // 0: one per hardware thread
+  bool showProgress = false;
+};
+
+struct BakedDisplay {
+  DisplayConfig config;  // the effective config the map was baked for
+  RetargetMap map;
+  nlohmann::json sidecar;              // bake.json's contents
+  std::optional<DisplayMap> displayMap;  // set when computed by this call (not on a cache hit)
+  BakeTimings timings;                 // of this call's bake (zero on a cache hit)
+  std::filesystem::path cacheEntry;    // the bake directory in the cache; empty without cache
+  bool fromCache = false;
+  std::string cacheNote;  // why an existing entry was rebuilt (corrupt, partial), else empty
+};
+
+// CONFVIS_CACHE_DIR if set, else $XDG_CACHE_HOME/confvis, else $HOME/.cache/confvis, else
+// <temp>/confvis-cache.
+std::filesystem::path defaultCacheDirectory();
+
+// The config with the options' overrides applied, validated again (e.g. a reference point
+// outside the display) and re-hashed. Throws Error(InvalidInput) naming the override.
+DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplayOptions& options);
+
+// Where the cache keeps the bake of an effective config.
+std::filesystem::path bakeCacheEntry(const std::filesystem::path& cacheDirectory,
+                                     const DisplayConfig& effectiveConfig);
+
+// computeDisplayMap (templates, flows, alignment) and bakeRetargetMap, through the cache.
+BakedDisplay bakeDisplay(const DisplayConfig& config, const BakeDisplayOptions& options = {});
+
+// The same with another source of DisplayMaps (tests, custom templates).
+using DisplayMapSource = std::function<DisplayMap(const DisplayConfig& effectiveConfig)>;
+BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptions& options,
+                             const DisplayMapSource& computeMap);
+
+}  // namespace confvis

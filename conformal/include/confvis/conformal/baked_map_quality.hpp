@@ -1,0 +1,73 @@
+#pragma once
+// How good a baked map is, measured on the cube maps alone (design note §6): conformality and
+// orientation from finite differences of neighbouring texels on the sphere, the round trip
+// through the inverse map, and whether the image of `ray` covers the source field. Used by the
+// tests, by bake.json and by the benchmark. Angles are reported in texels: one texel is 2/N
+// radians, the angular size of a texel at a face centre (the largest).
+#include <cstddef>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "confvis/base/cube_map.hpp"
+#include "confvis/conformal/retarget_map.hpp"
+
+namespace confvis {
+
+inline double texelAngle(int resolution) { return 2.0 / resolution; }
+
+struct ConformalityOptions {
+  int margin = 2;  // texels (4-neighbour steps, across faces) kept away from alpha < 0.5 texels
+  // A texel whose forward and backward differences along x or y differ (as vectors) by more than
+  // this fraction of their mean length straddles a discontinuity (the source cut, in geom) or a
+  // kink too sharp to measure (the cut's ends, where the map has a branch point): skipped.
+  double discontinuityTolerance = 0.5;
+  int stride = 1;  // measure every stride-th texel along x and y
+};
+
+struct BakedConformality {
+  std::size_t measured = 0;       // texels whose Jacobian was measured
+  std::size_t nearBoundary = 0;   // valid texels skipped for the margin
+  std::size_t discontinuous = 0;  // skipped as straddling a discontinuity
+  std::size_t flipped = 0;        // measured texels where the map reverses orientation
+  // Ratio of the Jacobian's singular values (1 = conformal) over the measured texels.
+  double ratioMean = 1, ratioP50 = 1, ratioP95 = 1, ratioP99 = 1, ratioMax = 1;
+};
+
+// The Jacobian of d -> normalised RGB(d) at each texel, from central differences over its four
+// neighbours (across face edges), as a map between the tangent planes of the unit sphere.
+BakedConformality measureBakedConformality(const CubeMap& map,
+                                           const ConformalityOptions& options = {});
+
+struct RoundTripStats {
+  std::size_t measured = 0;
+  // Texels whose inverse lookup blends texels more than `discontinuityTexels` apart (its
+  // footprint straddles the source cut); reported, not measured.
+  std::size_t discontinuous = 0;
+  std::size_t invalid = 0;  // inverse lookup invalid (alpha < 0.5)
+  double p50 = 0, p95 = 0, p99 = 0, max = 0;  // angle(inverse(forward(d)), d), texels
+};
+
+// For every texel d of `forward` with alpha >= 0.5: v = the stored direction, then a bilinear
+// lookup of v in `inverse` (as RetargetMap does), compared with d.
+RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, int stride = 1,
+                                double discontinuityTexels = 8.0);
+
+struct CoverageStats {
+  std::size_t sourceTexels = 0;  // geom texels with alpha >= 0.5: directions v in S
+  std::size_t covered = 0;       // v = ray(d) within tolerance for the lit d = geom(v)
+  std::size_t unlit = 0;         // geom(v) falls on an unlit part (bezel) of the display
+  std::size_t discontinuous = 0; // ray's footprint at geom(v) straddles a discontinuity
+  double fraction = 0;           // covered / (sourceTexels - unlit)
+  double maxErrorTexels = 0;     // largest angle(ray(geom(v)), v) over lit v
+};
+
+// Whether the image of ray covers the source field: every v in S must be ray(d) for the lit
+// display direction d = geom(v), within `toleranceTexels`.
+CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels = 1.0, int stride = 1,
+                              double discontinuityTexels = 8.0);
+
+nlohmann::json toJson(const BakedConformality& stats);
+nlohmann::json toJson(const RoundTripStats& stats);
+nlohmann::json toJson(const CoverageStats& stats);
+
+}  // namespace confvis

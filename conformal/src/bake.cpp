@@ -1,0 +1,187 @@
+#include "confvis/conformal/bake.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "confvis/base/error.hpp"
+#include "confvis/base/progress.hpp"
+#include "cube_texels.hpp"
+#include "disk_locator.hpp"
+#include "sphere_raster.hpp"
+
+namespace confvis {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+constexpr int kMaxResolution = 8192;
+
+// Normalises `sum` into the RGBA texel. Only a triangle spanning antipodal corners could sum to
+// (nearly) zero; its corner stands in then.
+inline void writeDirection(float* texel, const Vec3d& sum, const Vec3d& fallback, float alpha) {
+  const double length = norm(sum);
+  const Vec3d dir = length > 1e-12 ? (1.0 / length) * sum : fallback;
+  texel[0] = static_cast<float>(dir.x);
+  texel[1] = static_cast<float>(dir.y);
+  texel[2] = static_cast<float>(dir.z);
+  texel[3] = alpha;
+}
+
+void validateMesh(const SphereDiskMesh& mesh, const std::string& name) {
+  auto fail = [&](const std::string& what) {
+    throw Error(ErrorCode::InvalidInput, "display map " + name + " mesh: " + what);
+  };
+  const std::size_t vertices = mesh.sphere.size();
+  if (mesh.disk.size() != vertices)
+    fail(std::to_string(vertices) + " sphere points but " + std::to_string(mesh.disk.size()) +
+         " disk points");
+  if (mesh.triangles.empty()) fail("no triangles");
+  if (!mesh.lit.empty() && mesh.lit.size() != mesh.triangles.size())
+    fail(std::to_string(mesh.lit.size()) + " lit flags for " +
+         std::to_string(mesh.triangles.size()) + " triangles");
+  for (std::size_t v = 0; v < vertices; ++v) {
+    const Vec3d& p = mesh.sphere[v];
+    if (!isFinite(p) || std::abs(norm(p) - 1.0) > 1e-6)
+      fail("vertex " + std::to_string(v) + " is not a finite unit vector");
+    const std::complex<double> z = mesh.disk[v];
+    if (!std::isfinite(z.real()) || !std::isfinite(z.imag()) || std::abs(z) > 1.0 + 1e-6)
+      fail("disk point of vertex " + std::to_string(v) + " is not in the closed unit disk");
+  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int v : mesh.triangles[t])
+      if (v < 0 || static_cast<std::size_t>(v) >= vertices)
+        fail("triangle " + std::to_string(t) + " refers to vertex " + std::to_string(v) +
+             " of " + std::to_string(vertices));
+}
+
+// One direction map: rasterise `domain` on the sphere, carry each texel through the disks into
+// `codomain`. alpha from the domain triangle's lit flag; `covered` marks every rasterised texel.
+//
+// Along a span of texels in one domain triangle the homogeneous disk point (sum w_i z_i, sum w_i)
+// is linear in x, and so are the homogeneous barycentric coordinates L in a fixed codomain
+// triangle: while a texel stays in the previous texel's codomain triangle (all L >= 0), its
+// direction is L0 s0 + L1 s1 + L2 s2 normalised, with no point location at all.
+void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codomain,
+                      const detail::DiskLocator& codomainDisk, int threads, CubeMap& out,
+                      std::vector<std::uint8_t>& covered, Progress* progress) {
+  const int n = out.faceSize;
+  covered.assign(6 * static_cast<std::size_t>(n) * n, 0);
+  const std::function<void()> onTaskDone = [progress] {
+    if (progress) progress->advance();
+  };
+  // hints[0]: the codomain triangle of the last texel shaded; hints[1]: that of the first texel
+  // of the last span, the best start for the next span (the next row of the same triangle).
+  auto shadeSpan = [&](const detail::RasterSpan& span, std::array<int, 2>& hints) {
+    int& hint = hints[0];
+    const auto& tri = domain.triangles[span.triangle];
+    const std::complex<double> z0 = domain.disk[tri[0]], z1 = domain.disk[tri[1]],
+                               z2 = domain.disk[tri[2]];
+    auto homogeneous = [&](const std::array<double, 3>& w) {
+      return std::array<double, 3>{w[0] * z0.real() + w[1] * z1.real() + w[2] * z2.real(),
+                                   w[0] * z0.imag() + w[1] * z1.imag() + w[2] * z2.imag(),
+                                   w[0] + w[1] + w[2]};
+    };
+    const std::array<double, 3> h0 = homogeneous(span.w), dh = homogeneous(span.step);
+    const float alpha = domain.lit.empty() || domain.lit[span.triangle] ? 1.0f : 0.0f;
+    float* texel = out.face(span.face).at(span.xBegin, span.y);
+    std::uint8_t* mark = &covered[detail::texelIndex(span.face, span.xBegin, span.y, n)];
+    int current = hints[1] >= 0 ? hints[1] : hint;  // the previous texel's (-1: none, clamped)
+    if (hints[1] >= 0) hint = hints[1];
+    for (int x = span.xBegin; x <= span.xEnd; ++x, texel += 4, ++mark) {
+      const double k = x - span.xBegin;
+      const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
+      std::array<double, 3> l{-1, -1, -1};
+      if (current >= 0) {
+        const detail::DiskLocator::Affine& a = codomainDisk.affine(current);
+        const double px = hx - a.x0 * hw, py = hy - a.y0 * hw;
+        l[1] = a.m11 * px + a.m12 * py;
+        l[2] = a.m21 * px + a.m22 * py;
+        l[0] = hw - l[1] - l[2];
+      }
+      const double tolerance = -1e-12 * hw;
+      if (!(l[0] >= tolerance && l[1] >= tolerance && l[2] >= tolerance)) {
+        const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, hint);
+        l = hit.barycentric;
+        current = hit.inside ? hit.triangle : -1;  // outside: clamped, not linear in x
+        hint = hit.triangle;
+        const auto& image = codomain.triangles[hit.triangle];
+        const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
+                          l[2] * codomain.sphere[image[2]];
+        writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
+      } else {
+        const auto& image = codomain.triangles[current];
+        const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
+                          l[2] * codomain.sphere[image[2]];
+        writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
+      }
+      *mark = 1;
+      if (x == span.xBegin) hints[1] = current;
+    }
+    if (current >= 0) hint = current;
+  };
+  detail::rasterizeSphereMesh(domain.sphere, domain.triangles, n, threads, onTaskDone, shadeSpan);
+}
+
+}  // namespace
+
+void validateDisplayMap(const DisplayMap& map) {
+  validateMesh(map.source, "source");
+  validateMesh(map.target, "target");
+}
+
+RetargetMap bakeRetargetMap(const DisplayMap& map, int resolution, const BakeOptions& options,
+                            BakeTimings* timings) {
+  if (resolution < 1 || resolution > kMaxResolution)
+    throw Error(ErrorCode::InvalidInput, "bake resolution must be between 1 and " +
+                                             std::to_string(kMaxResolution) + " texels, got " +
+                                             std::to_string(resolution));
+  if (!isFinite(options.reference))
+    throw Error(ErrorCode::InvalidInput, "bake reference point is not finite");
+  validateDisplayMap(map);
+  BakeTimings t;
+  const auto start = Clock::now();
+  auto stage = Clock::now();
+  const detail::DiskLocator sourceDisk(map.source.disk, map.source.triangles);
+  const detail::DiskLocator targetDisk(map.target.disk, map.target.triangles);
+  t.locators = secondsSince(stage);
+
+  const int bands = (resolution + detail::kRasterBandRows - 1) / detail::kRasterBandRows;
+  std::unique_ptr<Progress> progress;
+  if (options.showProgress) progress = std::make_unique<Progress>("bake", 12 * bands, true);
+
+  RetargetMap result;
+  result.reference = options.reference;
+  result.ray = CubeMap(resolution);
+  result.geom = CubeMap(resolution);
+  std::vector<std::uint8_t> rayCovered, geomCovered;
+  stage = Clock::now();
+  bakeDirectionMap(map.target, map.source, sourceDisk, options.threads, result.ray, rayCovered,
+                   progress.get());
+  t.ray = secondsSince(stage);
+  stage = Clock::now();
+  bakeDirectionMap(map.source, map.target, targetDisk, options.threads, result.geom, geomCovered,
+                   progress.get());
+  t.geom = secondsSince(stage);
+  stage = Clock::now();
+  detail::parallelFor(2, options.threads, [&](std::size_t which) {
+    CubeMap& cube = which == 0 ? result.ray : result.geom;
+    detail::extendPastBoundary(cube, which == 0 ? rayCovered : geomCovered);
+    // Never NaN: every path above normalises a non-zero vector, but a broken invariant must not
+    // reach a renderer.
+    for (const ImageRGBA& face : cube.faces)
+      if (!face.allFinite()) throw Error(ErrorCode::Internal, "bake produced a non-finite texel");
+  });
+  t.extend = secondsSince(stage);
+  if (progress) progress->finish();
+  t.total = secondsSince(start);
+  if (timings) *timings = t;
+  return result;
+}
+
+}  // namespace confvis

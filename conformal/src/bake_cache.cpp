@@ -1,0 +1,87 @@
+// The on-disk cache of baked displays (bake_display.hpp): where it lives and how entries are
+// found, validated and published.
+#include "bake_cache.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <string>
+
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_display.hpp"
+#include "confvis/conformal/bake_files.hpp"
+#include "confvis/engine/version.hpp"
+
+namespace confvis {
+
+namespace fs = std::filesystem;
+
+fs::path defaultCacheDirectory() {
+  auto env = [](const char* name) -> std::string {
+    const char* value = std::getenv(name);
+    return value ? value : "";
+  };
+  if (const std::string dir = env("CONFVIS_CACHE_DIR"); !dir.empty()) return dir;
+  if (const std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty()) return fs::path(xdg) / "confvis";
+  if (const std::string home = env("HOME"); !home.empty()) return fs::path(home) / ".cache" / "confvis";
+  return fs::temp_directory_path() / "confvis-cache";
+}
+
+fs::path bakeCacheEntry(const fs::path& cacheDirectory, const DisplayConfig& effectiveConfig) {
+  return cacheDirectory /
+         ("bake-v" + std::to_string(kBakeFormatVersion) + "-confvis-" + versionString()) /
+         effectiveConfig.hash;
+}
+
+namespace detail {
+
+std::optional<LoadedBake> loadCacheEntry(const fs::path& entry, const DisplayConfig& config,
+                                         std::string& note) {
+  std::error_code ec;
+  if (!fs::exists(entry / "bake.json", ec)) {
+    if (fs::exists(entry, ec)) {  // a folder without its sidecar: an interrupted copy
+      note = "cache entry '" + entry.string() + "' has no bake.json";
+      fs::remove_all(entry, ec);
+    }
+    return std::nullopt;
+  }
+  try {
+    LoadedBake loaded = loadBakeDirectory(entry);
+    const std::string hash = loaded.sidecar.value("config_hash", "");
+    if (hash != config.hash)
+      throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() +
+                                            "': bake.json is for config hash '" + hash + "'");
+    if (loaded.map.resolution() != config.cubeResolution)
+      throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() + "' has resolution " +
+                                            std::to_string(loaded.map.resolution()));
+    return loaded;
+  } catch (const Error& e) {
+    note = e.what();
+    fs::remove_all(entry, ec);
+    return std::nullopt;
+  }
+}
+
+nlohmann::json publishCacheEntry(const fs::path& entry, const DisplayMap& displayMap,
+                                 const RetargetMap& map, const nlohmann::json& sidecar,
+                                 int threads) {
+  static std::atomic<int> counter{0};
+  const fs::path temp = entry.parent_path() / (".tmp-" + entry.filename().string() + "-" +
+                                               std::to_string(getpid()) + "-" +
+                                               std::to_string(counter++));
+  std::error_code ec;
+  fs::remove_all(temp, ec);
+  try {
+    const nlohmann::json written = writeBakeDirectory(temp, displayMap, map, sidecar, threads);
+    fs::rename(temp, entry, ec);  // atomic; fails if another process published first
+    if (ec) fs::remove_all(temp, ec);
+    return written;
+  } catch (...) {
+    fs::remove_all(temp, ec);
+    throw;
+  }
+}
+
+}  // namespace detail
+}  // namespace confvis

@@ -1,0 +1,64 @@
+#include "confvis/conformal/bake_display.hpp"
+
+#include <cmath>
+
+#include "bake_cache.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_files.hpp"
+
+namespace confvis {
+
+DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplayOptions& options) {
+  nlohmann::json json = toJson(config);
+  std::string source = "display config '" + config.name + "'";
+  if (options.resolution) json["cube_resolution"] = *options.resolution;
+  if (options.edgeLength) json["edge_length"] = *options.edgeLength;
+  if (options.reference) {
+    const Vec3d& r = *options.reference;
+    if (!isFinite(r)) throw Error(ErrorCode::InvalidInput, "reference point override is not finite");
+    json["reference"] = {r.x, r.y, r.z};
+  }
+  if (options.resolution || options.edgeLength || options.reference)
+    source += " with the command-line overrides";
+  // Parsing the canonical form again validates the overrides like the file's own values and
+  // recomputes the hash over every field: the cache key of exactly this bake.
+  return parseDisplayConfig(json, source);
+}
+
+BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptions& options,
+                             const DisplayMapSource& computeMap) {
+  BakedDisplay result;
+  result.config = effectiveBakeConfig(config, options);
+  if (options.useCache) {
+    const std::filesystem::path directory =
+        options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory;
+    result.cacheEntry = bakeCacheEntry(directory, result.config);
+    if (auto loaded = detail::loadCacheEntry(result.cacheEntry, result.config, result.cacheNote)) {
+      result.map = std::move(loaded->map);
+      result.sidecar = std::move(loaded->sidecar);
+      result.fromCache = true;
+      return result;
+    }
+  }
+  DisplayMap displayMap = computeMap(result.config);
+  const glm::dvec3& c = result.config.reference;
+  BakeOptions bake;
+  bake.reference = {c.x, c.y, c.z};
+  bake.threads = options.threads;
+  bake.showProgress = options.showProgress;
+  result.map = bakeRetargetMap(displayMap, result.config.cubeResolution, bake, &result.timings);
+  result.sidecar = makeBakeSidecar(result.config, displayMap, result.map, result.timings);
+  if (options.useCache) {
+    // A cache that cannot be written (read-only, full disk) costs the next call a bake, no more.
+    try {
+      result.sidecar = detail::publishCacheEntry(result.cacheEntry, displayMap, result.map,
+                                                 result.sidecar, options.threads);
+    } catch (const Error& e) {
+      result.cacheNote = std::string("cache entry not written: ") + e.what();
+    }
+  }
+  result.displayMap = std::move(displayMap);
+  return result;
+}
+
+}  // namespace confvis

@@ -1,0 +1,246 @@
+#include "confvis/conformal/baked_map_quality.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "confvis/base/error.hpp"
+#include "cube_texels.hpp"
+
+namespace confvis {
+
+namespace {
+
+using detail::TexelRef;
+
+Vec3d storedDirection(const CubeMap& map, const TexelRef& t) {
+  const float* p = map.face(t.face).at(t.x, t.y);
+  const Vec3d v{p[0], p[1], p[2]};
+  const double length = norm(v);
+  return length > 0 ? (1.0 / length) * v : v;
+}
+
+bool isValid(const CubeMap& map, const TexelRef& t) { return map.face(t.face).at(t.x, t.y)[3] >= 0.5f; }
+
+double percentile(const std::vector<double>& sorted, double p) {
+  if (sorted.empty()) return 0;
+  const auto i = static_cast<std::size_t>(p * static_cast<double>(sorted.size() - 1) + 0.5);
+  return sorted[std::min(i, sorted.size() - 1)];
+}
+
+void requireMap(const CubeMap& map, const char* what) {
+  if (map.faceSize <= 0)
+    throw Error(ErrorCode::InvalidInput, std::string(what) + ": empty cube map");
+  for (const ImageRGBA& f : map.faces)
+    if (f.width != map.faceSize || f.height != map.faceSize)
+      throw Error(ErrorCode::InvalidInput, std::string(what) + ": malformed cube map");
+}
+
+// The four texels a bilinear lookup of `dir` blends (sampleBilinear's footprint).
+std::array<TexelRef, 4> bilinearFootprint(int n, const Vec3d& dir) {
+  CubeFace face;
+  double x, y;
+  directionToTexel(dir, n, face, x, y);
+  const int x0 = static_cast<int>(std::floor(x - 0.5)), y0 = static_cast<int>(std::floor(y - 0.5));
+  std::array<TexelRef, 4> out;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const int tx = x0 + i, ty = y0 + j;
+      out[j * 2 + i] = tx >= 0 && tx < n && ty >= 0 && ty < n
+                           ? TexelRef{face, tx, ty}
+                           : detail::neighbourTexel(face, std::clamp(tx, 0, n - 1),
+                                                    std::clamp(ty, 0, n - 1), tx - std::clamp(tx, 0, n - 1),
+                                                    ty - std::clamp(ty, 0, n - 1), n);
+    }
+  return out;
+}
+
+// Largest angle between the directions a bilinear lookup of `dir` in `map` blends.
+double footprintSpread(const CubeMap& map, const Vec3d& dir) {
+  const auto texels = bilinearFootprint(map.faceSize, dir);
+  double spread = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      spread = std::max(spread, angleBetween(storedDirection(map, texels[i]),
+                                             storedDirection(map, texels[j])));
+  return spread;
+}
+
+std::optional<Vec3d> lookupDirection(const CubeMap& map, const Vec3d& dir) {
+  const std::array<float, 4> s = sampleBilinear(map, dir);
+  const Vec3d v{s[0], s[1], s[2]};
+  if (!(s[3] >= 0.5f) || !(norm(v) > 0)) return std::nullopt;
+  return normalized(v);
+}
+
+// Symmetric 2x2 Gram matrix of two 3-vectors.
+struct Gram {
+  double a11, a12, a22;
+};
+Gram gram(const Vec3d& u, const Vec3d& v) { return {dot(u, u), dot(u, v), dot(v, v)}; }
+
+}  // namespace
+
+BakedConformality measureBakedConformality(const CubeMap& map, const ConformalityOptions& options) {
+  requireMap(map, "measureBakedConformality");
+  const int n = map.faceSize;
+  const int stride = std::max(1, options.stride);
+  std::vector<std::uint8_t> validMask(6 * static_cast<std::size_t>(n) * n);
+  for (CubeFace face : kCubeFaces)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        validMask[detail::texelIndex(face, x, y, n)] = isValid(map, {face, x, y});
+  const auto cap = static_cast<std::uint8_t>(std::clamp(options.margin + 1, 1, 255));
+  const std::vector<std::uint8_t> distance = detail::distanceToUnmasked(validMask, n, cap);
+
+  BakedConformality stats;
+  std::vector<double> ratios;
+  for (CubeFace face : kCubeFaces)
+    for (int y = 0; y < n; y += stride)
+      for (int x = 0; x < n; x += stride) {
+        const std::size_t index = detail::texelIndex(face, x, y, n);
+        if (!validMask[index]) continue;
+        if (distance[index] <= options.margin) {
+          ++stats.nearBoundary;
+          continue;
+        }
+        // Central differences of the texel directions d and their images f.
+        const Vec3d d0 = normalized(texelDirection(face, x, y, n));
+        const Vec3d f0 = storedDirection(map, {face, x, y});
+        std::array<Vec3d, 4> dStep, fStep;  // one-sided: +x, -x, +y, -y
+        for (int k = 0; k < 4; ++k) {
+          const TexelRef t =
+              detail::neighbourTexel(face, x, y, detail::kNeighbourSteps[k][0], detail::kNeighbourSteps[k][1], n);
+          dStep[k] = normalized(texelDirection(t.face, t.x, t.y, n)) - d0;
+          fStep[k] = storedDirection(map, t) - f0;
+        }
+        const std::array<Vec3d, 2> dDiff{dStep[0] - dStep[1], dStep[2] - dStep[3]};
+        const std::array<Vec3d, 2> fDiff{fStep[0] - fStep[1], fStep[2] - fStep[3]};
+        // Singular values squared = generalised eigenvalues of (F^T F, D^T D).
+        const Gram g = gram(dDiff[0], dDiff[1]), h = gram(fDiff[0], fDiff[1]);
+        const double detG = g.a11 * g.a22 - g.a12 * g.a12;
+        // The central-difference Jacobian J (F = J D) must also predict each one-sided step;
+        // across a jump or a branch point it does not. J u = F (D^T D)^-1 D^T u.
+        bool jump = !(detG > 0);
+        for (int k = 0; k < 4 && !jump; ++k) {
+          const double a = dot(dDiff[0], dStep[k]), b = dot(dDiff[1], dStep[k]);
+          const double c0 = (g.a22 * a - g.a12 * b) / detG, c1 = (g.a11 * b - g.a12 * a) / detG;
+          const Vec3d predicted = c0 * fDiff[0] + c1 * fDiff[1];
+          if (norm(fStep[k] - predicted) > options.discontinuityTolerance * norm(predicted) + 1e-12)
+            jump = true;
+        }
+        if (jump) {
+          ++stats.discontinuous;
+          continue;
+        }
+        const double detH = h.a11 * h.a22 - h.a12 * h.a12;
+        const double mid = h.a11 * g.a22 + h.a22 * g.a11 - 2 * h.a12 * g.a12;
+        const double disc = std::sqrt(std::max(0.0, mid * mid - 4 * detG * detH));
+        const double large = (mid + disc) / (2 * detG), small = (mid - disc) / (2 * detG);
+        const double ratio = small > 0 ? std::sqrt(large / small) : 1e9;
+        ratios.push_back(std::isfinite(ratio) ? ratio : 1e9);
+        const double orientD = dot(d0, cross(dDiff[0], dDiff[1]));
+        const double orientF = dot(f0, cross(fDiff[0], fDiff[1]));
+        if (!(orientD * orientF > 0)) ++stats.flipped;
+      }
+  stats.measured = ratios.size();
+  if (!ratios.empty()) {
+    std::sort(ratios.begin(), ratios.end());
+    double sum = 0;
+    for (double r : ratios) sum += r;
+    stats.ratioMean = sum / static_cast<double>(ratios.size());
+    stats.ratioP50 = percentile(ratios, 0.50);
+    stats.ratioP95 = percentile(ratios, 0.95);
+    stats.ratioP99 = percentile(ratios, 0.99);
+    stats.ratioMax = ratios.back();
+  }
+  return stats;
+}
+
+RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, int stride,
+                                double discontinuityTexels) {
+  requireMap(forward, "measureRoundTrip");
+  requireMap(inverse, "measureRoundTrip");
+  const int n = forward.faceSize;
+  stride = std::max(1, stride);
+  const double unit = texelAngle(inverse.faceSize);
+  RoundTripStats stats;
+  std::vector<double> errors;
+  for (CubeFace face : kCubeFaces)
+    for (int y = 0; y < n; y += stride)
+      for (int x = 0; x < n; x += stride) {
+        if (!isValid(forward, {face, x, y})) continue;
+        const Vec3d v = storedDirection(forward, {face, x, y});
+        if (footprintSpread(inverse, v) > discontinuityTexels * unit) {
+          ++stats.discontinuous;
+          continue;
+        }
+        const std::optional<Vec3d> back = lookupDirection(inverse, v);
+        if (!back) {
+          ++stats.invalid;
+          continue;
+        }
+        errors.push_back(angleBetween(*back, texelDirection(face, x, y, n)) / texelAngle(n));
+      }
+  stats.measured = errors.size();
+  std::sort(errors.begin(), errors.end());
+  stats.p50 = percentile(errors, 0.5);
+  stats.p95 = percentile(errors, 0.95);
+  stats.p99 = percentile(errors, 0.99);
+  stats.max = errors.empty() ? 0 : errors.back();
+  return stats;
+}
+
+CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, int stride,
+                              double discontinuityTexels) {
+  requireMap(map.ray, "measureCoverage");
+  requireMap(map.geom, "measureCoverage");
+  const int n = map.geom.faceSize;
+  stride = std::max(1, stride);
+  CoverageStats stats;
+  for (CubeFace face : kCubeFaces)
+    for (int y = 0; y < n; y += stride)
+      for (int x = 0; x < n; x += stride) {
+        if (!isValid(map.geom, {face, x, y})) continue;
+        ++stats.sourceTexels;
+        const Vec3d d = storedDirection(map.geom, {face, x, y});
+        if (footprintSpread(map.ray, d) > discontinuityTexels * texelAngle(map.ray.faceSize)) {
+          ++stats.discontinuous;
+          continue;
+        }
+        const std::optional<Vec3d> v = lookupDirection(map.ray, d);
+        if (!v) {
+          ++stats.unlit;
+          continue;
+        }
+        const double error = angleBetween(*v, texelDirection(face, x, y, n)) / texelAngle(n);
+        stats.maxErrorTexels = std::max(stats.maxErrorTexels, error);
+        if (error <= toleranceTexels) ++stats.covered;
+      }
+  const std::size_t lit = stats.sourceTexels - stats.unlit;
+  stats.fraction = lit > 0 ? static_cast<double>(stats.covered) / static_cast<double>(lit) : 0.0;
+  return stats;
+}
+
+nlohmann::json toJson(const BakedConformality& s) {
+  return {{"measured_texels", s.measured}, {"near_boundary_texels", s.nearBoundary},
+          {"discontinuous_texels", s.discontinuous}, {"flipped_texels", s.flipped},
+          {"ratio_mean", s.ratioMean}, {"ratio_p50", s.ratioP50}, {"ratio_p95", s.ratioP95},
+          {"ratio_p99", s.ratioP99}, {"ratio_max", s.ratioMax}};
+}
+
+nlohmann::json toJson(const RoundTripStats& s) {
+  return {{"measured_texels", s.measured}, {"discontinuous_texels", s.discontinuous},
+          {"invalid_texels", s.invalid}, {"error_p50_texels", s.p50},
+          {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99}, {"error_max_texels", s.max}};
+}
+
+nlohmann::json toJson(const CoverageStats& s) {
+  return {{"source_texels", s.sourceTexels}, {"covered_texels", s.covered},
+          {"unlit_texels", s.unlit}, {"discontinuous_texels", s.discontinuous},
+          {"fraction", s.fraction}, {"max_error_texels", s.maxErrorTexels}};
+}
+
+}  // namespace confvis
