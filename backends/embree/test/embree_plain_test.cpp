@@ -15,6 +15,7 @@ namespace {
 
 using test::imageOf;
 using test::scaleFor;
+using test::checkerSphereBackend;
 
 constexpr int kWallPixels = 48;
 
@@ -25,40 +26,10 @@ RenderSettings plainSettings(int pixels = kWallPixels) {
   return settings;
 }
 
-EmbreeBackend& checkerSphereBackend() {
-  static const std::unique_ptr<EmbreeBackend> backend = [] {
-    auto b = std::make_unique<EmbreeBackend>();
-    b->setScene(builtinScene("checker-sphere"));
-    return b;
-  }();
-  return *backend;
-}
-
-// Fraction of pixels of `image` whose colour differs from the checker-sphere's colour along
-// the pixel's ray (headlight Lambert is 1 on a sphere seen from its centre). Pixels that lie
-// within half a pixel of a checker edge are skipped: the texture filter blends there. At this
-// resolution some pixel rays pass exactly through mesh vertices of the sphere, where even
-// Embree's robust (watertight) mode can let a ray through: a handful of pixels, within budget.
 double checkerMismatch(const ImageRGBA& image, const WallView& view, double scale,
                        const glm::dmat3& turn = glm::dmat3(1.0)) {
-  std::size_t bad = 0;
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      auto colourAt = [&](double dx, double dy) {
-        return checkerSphereColor(turn * view.rayDirection((x + 0.5 + dx) / scale,
-                                                           (y + 0.5 + dy) / scale));
-      };
-      const glm::vec3 expected = colourAt(0, 0);
-      if (colourAt(-0.5, 0) != expected || colourAt(0.5, 0) != expected ||
-          colourAt(0, -0.5) != expected || colourAt(0, 0.5) != expected)
-        continue;
-      const float* p = image.at(x, y);
-      if (std::abs(p[0] - expected.r) > 0.02f || std::abs(p[1] - expected.g) > 0.02f ||
-          std::abs(p[2] - expected.b) > 0.02f || std::abs(p[3] - 1.0f) > 1e-6f) {
-        ++bad;
-      }
-    }
-  return static_cast<double>(bad) / static_cast<double>(image.pixelCount());
+  return test::checkerMismatch(image, view, scale,
+                               [&](const glm::dvec3& d) { return std::optional(turn * d); });
 }
 
 TEST(EmbreePlain, CheckerSphereShowsEachCubeFaceColourOnItsWall) {

@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 
 #include "confvis/backends/embree/embree_backend.hpp"
@@ -104,6 +107,49 @@ inline glm::dvec2 coverageCentroid(const ImageRGBA& image, std::size_t* count = 
       }
   if (count) *count = n;
   return n ? sum / static_cast<double>(n) : glm::dvec2(-1.0);
+}
+
+// One backend holding the checker-sphere, shared by the tests (the BVH is built once).
+inline EmbreeBackend& checkerSphereBackend() {
+  static const std::unique_ptr<EmbreeBackend> backend = [] {
+    auto b = std::make_unique<EmbreeBackend>();
+    b->setScene(builtinScene("checker-sphere"));
+    return b;
+  }();
+  return *backend;
+}
+
+// Maps a physical pixel ray direction to the virtual direction whose colour the pixel must show,
+// or nullopt where the pixel must be black.
+using DirectionMap = std::function<std::optional<glm::dvec3>(const glm::dvec3&)>;
+
+// Fraction of pixels of `image` whose colour differs from the checker-sphere's colour along
+// `toVirtual` of the pixel's ray (headlight Lambert is 1 on a sphere seen from its centre), or
+// that are not black where toVirtual has no direction. Pixels within half a pixel of a checker
+// edge or of the unlit boundary are skipped: the texture filter and the map's bilinear alpha
+// blend there.
+inline double checkerMismatch(const ImageRGBA& image, const WallView& view, double scale,
+                              const DirectionMap& toVirtual) {
+  std::size_t bad = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      auto colourAt = [&](double dx, double dy) {
+        const std::optional<glm::dvec3> v = toVirtual(
+            view.rayDirection((x + 0.5 + dx) / scale, (y + 0.5 + dy) / scale));
+        return v ? glm::vec4(checkerSphereColor(*v), 1.0f) : glm::vec4(0.0f);
+      };
+      const glm::vec4 expected = colourAt(0, 0);
+      if (colourAt(-0.5, 0) != expected || colourAt(0.5, 0) != expected ||
+          colourAt(0, -0.5) != expected || colourAt(0, 0.5) != expected)
+        continue;
+      const float* p = image.at(x, y);
+      for (int c = 0; c < 4; ++c)
+        if (std::abs(p[c] - expected[c]) > 0.02f) {
+          ++bad;
+          break;
+        }
+    }
+  return static_cast<double>(bad) / static_cast<double>(image.pixelCount());
 }
 
 }  // namespace confvis::test
