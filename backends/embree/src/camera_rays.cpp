@@ -49,18 +49,28 @@ int curvedRay(const ConformalWarp& warp, const glm::dvec3& eye, const glm::dvec3
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
                        const glm::dvec3& reference)
     : view_(view),
+      directionBase_(view.rayDirection(0.0, 0.0)),
+      directionStepX_(view.rayDirection(1.0, 0.0) - directionBase_),
+      directionStepY_(view.rayDirection(0.0, 1.0) - directionBase_),
       reference_(reference),
       cameraPosition_(camera.position),
-      rotation_(camera.rotation()) {}
+      rotation_(camera.rotation()),
+      placedEye_(place(view.eye_position)),
+      rotationF_(rotation_),
+      turnedBase_(rotation_ * directionBase_),
+      turnedStepX_(rotation_ * directionStepX_),
+      turnedStepY_(rotation_ * directionStepY_) {}
 
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
-                       const ConformalWarp& warp, StereoRays stereoRays, int curvedSegments)
+                       const ConformalWarp& warp, const WallMapGrid& grid, StereoRays stereoRays,
+                       int curvedSegments)
     : CameraRays(view, camera, warp.reference()) {
   if (curvedSegments < 1 || curvedSegments > kMaxCurvedSegments)
     throw Error(ErrorCode::InvalidInput, "curved rays need 1 to " +
                                              std::to_string(kMaxCurvedSegments) +
                                              " segments, got " + std::to_string(curvedSegments));
   warp_ = &warp;
+  grid_ = &grid;
   stereoRays_ = stereoRays;
   curvedSegments_ = curvedSegments;
   eyeAtReference_ = glm::length(view.eye_position - reference_) < kCentreEyeTolerance;
@@ -73,26 +83,28 @@ glm::vec3 CameraRays::place(const glm::dvec3& p) const {
 glm::vec3 CameraRays::turn(const glm::dvec3& d) const { return glm::vec3(rotation_ * d); }
 
 void CameraRays::make(double px, double py, RayPath& path) const {
-  const glm::dvec3 eye = view_.eye_position;
-  const glm::dvec3 toWall = view_.rayDirection(px, py);  // eye + toWall lies on the wall
   path.lit = true;
   path.vertexCount = 1;
-  path.vertices[0] = place(eye);
+  path.vertices[0] = placedEye_;
+  const auto fx = static_cast<float>(px), fy = static_cast<float>(py);
   if (!warp_) {
-    path.tail = turn(glm::normalize(toWall));
+    path.tail = glm::normalize(turnedBase_ + fx * turnedStepX_ + fy * turnedStepY_);
     return;
   }
-  const glm::dvec3 wallPoint = eye + toWall;
-  const ConformalWarp::Lookup pixel = warp_->lookup(wallPoint - reference_);
-  path.lit = pixel.lit;
-  if (!pixel.lit) return;
+  const WallMapGrid::Sample pixel = grid_->at(fx, fy);
+  path.lit = pixel.alpha >= 0.5f;
+  if (!path.lit) return;
   if (eyeAtReference_) {
-    path.tail = turn(pixel.direction);
+    path.tail = glm::normalize(rotationF_ * pixel.direction);
     return;
   }
+  const glm::dvec3 eye = view_.eye_position;
+  // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)
+  const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
+  const glm::dvec3 wallPoint = eye + toWall;
   if (stereoRays_ == StereoRays::Fast) {
-    const glm::dvec3 target =
-        reference_ + glm::length(wallPoint - reference_) * pixel.direction;  // W(p)
+    const glm::dvec3 target = reference_ + glm::length(wallPoint - reference_) *
+                                               glm::normalize(glm::dvec3(pixel.direction));  // W(p)
     path.tail = turn(glm::normalize(target - eye));
     return;
   }

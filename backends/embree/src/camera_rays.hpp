@@ -13,6 +13,7 @@
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/engine/view.hpp"
+#include "wall_map_grid.hpp"
 
 namespace confvis::embree {
 
@@ -38,9 +39,10 @@ class CameraRays {
  public:
   // Plain rays.
   CameraRays(const WallView& view, const VirtualCamera& camera, const glm::dvec3& reference);
-  // Conformal rays; `warp` must outlive this object.
+  // Conformal rays; `warp` and `grid` (the map seen from this view's wall) must outlive this
+  // object.
   CameraRays(const WallView& view, const VirtualCamera& camera, const ConformalWarp& warp,
-             StereoRays stereoRays, int curvedSegments);
+             const WallMapGrid& grid, StereoRays stereoRays, int curvedSegments);
 
   // The path through pixel-space point (px, py) of the wall (see WallView::rayDirection).
   void make(double px, double py, RayPath& path) const;
@@ -50,10 +52,17 @@ class CameraRays {
   glm::vec3 turn(const glm::dvec3& physicalDirection) const;
 
   WallView view_;
+  // rayDirection is affine in the pixel position: base + px stepX + py stepY.
+  glm::dvec3 directionBase_, directionStepX_, directionStepY_;
   glm::dvec3 reference_;
   glm::dvec3 cameraPosition_;
   glm::dmat3 rotation_;
+  glm::vec3 placedEye_;
+  glm::mat3 rotationF_;
+  // The same affine direction, turned by the camera, in float: plain rays need nothing else.
+  glm::vec3 turnedBase_, turnedStepX_, turnedStepY_;
   const ConformalWarp* warp_ = nullptr;
+  const WallMapGrid* grid_ = nullptr;
   StereoRays stereoRays_ = StereoRays::Exact;
   int curvedSegments_ = 0;
   bool eyeAtReference_ = false;

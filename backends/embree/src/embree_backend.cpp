@@ -2,6 +2,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstring>
+#include <map>
 #include <optional>
 
 #include <tbb/global_control.h>
@@ -19,9 +21,30 @@ namespace confvis {
 
 struct EmbreeBackend::Impl {
   explicit Impl(const EmbreeOptions& o) : options(o) {}
+
+  // The map seen from `wall` (see WallMapGrid), built once per map, wall and output size.
+  const embree::WallMapGrid& wallGrid(const ConformalWarp& warp, std::uint64_t mapFingerprint,
+                                      const Wall& wall, double scale) {
+    const double spacing = embree::WallMapGrid::spacingFor(wall, warp.reference(),
+                                                           warp.map().resolution(), scale);
+    std::uint64_t key = mapFingerprint;
+    for (const glm::dvec3& corner : {wall.lowerLeft, wall.lowerRight, wall.upperLeft})
+      for (int i = 0; i < 3; ++i) key = mixHash(key, corner[i]);
+    for (double value : {wall.bezel.left, wall.bezel.right, wall.bezel.bottom, wall.bezel.top,
+                         static_cast<double>(wall.width), static_cast<double>(wall.height),
+                         spacing})
+      key = mixHash(key, value);
+    auto found = grids.find(key);
+    if (found != grids.end()) return *found->second;
+    if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
+    auto grid = std::make_unique<embree::WallMapGrid>(warp, wall, spacing);
+    return *grids.emplace(key, std::move(grid)).first->second;
+  }
+
   EmbreeOptions options;
   EmbreeDevice device;
   std::unique_ptr<EmbreeScene> scene;
+  std::map<std::uint64_t, std::unique_ptr<embree::WallMapGrid>> grids;
 };
 
 EmbreeBackend::EmbreeBackend(const EmbreeOptions& options)
@@ -46,7 +69,16 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
     throw Error(ErrorCode::InvalidInput, "Embree backend: setScene must come before render");
   const RenderPlan plan = planRender(config, map, settings);
   std::optional<ConformalWarp> warp;
-  if (settings.mode == RenderMode::Conformal) warp.emplace(*map);
+  std::uint64_t mapFingerprint = 0;
+  const auto setupStart = std::chrono::steady_clock::now();
+  if (settings.mode == RenderMode::Conformal) {
+    warp.emplace(*map);
+    mapFingerprint = warp->fingerprint();
+    for (const PlannedImage& image : plan.images)
+      impl_->wallGrid(*warp, mapFingerprint, *image.view.wall, settings.resolutionScale);
+  }
+  const double mapSetupSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
 
   const EmbreeScene& scene = *impl_->scene;
   embree::TileJob job;
@@ -77,8 +109,10 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
   for (std::size_t i = 0; i < plan.images.size(); ++i) {
     const PlannedImage& planned = plan.images[i];
     const embree::CameraRays rays =
-        warp ? embree::CameraRays(planned.view, settings.camera, *warp, settings.stereoRays,
-                                  impl_->options.curvedRaySegments)
+        warp ? embree::CameraRays(planned.view, settings.camera, *warp,
+                                  impl_->wallGrid(*warp, mapFingerprint, *planned.view.wall,
+                                                  settings.resolutionScale),
+                                  settings.stereoRays, impl_->options.curvedRaySegments)
              : embree::CameraRays(planned.view, settings.camera, config.reference);
     job.width = planned.width;
     job.height = planned.height;
@@ -112,6 +146,7 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
                   {"scene_triangles", scene.scene().triangleCount()},
                   {"bvh_build_seconds", scene.buildSeconds()},
                   {"render_seconds", seconds},
+                  {"map_setup_seconds", mapSetupSeconds},
                   {"camera_rays", cameraRays},
                   {"occlusion_rays", occlusionRays},
                   {"rays_per_second",
