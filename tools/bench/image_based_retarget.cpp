@@ -5,8 +5,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "confvis/backends/conformal_warp.hpp"
-#include "confvis/engine/view.hpp"
 
 namespace confvis::bench {
 
@@ -44,9 +42,18 @@ DisplayConfig cubeFaceDisplay(int faceSize, const glm::dvec3& reference) {
   return cube;
 }
 
+std::vector<WallMapGrid> wallGrids(const DisplayConfig& config, const ConformalWarp& warp,
+                                   double scale) {
+  std::vector<WallMapGrid> grids;
+  for (const Wall& wall : config.walls)
+    grids.emplace_back(warp, wall,
+                       WallMapGrid::spacingFor(wall, config.reference, warp.map().resolution(), scale));
+  return grids;
+}
+
 std::vector<WallImage> renderImageBased(RenderBackend& backend, const DisplayConfig& config,
-                                        const RetargetMap& map, int faceSize, double scale,
-                                        ImageBasedTimings& timings) {
+                                        const std::vector<WallMapGrid>& grids, int faceSize,
+                                        double scale, ImageBasedTimings& timings) {
   const DisplayConfig cubeDisplay = cubeFaceDisplay(faceSize, config.reference);
   RenderSettings cubeSettings;
   cubeSettings.mode = RenderMode::Plain;
@@ -59,10 +66,10 @@ std::vector<WallImage> renderImageBased(RenderBackend& backend, const DisplayCon
   timings.cubeSeconds = secondsSince(start);
 
   start = std::chrono::steady_clock::now();
-  const ConformalWarp warp(map);
   std::vector<WallImage> images;
-  for (const Wall& wall : config.walls) {
-    const WallView view = makeWallView(wall, config.reference);
+  for (std::size_t w = 0; w < config.walls.size(); ++w) {
+    const Wall& wall = config.walls[w];
+    const WallMapGrid& grid = grids[w];
     const int width = std::max(1, static_cast<int>(std::lround(wall.width * scale)));
     const int height = std::max(1, static_cast<int>(std::lround(wall.height * scale)));
     WallImage out{wall.name, Eye::Center, ImageRGBA(width, height, 0.0f)};
@@ -70,8 +77,9 @@ std::vector<WallImage> renderImageBased(RenderBackend& backend, const DisplayCon
     const double sy = static_cast<double>(wall.height) / height;
     tbb::parallel_for(0, height, [&](int y) {
       for (int x = 0; x < width; ++x) {
-        const ConformalWarp::Lookup v = warp.lookup(view.rayDirection((x + 0.5) * sx, (y + 0.5) * sy));
-        if (!v.lit) continue;
+        const WallMapGrid::Sample v = grid.at(static_cast<float>((x + 0.5) * sx),
+                                              static_cast<float>((y + 0.5) * sy));
+        if (v.alpha < 0.5f) continue;
         const std::array<float, 4> c =
             sampleBilinear(cube, Vec3d{v.direction.x, v.direction.y, v.direction.z});
         std::copy(c.begin(), c.end(), out.image.at(x, y));

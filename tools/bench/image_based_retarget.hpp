@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/backends/wall_map_grid.hpp"
 
 namespace confvis::bench {
 
@@ -16,11 +17,16 @@ struct ImageBasedTimings {
   double cubeSeconds = 0, resampleSeconds = 0;
 };
 
+// The map seen from each wall of `config` at output scale `scale` (the same precomputation the
+// direct path caches), built once before timing.
+std::vector<WallMapGrid> wallGrids(const DisplayConfig& config, const ConformalWarp& warp,
+                                   double scale);
+
 // Renders the cube (plain, centre eye, `backend`'s scene) and resamples it onto every wall of
-// `config` (centre eye, output size = wall resolution * scale) through `map`; unlit pixels are
-// black. Images come in config order.
+// `config` (centre eye, output size = wall resolution * scale) through the map in `grids`;
+// unlit pixels are black. Images come in config order.
 std::vector<WallImage> renderImageBased(RenderBackend& backend, const DisplayConfig& config,
-                                        const RetargetMap& map, int faceSize, double scale,
-                                        ImageBasedTimings& timings);
+                                        const std::vector<WallMapGrid>& grids, int faceSize,
+                                        double scale, ImageBasedTimings& timings);
 
 }  // namespace confvis::bench

@@ -13,7 +13,7 @@
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/engine/view.hpp"
-#include "wall_map_grid.hpp"
+#include "confvis/backends/wall_map_grid.hpp"
 
 namespace confvis::embree {
 

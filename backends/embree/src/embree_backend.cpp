@@ -23,9 +23,9 @@ struct EmbreeBackend::Impl {
   explicit Impl(const EmbreeOptions& o) : options(o) {}
 
   // The map seen from `wall` (see WallMapGrid), built once per map, wall and output size.
-  const embree::WallMapGrid& wallGrid(const ConformalWarp& warp, std::uint64_t mapFingerprint,
+  const WallMapGrid& wallGrid(const ConformalWarp& warp, std::uint64_t mapFingerprint,
                                       const Wall& wall, double scale) {
-    const double spacing = embree::WallMapGrid::spacingFor(wall, warp.reference(),
+    const double spacing = WallMapGrid::spacingFor(wall, warp.reference(),
                                                            warp.map().resolution(), scale);
     std::uint64_t key = mapFingerprint;
     for (const glm::dvec3& corner : {wall.lowerLeft, wall.lowerRight, wall.upperLeft})
@@ -37,14 +37,14 @@ struct EmbreeBackend::Impl {
     auto found = grids.find(key);
     if (found != grids.end()) return *found->second;
     if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
-    auto grid = std::make_unique<embree::WallMapGrid>(warp, wall, spacing);
+    auto grid = std::make_unique<WallMapGrid>(warp, wall, spacing);
     return *grids.emplace(key, std::move(grid)).first->second;
   }
 
   EmbreeOptions options;
   EmbreeDevice device;
   std::unique_ptr<EmbreeScene> scene;
-  std::map<std::uint64_t, std::unique_ptr<embree::WallMapGrid>> grids;
+  std::map<std::uint64_t, std::unique_ptr<WallMapGrid>> grids;
 };
 
 EmbreeBackend::EmbreeBackend(const EmbreeOptions& options)

@@ -1,4 +1,4 @@
-#include "wall_map_grid.hpp"
+#include "confvis/backends/wall_map_grid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <glm/gtc/constants.hpp>
 #include <tbb/parallel_for.h>
 
-namespace confvis::embree {
+namespace confvis {
 
 WallMapGrid::WallMapGrid(const ConformalWarp& warp, const Wall& wall, double spacing) {
   const Wall lit = wall.litRectangle();
@@ -49,4 +49,4 @@ double WallMapGrid::spacingFor(const Wall& wall, const glm::dvec3& reference, in
   return std::max(halfTexelAngle / pixelAngle, 1.0 / outputScale);
 }
 
-}  // namespace confvis::embree
+}  // namespace confvis

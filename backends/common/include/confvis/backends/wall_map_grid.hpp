@@ -12,7 +12,7 @@
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis::embree {
+namespace confvis {
 
 class WallMapGrid {
  public:
@@ -40,4 +40,4 @@ class WallMapGrid {
   std::vector<glm::vec4> samples_;     // (columns + 1) x (rows + 1): F in xyz, alpha in w
 };
 
-}  // namespace confvis::embree
+}  // namespace confvis
