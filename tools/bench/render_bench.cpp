@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
 
 #include "confvis/backends/analytic_maps.hpp"
@@ -31,6 +32,12 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double cpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 // Best of `repeats` wall-clock timings of f.
@@ -140,16 +147,25 @@ int main(int argc, char** argv) {
 
     RenderResult plainResult, conformalResult;
     double plainSeconds = 1e30, conformalSeconds = 1e30, rawSeconds = 1e30;
+    // CPU seconds of the whole process (all threads): on a shared machine other processes steal
+    // wall-clock time, not CPU time, so these ratios are the steadier ones.
+    double plainCpu = 1e30, conformalCpu = 1e30, rawCpu = 1e30;
     bench::RawLoopResult raw;
     for (int i = 0; i < repeats; ++i) {  // interleaved, so load changes hit all three alike
       auto start = std::chrono::steady_clock::now();
+      double cpu = cpuSeconds();
       plainResult = backend.render(config, nullptr, plain);
       plainSeconds = std::min(plainSeconds, secondsSince(start));
+      plainCpu = std::min(plainCpu, cpuSeconds() - cpu);
       start = std::chrono::steady_clock::now();
+      cpu = cpuSeconds();
       conformalResult = backend.render(config, &map, conformal);
       conformalSeconds = std::min(conformalSeconds, secondsSince(start));
+      conformalCpu = std::min(conformalCpu, cpuSeconds() - cpu);
+      cpu = cpuSeconds();
       raw = bench::rawIntersectLoop(rawScene, config, scale);
       rawSeconds = std::min(rawSeconds, raw.seconds);
+      rawCpu = std::min(rawCpu, cpuSeconds() - cpu);
     }
     const double rays = plainResult.stats["camera_rays"].get<double>();
     const double plainRate = rays / plainSeconds, conformalRate = rays / conformalSeconds;
@@ -160,6 +176,10 @@ int main(int argc, char** argv) {
     std::printf("raw rtcIntersect8 %8.4f s  %7.2f Mrays/s  plain %.0f %%, conformal %.0f %% of "
                 "raw (goal >= 80 %%)\n",
                 rawSeconds, rawRate * 1e-6, 100 * plainRate / rawRate, 100 * conformalRate / rawRate);
+    std::printf("CPU time   plain %.4f s, conformal %.4f s (ratio %.3f), raw %.4f s: plain %.0f %%, "
+                "conformal %.0f %% of raw rays per CPU second\n",
+                plainCpu, conformalCpu, conformalCpu / plainCpu, rawCpu, 100 * rawCpu / plainCpu,
+                100 * rawCpu / conformalCpu);
 
     // Stereo: exact curved rays and fast straight rays against plain stereo.
     RenderSettings plainStereo = plain, exactStereo = conformal, fastStereo = conformal;
@@ -233,6 +253,8 @@ int main(int argc, char** argv) {
           {"plain_seconds", plainSeconds},
           {"conformal_seconds", conformalSeconds},
           {"conformal_over_plain", conformalSeconds / plainSeconds},
+          {"cpu_seconds", {{"plain", plainCpu}, {"conformal", conformalCpu}, {"raw", rawCpu}}},
+          {"conformal_over_plain_cpu", conformalCpu / plainCpu},
           {"camera_rays", rays},
           {"raw_rtcintersect8_rays_per_second", rawRate},
           {"plain_rays_per_second", plainRate},
