@@ -50,7 +50,8 @@ void Progress::draw(std::size_t done, bool final) {
   } else {
     // Without a terminal print one line per 25 %, so CI logs stay short.
     const int percent = static_cast<int>(fraction * 100.0);
-    if (final || percent / 25 > lastPercentPrinted_ / 25) {
+    // 100 % once: the last advance() may already have printed it before finish().
+    if ((final && lastPercentPrinted_ < 100) || percent / 25 > lastPercentPrinted_ / 25) {
       lastPercentPrinted_ = percent;
       std::fprintf(stderr, "%s: %d%% (%.1fs)\n", label_.c_str(), percent, seconds);
     }

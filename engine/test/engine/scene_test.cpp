@@ -43,6 +43,18 @@ TEST(SceneTexture, BilinearSamplingWrapsAround) {
   EXPECT_FLOAT_EQ(texture.sample({-1.75f, 3.5f}).r, 0.0f);  // repeat in u and v
 }
 
+TEST(SceneTexture, InteriorFastPathEqualsTheBilinearFormula) {
+  Texture texture{3, 2, {}};
+  for (int i = 0; i < 3 * 2 * 4; ++i) texture.rgba.push_back(static_cast<float>(i * i % 7));
+  // uv (0.5, 0.5): x = 1.0, y = 0.5 in texel-centre units: halfway between rows 0 and 1.
+  const glm::vec4 expected = 0.5f * (texture.texel(1, 0) + texture.texel(1, 1));
+  const glm::vec4 got = texture.sample({0.5f, 0.5f});
+  for (int c = 0; c < 4; ++c) EXPECT_NEAR(got[c], expected[c], 1e-5f);
+  // Off-centre: x = 0.25 + ..., compare with the wrapped path one period away.
+  const glm::vec4 inside = texture.sample({0.4f, 0.6f}), wrapped = texture.sample({1.4f, 1.6f});
+  for (int c = 0; c < 4; ++c) EXPECT_NEAR(inside[c], wrapped[c], 1e-4f);
+}
+
 TEST(SceneColor, FactorTimesTextureAndWhiteDefault) {
   Scene scene;
   scene.textures.push_back(Texture{1, 1, {0.5f, 0.5f, 0.5f, 1.0f}});

@@ -1,0 +1,36 @@
+#pragma once
+// What a render call will produce, checked before any work starts; shared by the backends so
+// they validate settings the same way and return images in the same order.
+#include <vector>
+
+#include "confvis/backends/render_backend.hpp"
+#include "confvis/engine/view.hpp"
+
+namespace confvis {
+
+struct PlannedImage {
+  int wallIndex = 0;  // into config.walls
+  Eye eye = Eye::Center;
+  WallView view;      // off-axis view of the wall for this eye (points into config.walls)
+  int width = 0, height = 0;  // output pixels: round(wall resolution * scale), at least 1
+};
+
+struct RenderPlan {
+  std::vector<PlannedImage> images;  // walls in settings order, each with its eyes in order
+  bool hasOffCentreEyes = false;     // some eye is not at the reference point
+};
+
+// Throws Error(InvalidInput) naming the culprit: an unknown wall (listing the known ones), a
+// repeated wall or eye, no eyes, samples per pixel outside 1..4096, a non-positive or
+// non-finite scale, a missing map in conformal mode, a map baked around another reference point
+// than the config's, an eye on or behind a wall.
+RenderPlan planRender(const DisplayConfig& config, const RetargetMap* map,
+                      const RenderSettings& settings);
+
+// Names used in files and reports: "left", "center", "right"; "plain", "conformal";
+// "exact", "fast".
+const char* eyeName(Eye eye) noexcept;
+const char* modeName(RenderMode mode) noexcept;
+const char* stereoRaysName(StereoRays rays) noexcept;
+
+}  // namespace confvis

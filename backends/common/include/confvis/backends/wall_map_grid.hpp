@@ -1,0 +1,43 @@
+#pragma once
+// The retarget map seen from one wall: F(dir(p - c)) and the map's alpha sampled on a regular
+// grid of points p of the wall's lit rectangle, for a cheap bilinear lookup at any sub-pixel
+// position. Every conformal camera sample needs this value (centre eye: the ray direction;
+// fast stereo rays: W(p); all eyes: whether a display is lit there); a grid at most half a map
+// texel apart reproduces the cube-map lookup far below a pixel, at a fraction of its cost, and
+// is reused across frames (the map and the walls do not change).
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "confvis/backends/conformal_warp.hpp"
+#include "confvis/engine/display_config.hpp"
+
+namespace confvis {
+
+class WallMapGrid {
+ public:
+  // Samples spaced about `spacing` wall pixels apart (exactly dividing the wall), corners
+  // included.
+  WallMapGrid(const ConformalWarp& warp, const Wall& wall, double spacing);
+
+  struct Sample {
+    glm::vec3 direction;  // F, interpolated: nearly but not exactly unit length
+    float alpha;          // lit where >= 0.5
+  };
+  // At wall-pixel position (px, py), py = 0 at the top edge, px in [0, width], py in [0, height].
+  Sample at(float px, float py) const;
+
+  // Spacing in wall pixels: half a map texel as seen from c where the wall is closest, but no
+  // finer than one output pixel (1 / outputScale wall pixels).
+  static double spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,
+                           double outputScale);
+
+  std::size_t sampleCount() const { return samples_.size(); }
+
+ private:
+  int columns_ = 1, rows_ = 1;         // cells
+  float cellsPerPixelX_ = 1, cellsPerPixelY_ = 1;
+  std::vector<glm::vec4> samples_;     // (columns + 1) x (rows + 1): F in xyz, alpha in w
+};
+
+}  // namespace confvis

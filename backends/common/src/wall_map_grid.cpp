@@ -1,0 +1,52 @@
+#include "confvis/backends/wall_map_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+#include <tbb/parallel_for.h>
+
+namespace confvis {
+
+WallMapGrid::WallMapGrid(const ConformalWarp& warp, const Wall& wall, double spacing) {
+  const Wall lit = wall.litRectangle();
+  columns_ = std::max(1, static_cast<int>(std::ceil(wall.width / spacing)));
+  rows_ = std::max(1, static_cast<int>(std::ceil(wall.height / spacing)));
+  cellsPerPixelX_ = static_cast<float>(columns_) / static_cast<float>(wall.width);
+  cellsPerPixelY_ = static_cast<float>(rows_) / static_cast<float>(wall.height);
+  samples_.resize(static_cast<std::size_t>(columns_ + 1) * (rows_ + 1));
+  tbb::parallel_for(0, rows_ + 1, [&](int j) {
+    for (int i = 0; i <= columns_; ++i) {
+      // Pixel-space py = 0 is the top edge; pointAt's t = 0 is the bottom edge.
+      const glm::dvec3 p = lit.pointAt(static_cast<double>(i) / columns_,
+                                       1.0 - static_cast<double>(j) / rows_);
+      const ConformalWarp::Lookup v = warp.lookup(p - warp.reference());
+      samples_[static_cast<std::size_t>(j) * (columns_ + 1) + i] =
+          glm::vec4(glm::vec3(v.direction), v.alpha);
+    }
+  });
+}
+
+WallMapGrid::Sample WallMapGrid::at(float px, float py) const {
+  const float gx = std::clamp(px * cellsPerPixelX_, 0.0f, static_cast<float>(columns_));
+  const float gy = std::clamp(py * cellsPerPixelY_, 0.0f, static_cast<float>(rows_));
+  const int i = std::min(static_cast<int>(gx), columns_ - 1);
+  const int j = std::min(static_cast<int>(gy), rows_ - 1);
+  const float tx = gx - static_cast<float>(i), ty = gy - static_cast<float>(j);
+  const glm::vec4* row0 = samples_.data() + static_cast<std::size_t>(j) * (columns_ + 1) + i;
+  const glm::vec4* row1 = row0 + (columns_ + 1);
+  const glm::vec4 s = glm::mix(glm::mix(row0[0], row0[1], tx), glm::mix(row1[0], row1[1], tx), ty);
+  return {glm::vec3(s), s.w};
+}
+
+double WallMapGrid::spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,
+                               double outputScale) {
+  const Wall lit = wall.litRectangle();
+  const double distance = std::max(1e-9, std::abs(glm::dot(lit.lowerLeft - reference, lit.normal())));
+  const double pixelAngle =
+      std::min(lit.widthMetres() / wall.width, lit.heightMetres() / wall.height) / distance;
+  const double halfTexelAngle = 0.5 * glm::half_pi<double>() / mapResolution;
+  return std::max(halfTexelAngle / pixelAngle, 1.0 / outputScale);
+}
+
+}  // namespace confvis

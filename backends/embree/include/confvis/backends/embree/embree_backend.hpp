@@ -1,0 +1,36 @@
+#pragma once
+// The Embree ray tracer (backward path of design note §5). Plain mode traces the ordinary
+// off-axis rays of every wall; conformal mode redirects them through the retarget map: the
+// centre eye exactly, stereo eyes with curved (Exact) or straight (Fast) rays.
+#include <memory>
+#include <string>
+
+#include "confvis/backends/render_backend.hpp"
+
+namespace confvis {
+
+struct EmbreeOptions {
+  // Exact stereo rays: straight segments marched before the curve's straight asymptote.
+  int curvedRaySegments = 12;
+  int ambientOcclusionSamples = 8;
+  // Occlusion radius in metres; 0 = 5 % of the scene's bounding-box diagonal.
+  double ambientOcclusionDistance = 0.0;
+  int tileSize = 16;
+  int threads = 0;  // 0 = all hardware threads (TBB default)
+};
+
+class EmbreeBackend final : public RenderBackend {
+ public:
+  explicit EmbreeBackend(const EmbreeOptions& options = {});
+  ~EmbreeBackend() override;
+  std::string name() const override { return "embree"; }
+  void setScene(const Scene& scene) override;
+  RenderResult render(const DisplayConfig& config, const RetargetMap* map,
+                      const RenderSettings& settings) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace confvis

@@ -1,0 +1,71 @@
+#pragma once
+// Camera rays of one wall seen by one eye, in virtual space (design note §5):
+//   plain:      the ordinary off-axis ray from the eye e through the wall point p;
+//   conformal:  the physical eye ray e + t (p - e) carried into virtual space by the warp W,
+//     - centre eye (e = c): exactly the straight ray from c along F(dir(p));
+//     - Exact:  the bent curve W(e + t (p - e)), marched as straight segments;
+//     - Fast:   one straight ray from e towards W(p).
+// Virtual space is the physical frame placed by the VirtualCamera: x -> position + R (x - c).
+#include <array>
+
+#include <glm/glm.hpp>
+
+#include "confvis/backends/conformal_warp.hpp"
+#include "confvis/backends/render_backend.hpp"
+#include "confvis/engine/view.hpp"
+#include "confvis/backends/wall_map_grid.hpp"
+
+namespace confvis::embree {
+
+inline constexpr int kMaxCurvedSegments = 32;
+
+// A polyline followed by an unbounded straight tail: what one camera sample traces.
+struct RayPath {
+  int vertexCount = 1;  // segment k joins vertices[k] and vertices[k + 1]; then the tail
+  std::array<glm::vec3, kMaxCurvedSegments + 2> vertices;
+  glm::vec3 tail{0.0f, 0.0f, -1.0f};  // unit direction of the last segment, from the last vertex
+  bool lit = true;                    // false: no display behind the pixel, the sample is black
+};
+
+// The bent virtual ray W(e + t u), t >= 0, as vertices (in the warped physical frame, before the
+// camera placement) and the direction of its asymptote F(u). Samples are spaced geometrically
+// in the angle the physical ray subtends at c, from the eye down to 1e-3 rad, where W bends
+// most. Returns the number of vertices (1 when the ray points straight away from c, 2 when it
+// passes through c). `segments` in 1..kMaxCurvedSegments.
+int curvedRay(const ConformalWarp& warp, const glm::dvec3& eye, const glm::dvec3& unitDirection,
+              int segments, glm::dvec3* vertices, glm::dvec3& tail);
+
+class CameraRays {
+ public:
+  // Plain rays.
+  CameraRays(const WallView& view, const VirtualCamera& camera, const glm::dvec3& reference);
+  // Conformal rays; `warp` and `grid` (the map seen from this view's wall) must outlive this
+  // object.
+  CameraRays(const WallView& view, const VirtualCamera& camera, const ConformalWarp& warp,
+             const WallMapGrid& grid, StereoRays stereoRays, int curvedSegments);
+
+  // The path through pixel-space point (px, py) of the wall (see WallView::rayDirection).
+  void make(double px, double py, RayPath& path) const;
+
+ private:
+  glm::vec3 place(const glm::dvec3& physicalPoint) const;
+  glm::vec3 turn(const glm::dvec3& physicalDirection) const;
+
+  WallView view_;
+  // rayDirection is affine in the pixel position: base + px stepX + py stepY.
+  glm::dvec3 directionBase_, directionStepX_, directionStepY_;
+  glm::dvec3 reference_;
+  glm::dvec3 cameraPosition_;
+  glm::dmat3 rotation_;
+  glm::vec3 placedEye_;
+  glm::mat3 rotationF_;
+  // The same affine direction, turned by the camera, in float: plain rays need nothing else.
+  glm::vec3 turnedBase_, turnedStepX_, turnedStepY_;
+  const ConformalWarp* warp_ = nullptr;
+  const WallMapGrid* grid_ = nullptr;
+  StereoRays stereoRays_ = StereoRays::Exact;
+  int curvedSegments_ = 0;
+  bool eyeAtReference_ = false;
+};
+
+}  // namespace confvis::embree

@@ -1,0 +1,162 @@
+#include "confvis/backends/embree/embree_backend.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <optional>
+
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include "camera_rays.hpp"
+#include "confvis/backends/conformal_warp.hpp"
+#include "confvis/backends/embree/embree_device.hpp"
+#include "confvis/backends/embree/embree_scene.hpp"
+#include "confvis/backends/render_plan.hpp"
+#include "confvis/base/error.hpp"
+#include "tile_renderer.hpp"
+
+namespace confvis {
+
+struct EmbreeBackend::Impl {
+  explicit Impl(const EmbreeOptions& o) : options(o) {}
+
+  // The map seen from `wall` (see WallMapGrid), built once per map, wall and output size.
+  const WallMapGrid& wallGrid(const ConformalWarp& warp, std::uint64_t mapFingerprint,
+                                      const Wall& wall, double scale) {
+    const double spacing = WallMapGrid::spacingFor(wall, warp.reference(),
+                                                           warp.map().resolution(), scale);
+    std::uint64_t key = mapFingerprint;
+    for (const glm::dvec3& corner : {wall.lowerLeft, wall.lowerRight, wall.upperLeft})
+      for (int i = 0; i < 3; ++i) key = mixHash(key, corner[i]);
+    for (double value : {wall.bezel.left, wall.bezel.right, wall.bezel.bottom, wall.bezel.top,
+                         static_cast<double>(wall.width), static_cast<double>(wall.height),
+                         spacing})
+      key = mixHash(key, value);
+    auto found = grids.find(key);
+    if (found != grids.end()) return *found->second;
+    if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
+    auto grid = std::make_unique<WallMapGrid>(warp, wall, spacing);
+    return *grids.emplace(key, std::move(grid)).first->second;
+  }
+
+  EmbreeOptions options;
+  EmbreeDevice device;
+  std::unique_ptr<EmbreeScene> scene;
+  std::map<std::uint64_t, std::unique_ptr<WallMapGrid>> grids;
+};
+
+EmbreeBackend::EmbreeBackend(const EmbreeOptions& options)
+    : impl_(std::make_unique<Impl>(options)) {
+  if (options.tileSize < 1)
+    throw Error(ErrorCode::InvalidInput, "Embree tile size must be positive");
+  if (options.ambientOcclusionSamples < 1 || options.ambientOcclusionDistance < 0.0)
+    throw Error(ErrorCode::InvalidInput,
+                "ambient occlusion needs at least one sample and a distance >= 0");
+}
+
+EmbreeBackend::~EmbreeBackend() = default;
+
+void EmbreeBackend::setScene(const Scene& scene) {
+  impl_->scene.reset();
+  impl_->scene = std::make_unique<EmbreeScene>(impl_->device, scene);
+}
+
+RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMap* map,
+                                   const RenderSettings& settings) {
+  if (!impl_->scene)
+    throw Error(ErrorCode::InvalidInput, "Embree backend: setScene must come before render");
+  const RenderPlan plan = planRender(config, map, settings);
+  std::optional<ConformalWarp> warp;
+  std::uint64_t mapFingerprint = 0;
+  const auto setupStart = std::chrono::steady_clock::now();
+  if (settings.mode == RenderMode::Conformal) {
+    warp.emplace(*map);
+    mapFingerprint = warp->fingerprint();
+    for (const PlannedImage& image : plan.images)
+      impl_->wallGrid(*warp, mapFingerprint, *image.view.wall, settings.resolutionScale);
+  }
+  const double mapSetupSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
+
+  const EmbreeScene& scene = *impl_->scene;
+  embree::TileJob job;
+  job.samplesPerPixel = settings.samplesPerPixel;
+  job.tileSize = impl_->options.tileSize;
+  job.shading.ambientOcclusion = settings.ambientOcclusion;
+  job.shading.occlusionSamples = impl_->options.ambientOcclusionSamples;
+  const double distance = impl_->options.ambientOcclusionDistance > 0.0
+                              ? impl_->options.ambientOcclusionDistance
+                              : 0.05 * scene.diagonal();
+  job.shading.occlusionDistance = static_cast<float>(distance);
+  job.shading.surfaceOffset = static_cast<float>(std::max(1e-6, 1e-5 * scene.diagonal()));
+
+  std::size_t totalTiles = 0;
+  for (const PlannedImage& image : plan.images)
+    totalTiles += embree::tileCount(image.width, image.height, job.tileSize);
+  Progress progress("render", totalTiles, settings.showProgress);
+
+  std::optional<tbb::global_control> threadLimit;
+  if (impl_->options.threads > 0)
+    threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                        static_cast<std::size_t>(impl_->options.threads));
+
+  RenderResult result;
+  embree::RayCounters counters;
+  nlohmann::json perImage = nlohmann::json::array();
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < plan.images.size(); ++i) {
+    const PlannedImage& planned = plan.images[i];
+    const embree::CameraRays rays =
+        warp ? embree::CameraRays(planned.view, settings.camera, *warp,
+                                  impl_->wallGrid(*warp, mapFingerprint, *planned.view.wall,
+                                                  settings.resolutionScale),
+                                  settings.stereoRays, impl_->options.curvedRaySegments)
+             : embree::CameraRays(planned.view, settings.camera, config.reference);
+    job.width = planned.width;
+    job.height = planned.height;
+    job.pixelToWall = {static_cast<double>(planned.view.wall->width) / planned.width,
+                       static_cast<double>(planned.view.wall->height) / planned.height};
+    job.seed = static_cast<std::uint32_t>(planned.wallIndex * 3 + static_cast<int>(planned.eye));
+    WallImage out;
+    out.wall = planned.view.wall->name;
+    out.eye = planned.eye;
+    const auto imageStart = std::chrono::steady_clock::now();
+    embree::renderTiles(scene, rays, job, out.image, progress, counters);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - imageStart).count();
+    perImage.push_back({{"wall", out.wall},
+                        {"eye", eyeName(out.eye)},
+                        {"width", job.width},
+                        {"height", job.height},
+                        {"seconds", seconds}});
+    result.images.push_back(std::move(out));
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.finish();
+  impl_->device.check("rendering");
+
+  const auto cameraRays = counters.camera.load(), occlusionRays = counters.occlusion.load();
+  result.stats = {{"backend", name()},
+                  {"threads", impl_->options.threads > 0
+                                  ? impl_->options.threads
+                                  : tbb::this_task_arena::max_concurrency()},
+                  {"scene_triangles", scene.scene().triangleCount()},
+                  {"bvh_build_seconds", scene.buildSeconds()},
+                  {"render_seconds", seconds},
+                  {"map_setup_seconds", mapSetupSeconds},
+                  {"camera_rays", cameraRays},
+                  {"occlusion_rays", occlusionRays},
+                  {"rays_per_second",
+                   seconds > 0.0 ? static_cast<double>(cameraRays + occlusionRays) / seconds : 0.0},
+                  {"images", perImage}};
+  if (settings.mode == RenderMode::Conformal && plan.hasOffCentreEyes)
+    result.stats["curved_ray_segments"] = settings.stereoRays == StereoRays::Exact
+                                              ? impl_->options.curvedRaySegments
+                                              : 1;
+  return result;
+}
+
+}  // namespace confvis

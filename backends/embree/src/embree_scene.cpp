@@ -1,0 +1,81 @@
+#include "confvis/backends/embree/embree_scene.hpp"
+
+#include <chrono>
+#include <cstring>
+
+#include "confvis/base/error.hpp"
+
+namespace confvis {
+
+namespace {
+
+void attachMesh(EmbreeDevice& device, RTCScene scene, const Mesh& mesh, unsigned meshIndex) {
+  RTCGeometry geometry = rtcNewGeometry(device.handle(), RTC_GEOMETRY_TYPE_TRIANGLE);
+  device.check("creating the geometry of mesh " + std::to_string(meshIndex));
+  // Embree-owned copies (rtcSetNewGeometryBuffer pads the vertex buffer for its 16-byte loads,
+  // which a shared glm::vec3 array would not guarantee).
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(float) * 3,
+      mesh.positions.size()));
+  auto* indices = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+      geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(unsigned) * 3,
+      mesh.triangles.size()));
+  if (!vertices || !indices) {
+    rtcReleaseGeometry(geometry);
+    device.check("allocating the buffers of mesh " + std::to_string(meshIndex));
+    throw Error(ErrorCode::Internal, "Embree returned no buffer for mesh " +
+                                         std::to_string(meshIndex));
+  }
+  std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+  std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * sizeof(glm::uvec3));
+  rtcCommitGeometry(geometry);
+  rtcAttachGeometryByID(scene, geometry, meshIndex);
+  rtcReleaseGeometry(geometry);
+  device.check("uploading mesh " + std::to_string(meshIndex) + " ('" + mesh.name + "')");
+}
+
+}  // namespace
+
+EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(scene) {
+  validateScene(source_);
+  const auto start = std::chrono::steady_clock::now();
+  scene_ = rtcNewScene(device.handle());
+  try {
+    device.check("creating a scene");
+    // Robust mode makes the triangle test watertight: camera rays that pass exactly through a
+    // shared edge or vertex (a pixel grid aligned with a mesh grid, as on the checker-sphere)
+    // would otherwise slip through the surface.
+    rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
+    for (std::size_t i = 0; i < source_.meshes.size(); ++i)
+      if (!source_.meshes[i].triangles.empty())
+        attachMesh(device, scene_, source_.meshes[i], static_cast<unsigned>(i));
+    rtcCommitScene(scene_);
+    device.check("building the BVH of scene '" + source_.name + "'");
+  } catch (...) {
+    if (scene_) rtcReleaseScene(scene_);
+    throw;
+  }
+  buildSeconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Bounds box = source_.bounds();
+  diagonal_ = box.empty() ? 0.0 : glm::length(glm::dvec3(box.max - box.min));
+}
+
+EmbreeScene::~EmbreeScene() { rtcReleaseScene(scene_); }
+
+glm::vec3 EmbreeScene::shadingNormal(unsigned geomID, unsigned primID, float u, float v,
+                                     const glm::vec3& geometricNormal) const {
+  const Mesh& mesh = source_.meshes[geomID];
+  if (!mesh.normals.empty()) {
+    const glm::uvec3 t = mesh.triangles[primID];
+    const glm::vec3 n = (1.0f - u - v) * mesh.normals[t.x] + u * mesh.normals[t.y] +
+                        v * mesh.normals[t.z];
+    const float length = glm::length(n);
+    if (length > 1e-20f) return n / length;
+  }
+  const float length = glm::length(geometricNormal);
+  return length > 0.0f ? geometricNormal / length : glm::vec3(0.0f);
+}
+
+}  // namespace confvis

@@ -1,0 +1,39 @@
+#pragma once
+// Tracing in packets of 8 (rtcIntersect8 / rtcOccluded8): primary paths segment by segment, and
+// shadow-style occlusion rays for ambient occlusion.
+#include <embree3/rtcore.h>
+
+#include <array>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "camera_rays.hpp"
+
+namespace confvis::embree {
+
+inline constexpr int kPacketSize = 8;
+
+struct PacketHits {
+  std::array<bool, kPacketSize> hit{};
+  std::array<unsigned, kPacketSize> geomID{}, primID{};
+  std::array<glm::vec2, kPacketSize> barycentrics{};
+  std::array<glm::vec3, kPacketSize> geometricNormal{}, point{};
+  std::array<glm::vec3, kPacketSize> direction{};  // unit direction of the segment that hit
+};
+
+// Traces `count` (<= 8) paths: every lane's segments in order until one hits. Unlit paths are
+// not traced. Returns the number of rays cast (one per lane and segment).
+std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, PacketHits& hits);
+
+struct OcclusionPacket {
+  std::array<bool, kPacketSize> active{};
+  std::array<glm::vec3, kPacketSize> origin{}, direction{};
+  std::array<float, kPacketSize> distance{};
+  std::array<bool, kPacketSize> occluded{};
+};
+
+// Fills packet.occluded for the active lanes; returns the number of rays cast.
+std::uint64_t traceOcclusion(RTCScene scene, OcclusionPacket& packet);
+
+}  // namespace confvis::embree

@@ -1,0 +1,28 @@
+#pragma once
+// Shading of a packet of hits: base colour (material factor x texture, Scene::baseColorAt)
+// times Lambert with a headlight (light from the eye along the ray, two-sided), optionally times
+// ambient occlusion (the unoccluded fraction of cosine-weighted hemisphere rays).
+#include <array>
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "confvis/backends/embree/embree_scene.hpp"
+#include "packet_tracer.hpp"
+
+namespace confvis::embree {
+
+struct ShadingOptions {
+  bool ambientOcclusion = false;
+  int occlusionSamples = 8;
+  float occlusionDistance = 1.0f;  // metres
+  float surfaceOffset = 1e-4f;     // metres, start of occlusion rays above the surface
+};
+
+// Returns the number of occlusion rays cast. `seeds` gives each lane its random stream.
+std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
+                          const ShadingOptions& options,
+                          const std::array<std::uint32_t, kPacketSize>& seeds,
+                          std::array<glm::vec3, kPacketSize>& colours);
+
+}  // namespace confvis::embree

@@ -1,0 +1,37 @@
+#pragma once
+// One wall image for one eye: the image is cut into square tiles rendered in parallel by TBB;
+// inside a tile, runs of 8 neighbouring pixels form one ray packet per sample.
+#include <atomic>
+#include <cstdint>
+
+#include "camera_rays.hpp"
+#include "confvis/backends/embree/embree_scene.hpp"
+#include "confvis/base/image.hpp"
+#include "confvis/base/progress.hpp"
+#include "shading.hpp"
+
+namespace confvis::embree {
+
+struct RayCounters {
+  std::atomic<std::uint64_t> camera{0};     // primary rays (one per path segment traced)
+  std::atomic<std::uint64_t> occlusion{0};  // ambient-occlusion rays
+};
+
+struct TileJob {
+  int width = 0, height = 0;          // output pixels
+  glm::dvec2 pixelToWall{1.0};        // output pixel units -> wall pixel units (scaled renders)
+  int samplesPerPixel = 1;
+  int tileSize = 16;
+  std::uint32_t seed = 0;             // distinguishes images (wall, eye) in the random streams
+  ShadingOptions shading;
+};
+
+// Renders into `image` (width x height, resized here): linear RGB averaged over the samples,
+// alpha = fraction of samples that hit something. Calls progress.advance() once per tile.
+void renderTiles(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job,
+                 ImageRGBA& image, Progress& progress, RayCounters& counters);
+
+// Tiles renderTiles will advance the progress by for a width x height image.
+std::size_t tileCount(int width, int height, int tileSize);
+
+}  // namespace confvis::embree

@@ -1,0 +1,280 @@
+// Render benchmark (run by hand, never in CI). In one run, on one scene and resolution:
+//   - conformal / plain render time of the Embree backend (goal <= 1.05),
+//   - the backend's rays per second against a bare rtcIntersect8 loop over the same scene and
+//     the same primary rays (goal >= 80 %),
+//   - the image-based alternative (render a cube map around c, resample it through the same
+//     map, as SGCT's fisheye path does) at equal output resolution: time, and sharpness as PSNR
+//     against a 16-spp conformal reference, next to the direct (ray-retargeted) render.
+// Stereo timings (exact curved rays, fast straight rays) are reported alongside.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <functional>
+
+#include "confvis/backends/analytic_maps.hpp"
+#include "confvis/backends/conformal_warp.hpp"
+#include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/backends/retarget_map_files.hpp"
+#include "confvis/base/atomic_file.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/engine/scene_loader.hpp"
+#include "image_based_retarget.hpp"
+#include "raw_intersect_loop.hpp"
+
+using namespace confvis;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double cpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// Best of `repeats` wall-clock timings of f.
+double bestSeconds(int repeats, const std::function<void()>& f) {
+  double best = 1e30;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    best = std::min(best, secondsSince(start));
+  }
+  return best;
+}
+
+// PSNR (dB, peak 1) of the RGB of `images` against `reference`, values clamped to [0, 1].
+double psnr(const std::vector<WallImage>& images, const std::vector<WallImage>& reference) {
+  double squared = 0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const ImageRGBA& a = images[i].image;
+    const ImageRGBA& b = reference[i].image;
+    for (std::size_t p = 0; p < a.pixelCount(); ++p)
+      for (int c = 0; c < 3; ++c) {
+        const double d = std::clamp(a.pixels[4 * p + c], 0.0f, 1.0f) -
+                         std::clamp(b.pixels[4 * p + c], 0.0f, 1.0f);
+        squared += d * d;
+        ++count;
+      }
+  }
+  const double mse = squared / static_cast<double>(count);
+  return mse > 0 ? 10.0 * std::log10(1.0 / mse) : INFINITY;
+}
+
+// Mean luminance gradient (|dx| + |dy|) of the images relative to the reference's: blur lowers
+// it below 1, aliasing raises it above 1.
+double sharpness(const std::vector<WallImage>& images, const std::vector<WallImage>& reference) {
+  auto gradient = [](const std::vector<WallImage>& set) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (const WallImage& wall : set) {
+      const ImageRGBA& im = wall.image;
+      auto luminance = [&](int x, int y) {
+        const float* p = im.at(x, y);
+        return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+      };
+      for (int y = 0; y + 1 < im.height; ++y)
+        for (int x = 0; x + 1 < im.width; ++x, ++n)
+          sum += std::abs(luminance(x + 1, y) - luminance(x, y)) +
+                 std::abs(luminance(x, y + 1) - luminance(x, y));
+    }
+    return sum / static_cast<double>(n);
+  };
+  return gradient(images) / gradient(reference);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"confvis render benchmark: conformal vs plain, raw Embree, image-based retarget"};
+  std::string configPath = std::string(CONFVIS_SOURCE_DIR) + "/configs/cave5.json";
+  std::string sceneName = "checker-sphere", mapDirectory, jsonPath;
+  double scale = 0.5, lambda = 1.5;
+  int repeats = 3;
+  app.add_option("--config", configPath, "Display config")->capture_default_str();
+  app.add_option("--scene", sceneName, "Built-in scene or scene file")->capture_default_str();
+  app.add_option("--scale", scale, "Output resolution / wall resolution")->capture_default_str();
+  app.add_option("--map", mapDirectory,
+                 "Baked map directory; default: identity for a full-sphere display, otherwise "
+                 "the analytic ceilingless dilation map");
+  app.add_option("--lambda", lambda, "Dilation factor of the analytic map")->capture_default_str();
+  app.add_option("--repeats", repeats, "Timed repetitions (best is reported)")->capture_default_str();
+  app.add_option("--json", jsonPath, "Also write the figures as JSON");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const DisplayConfig config = loadDisplayConfig(configPath);
+    RetargetMap map;
+    std::string mapName;
+    if (!mapDirectory.empty()) {
+      map = readRetargetMapDirectory(mapDirectory, config.reference);
+      mapName = mapDirectory;
+    } else if (displayCoversWholeSphere(config)) {
+      map = RetargetMap::identity(config.cubeResolution, {config.reference.x, config.reference.y,
+                                                          config.reference.z});
+      mapName = "identity";
+    } else {
+      map = ceilinglessDilationMap(lambda, config.cubeResolution, config.reference);
+      mapName = "analytic ceilingless dilation, lambda " + std::to_string(lambda);
+    }
+    const Scene scene = sceneByNameOrFile(sceneName);
+    EmbreeBackend backend;
+    backend.setScene(scene);
+    EmbreeDevice rawDevice;
+    const EmbreeScene rawScene(rawDevice, scene);
+
+    RenderSettings plain;
+    plain.mode = RenderMode::Plain;
+    plain.resolutionScale = scale;
+    plain.head.position = plain.camera.position = config.reference;
+    RenderSettings conformal = plain;
+    conformal.mode = RenderMode::Conformal;
+
+    std::printf("display %s (%zu walls), scene %s (%zu triangles), map: %s, scale %.3g, %d "
+                "repeats (best)\n",
+                config.name.c_str(), config.walls.size(), scene.name.c_str(),
+                scene.triangleCount(), mapName.c_str(), scale, repeats);
+    backend.render(config, &map, conformal);  // warm-up: caches, TBB workers
+
+    RenderResult plainResult, conformalResult;
+    double plainSeconds = 1e30, conformalSeconds = 1e30, rawSeconds = 1e30;
+    // CPU seconds of the whole process (all threads): on a shared machine other processes steal
+    // wall-clock time, not CPU time, so these ratios are the steadier ones.
+    double plainCpu = 1e30, conformalCpu = 1e30, rawCpu = 1e30;
+    bench::RawLoopResult raw;
+    for (int i = 0; i < repeats; ++i) {  // interleaved, so load changes hit all three alike
+      auto start = std::chrono::steady_clock::now();
+      double cpu = cpuSeconds();
+      plainResult = backend.render(config, nullptr, plain);
+      plainSeconds = std::min(plainSeconds, secondsSince(start));
+      plainCpu = std::min(plainCpu, cpuSeconds() - cpu);
+      start = std::chrono::steady_clock::now();
+      cpu = cpuSeconds();
+      conformalResult = backend.render(config, &map, conformal);
+      conformalSeconds = std::min(conformalSeconds, secondsSince(start));
+      conformalCpu = std::min(conformalCpu, cpuSeconds() - cpu);
+      cpu = cpuSeconds();
+      raw = bench::rawIntersectLoop(rawScene, config, scale);
+      rawSeconds = std::min(rawSeconds, raw.seconds);
+      rawCpu = std::min(rawCpu, cpuSeconds() - cpu);
+    }
+    const double rays = plainResult.stats["camera_rays"].get<double>();
+    const double plainRate = rays / plainSeconds, conformalRate = rays / conformalSeconds;
+    const double rawRate = static_cast<double>(raw.rays) / rawSeconds;
+    std::printf("\nplain      %8.4f s  %7.2f Mrays/s  (%.0f rays)\n", plainSeconds, plainRate * 1e-6, rays);
+    std::printf("conformal  %8.4f s  %7.2f Mrays/s  conformal/plain time %.3f (goal <= 1.05)\n",
+                conformalSeconds, conformalRate * 1e-6, conformalSeconds / plainSeconds);
+    std::printf("raw rtcIntersect8 %8.4f s  %7.2f Mrays/s  plain %.0f %%, conformal %.0f %% of "
+                "raw (goal >= 80 %%)\n",
+                rawSeconds, rawRate * 1e-6, 100 * plainRate / rawRate, 100 * conformalRate / rawRate);
+    std::printf("CPU time   plain %.4f s, conformal %.4f s (ratio %.3f), raw %.4f s: plain %.0f %%, "
+                "conformal %.0f %% of raw rays per CPU second\n",
+                plainCpu, conformalCpu, conformalCpu / plainCpu, rawCpu, 100 * rawCpu / plainCpu,
+                100 * rawCpu / conformalCpu);
+
+    // Stereo: exact curved rays and fast straight rays against plain stereo.
+    RenderSettings plainStereo = plain, exactStereo = conformal, fastStereo = conformal;
+    plainStereo.eyes = exactStereo.eyes = fastStereo.eyes = {Eye::Left, Eye::Right};
+    fastStereo.stereoRays = StereoRays::Fast;
+    const double plainStereoSeconds =
+        bestSeconds(repeats, [&] { backend.render(config, nullptr, plainStereo); });
+    const double exactStereoSeconds =
+        bestSeconds(repeats, [&] { backend.render(config, &map, exactStereo); });
+    const double fastStereoSeconds =
+        bestSeconds(repeats, [&] { backend.render(config, &map, fastStereo); });
+    std::printf("stereo     plain %.4f s, conformal exact %.4f s (x%.2f), fast %.4f s (x%.2f)\n",
+                plainStereoSeconds, exactStereoSeconds, exactStereoSeconds / plainStereoSeconds,
+                fastStereoSeconds, fastStereoSeconds / plainStereoSeconds);
+
+    // Sharpness against a 16-spp reference, at equal output resolution.
+    RenderSettings reference = conformal;
+    reference.samplesPerPixel = 16;
+    const auto referenceStart = std::chrono::steady_clock::now();
+    const RenderResult referenceResult = backend.render(config, &map, reference);
+    const double referenceSeconds = secondsSince(referenceStart);
+    const double directPsnr = psnr(conformalResult.images, referenceResult.images);
+    const double directSharpness = sharpness(conformalResult.images, referenceResult.images);
+    std::printf("\n16-spp reference %.3f s; sharpness = mean gradient / the reference's (blur < 1 "
+                "< aliasing)\n", referenceSeconds);
+    std::printf("direct ray retarget, 1 spp:          %8.4f s  PSNR %.2f dB  sharpness %.3f\n",
+                conformalSeconds, directPsnr, directSharpness);
+    RenderSettings direct4 = conformal;
+    direct4.samplesPerPixel = 4;
+    RenderResult direct4Result;
+    const double direct4Seconds =
+        bestSeconds(repeats, [&] { direct4Result = backend.render(config, &map, direct4); });
+    const double direct4Psnr = psnr(direct4Result.images, referenceResult.images);
+    std::printf("direct ray retarget, 4 spp:          %8.4f s  PSNR %.2f dB  sharpness %.3f\n",
+                direct4Seconds, direct4Psnr, sharpness(direct4Result.images, referenceResult.images));
+    const ConformalWarp warp(map);
+    const std::vector<WallMapGrid> grids = bench::wallGrids(config, warp, scale);
+    const int wallPixels = std::max(1, static_cast<int>(std::lround(config.walls[0].width * scale)));
+    nlohmann::json imageBased = nlohmann::json::array();
+    for (int factor : {1, 2}) {
+      const int faceSize = factor * wallPixels;
+      bench::ImageBasedTimings timings, best{1e30, 1e30};
+      std::vector<WallImage> images;
+      for (int i = 0; i < repeats; ++i) {
+        images = bench::renderImageBased(backend, config, grids, faceSize, scale, timings);
+        if (timings.cubeSeconds + timings.resampleSeconds < best.cubeSeconds + best.resampleSeconds)
+          best = timings;
+      }
+      const double total = best.cubeSeconds + best.resampleSeconds;
+      const double value = psnr(images, referenceResult.images);
+      const double crisp = sharpness(images, referenceResult.images);
+      std::printf("image-based, cube %4d^2 x 6, 1 spp: %8.4f s  PSNR %.2f dB  sharpness %.3f  "
+                  "(cube %.4f s + resample %.4f s; x%.2f the direct time)\n",
+                  faceSize, total, value, crisp, best.cubeSeconds, best.resampleSeconds,
+                  total / conformalSeconds);
+      imageBased.push_back({{"cube_face_size", faceSize},
+                            {"seconds", total},
+                            {"cube_seconds", best.cubeSeconds},
+                            {"resample_seconds", best.resampleSeconds},
+                            {"psnr_db", value},
+                            {"sharpness", crisp}});
+    }
+    if (!jsonPath.empty()) {
+      const nlohmann::json report = {
+          {"display", config.name},
+          {"scene", scene.name},
+          {"triangles", scene.triangleCount()},
+          {"map", mapName},
+          {"scale", scale},
+          {"threads", plainResult.stats["threads"]},
+          {"plain_seconds", plainSeconds},
+          {"conformal_seconds", conformalSeconds},
+          {"conformal_over_plain", conformalSeconds / plainSeconds},
+          {"cpu_seconds", {{"plain", plainCpu}, {"conformal", conformalCpu}, {"raw", rawCpu}}},
+          {"conformal_over_plain_cpu", conformalCpu / plainCpu},
+          {"camera_rays", rays},
+          {"raw_rtcintersect8_rays_per_second", rawRate},
+          {"plain_rays_per_second", plainRate},
+          {"conformal_rays_per_second", conformalRate},
+          {"plain_fraction_of_raw", plainRate / rawRate},
+          {"conformal_fraction_of_raw", conformalRate / rawRate},
+          {"stereo_seconds", {{"plain", plainStereoSeconds},
+                              {"exact", exactStereoSeconds},
+                              {"fast", fastStereoSeconds}}},
+          {"reference_spp", 16},
+          {"direct_psnr_db", directPsnr},
+          {"direct_sharpness", directSharpness},
+          {"direct_4spp_seconds", direct4Seconds},
+          {"direct_4spp_psnr_db", direct4Psnr},
+          {"image_based", imageBased}};
+      writeTextAtomically(jsonPath, report.dump(2) + "\n");
+    }
+  } catch (const Error& e) {
+    std::fprintf(stderr, "confvis_bench_render: %s\n", e.what());
+    return 2;
+  }
+  return 0;
+}

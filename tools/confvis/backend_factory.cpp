@@ -1,0 +1,38 @@
+#include "backend_factory.hpp"
+
+#include <functional>
+#include <utility>
+
+#include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/base/error.hpp"
+
+namespace confvis::cli {
+
+namespace {
+
+using Factory = std::function<std::unique_ptr<RenderBackend>()>;
+
+const std::vector<std::pair<std::string, Factory>>& factories() {
+  static const std::vector<std::pair<std::string, Factory>> table = {
+      {"embree", [] { return std::make_unique<EmbreeBackend>(); }},
+  };
+  return table;
+}
+
+}  // namespace
+
+std::vector<std::string> backendNames() {
+  std::vector<std::string> names;
+  for (const auto& [name, factory] : factories()) names.push_back(name);
+  return names;
+}
+
+std::unique_ptr<RenderBackend> makeBackend(const std::string& name) {
+  for (const auto& [known, factory] : factories())
+    if (known == name) return factory();
+  std::string list;
+  for (const std::string& known : backendNames()) list += (list.empty() ? "" : ", ") + known;
+  throw Error(ErrorCode::InvalidInput, "unknown backend '" + name + "' (known: " + list + ")");
+}
+
+}  // namespace confvis::cli

@@ -1,0 +1,186 @@
+// confvis render: offline retargets of a scene to every wall of a display, as OpenEXR + PNG.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "backend_factory.hpp"
+#include "command.hpp"
+#include "confvis/backends/render_output.hpp"
+#include "confvis/backends/render_plan.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/engine/scene_loader.hpp"
+#include "retarget_map_source.hpp"
+
+namespace confvis::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderArgs {
+  std::string config, scene = "checker-sphere", backend = "embree", mode = "conformal";
+  std::string eyes = "mono", stereoRays = "exact", camera, mapDirectory, output;
+  std::vector<std::string> walls;
+  int spp = 1;
+  double scale = 1.0;
+  bool ambientOcclusion = false, quiet = false;
+};
+
+// The default display: configs/cave5.json beside the executable's build or install tree, or in
+// the source tree it was built from.
+fs::path defaultConfig() {
+  std::vector<fs::path> candidates;
+  std::error_code error;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    candidates.push_back(exe.parent_path() / "../configs/cave5.json");
+    candidates.push_back(exe.parent_path() / "../share/confvis/configs/cave5.json");
+  }
+  candidates.push_back(fs::path(CONFVIS_SOURCE_DIR) / "configs/cave5.json");
+  for (const fs::path& path : candidates)
+    if (fs::exists(path)) return fs::weakly_canonical(path);
+  throw Error(ErrorCode::FileNotFound,
+              "no display config given and the default configs/cave5.json was not found next to "
+              "the executable or in " CONFVIS_SOURCE_DIR);
+}
+
+VirtualCamera parseCamera(const std::string& text) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? comma : comma - start);
+    try {
+      std::size_t used = 0;
+      values.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw Error(ErrorCode::InvalidInput,
+                  "--camera expects x,y,z[,yaw,pitch] (metres, degrees), got '" + text + "'");
+    }
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if ((values.size() != 3 && values.size() != 5) ||
+      !std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); }))
+    throw Error(ErrorCode::InvalidInput,
+                "--camera expects x,y,z[,yaw,pitch] (metres, degrees), got '" + text + "'");
+  VirtualCamera camera;
+  camera.position = {values[0], values[1], values[2]};
+  if (values.size() == 5) {
+    camera.yawDegrees = values[3];
+    camera.pitchDegrees = values[4];
+  }
+  return camera;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int runRender(const RenderArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  const fs::path configPath = args.config.empty() ? defaultConfig() : fs::path(args.config);
+  const DisplayConfig config = loadDisplayConfig(configPath);
+
+  RenderSettings settings;
+  settings.mode = args.mode == "plain" ? RenderMode::Plain : RenderMode::Conformal;
+  settings.eyes = args.eyes == "stereo" ? std::vector<Eye>{Eye::Left, Eye::Right}
+                                        : std::vector<Eye>{Eye::Center};
+  settings.stereoRays = args.stereoRays == "fast" ? StereoRays::Fast : StereoRays::Exact;
+  settings.walls = args.walls;
+  settings.samplesPerPixel = args.spp;
+  settings.ambientOcclusion = args.ambientOcclusion;
+  settings.head.position = config.reference;  // the tracked head at its nominal position
+  settings.camera.position = config.reference;
+  if (!args.camera.empty()) settings.camera = parseCamera(args.camera);
+  settings.resolutionScale = args.scale;
+  settings.showProgress = !args.quiet;
+
+  std::unique_ptr<RenderBackend> backend = makeBackend(args.backend);
+  std::optional<MapSource> map;
+  if (settings.mode == RenderMode::Conformal) map = retargetMapFor(config, args.mapDirectory);
+  // Check walls, eyes and map before the (possibly slow) scene load.
+  planRender(config, map ? &map->map : nullptr, settings);
+  const double setupSeconds = secondsSince(start);
+
+  auto stage = std::chrono::steady_clock::now();
+  const Scene scene = sceneByNameOrFile(args.scene);
+  const double loadSeconds = secondsSince(stage);
+  stage = std::chrono::steady_clock::now();
+  backend->setScene(scene);
+  const double uploadSeconds = secondsSince(stage);
+  stage = std::chrono::steady_clock::now();
+  const RenderResult result = backend->render(config, map ? &map->map : nullptr, settings);
+  const double renderSeconds = secondsSince(stage);
+
+  const fs::path output = args.output.empty() ? fs::path("out") / ("render-" + config.name)
+                                              : fs::path(args.output);
+  nlohmann::json extra = {
+      {"display", {{"config", configPath.string()}}},
+      {"scene", {{"source", args.scene},
+                 {"name", scene.name},
+                 {"triangles", scene.triangleCount()},
+                 {"vertices", scene.vertexCount()}}},
+      {"map", map ? nlohmann::json(map->origin) : nlohmann::json(nullptr)},
+      {"timings", {{"setup_seconds", setupSeconds},
+                   {"scene_load_seconds", loadSeconds},
+                   {"scene_upload_seconds", uploadSeconds},
+                   {"render_seconds", renderSeconds},
+                   {"seconds_before_writing", secondsSince(start)}}}};
+  writeRenderOutput(output, config, settings, result, extra);  // adds write_seconds
+  const double raysPerSecond = result.stats.value("rays_per_second", 0.0);
+  std::printf("%s: %zu images (%s, %s) of '%s' in %.2f s, %.1f Mrays/s -> %s\n",
+              config.name.c_str(), result.images.size(), modeName(settings.mode),
+              args.eyes.c_str(), scene.name.c_str(), renderSeconds, raysPerSecond * 1e-6,
+              output.string().c_str());
+  return 0;
+}
+
+const RegisterCommand registration{Command{
+    "render", "Render a scene to every wall of a display (OpenEXR + PNG previews)",
+    [](CLI::App& sub) {
+      auto args = std::make_shared<RenderArgs>();
+      sub.add_option("config", args->config,
+                     "Display config (JSON); default: configs/cave5.json");
+      sub.add_option("--scene", args->scene,
+                     "Built-in scene (checker-sphere, checker-tunnel, graph) or an OBJ/glTF file")
+          ->capture_default_str();
+      sub.add_option("--backend", args->backend, "Renderer")
+          ->check(CLI::IsMember(backendNames()))
+          ->capture_default_str();
+      sub.add_option("--mode", args->mode,
+                     "conformal: through the display's conformal map; plain: ordinary off-axis")
+          ->check(CLI::IsMember({"conformal", "plain"}))
+          ->capture_default_str();
+      sub.add_option("--eyes", args->eyes, "mono: the head's centre; stereo: left and right eyes")
+          ->check(CLI::IsMember({"mono", "stereo"}))
+          ->capture_default_str();
+      sub.add_option("--stereo-rays", args->stereoRays,
+                     "Conformal stereo eyes: exact curved rays or fast straight rays")
+          ->check(CLI::IsMember({"exact", "fast"}))
+          ->capture_default_str();
+      sub.add_option("--wall", args->walls, "Render only this wall (repeatable)");
+      sub.add_option("--spp", args->spp, "Samples per pixel (stratified)")
+          ->check(CLI::Range(1, 4096))
+          ->capture_default_str();
+      sub.add_option("--camera", args->camera,
+                     "Virtual camera x,y,z[,yaw,pitch]: where the display's reference point is "
+                     "in the scene (metres) and how it is turned (degrees)");
+      sub.add_option("--scale", args->scale, "Output resolution as a fraction of each wall's")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      sub.add_option("--map", args->mapDirectory,
+                     "Baked map directory (ray.exr, geom.exr) for conformal mode");
+      sub.add_flag("--ao", args->ambientOcclusion, "Ambient occlusion");
+      sub.add_option("-o,--output", args->output, "Output directory (default: out/render-NAME)");
+      sub.add_flag("-q,--quiet", args->quiet, "No progress bar");
+      return [args] { return runRender(*args); };
+    }}};
+
+}  // namespace
+}  // namespace confvis::cli
