@@ -158,6 +158,10 @@ TemplateBuild assembleCells(std::vector<FanCell> cells, const glm::dvec3& refere
       ring.push_back(vertexAt(mesh, a));
       for (const glm::dvec3& p : pointsOnSegment(a, b, corners)) ring.push_back(vertexAt(mesh, p));
     }
+    if (cell.fanFromFirstCorner && ring.size() == cell.polygon.size()) {
+      for (std::size_t i = 1; i + 1 < ring.size(); ++i) mesh.addTriangle({ring[0], ring[i], ring[i + 1]}, cell);
+      continue;
+    }
     const int centre = vertexAt(mesh, cell.centre);
     for (std::size_t i = 0; i < ring.size(); ++i)
       mesh.addTriangle({centre, ring[i], ring[(i + 1) % ring.size()]}, cell);

@@ -241,10 +241,9 @@ StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& disp
   const Wall lit = config.walls[best].litRectangle();
   StarCut star;
   // The fan centre of that wall's lit cell (see wallCells).
-  for (const FanCell& cell : wallCells(config))
+  for (const FanCell& cell : display.cells)
     if (cell.wall == best && cell.lit) star.centre = cell.centre;
   star.leaves = {lit.lowerLeft, lit.lowerRight, lit.upperRight(), lit.upperLeft};
-  (void)display;
   return star;
 }
 

@@ -2,6 +2,7 @@
 // make (engine/src/engine/display_checks.cpp already rejects degenerate, overlapping and
 // back-facing walls and a reference point behind any wall).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 #include <tuple>
@@ -124,35 +125,60 @@ void checkWallPairs(const DisplayConfig& config) {
 
 }  // namespace
 
-std::vector<FanCell> wallCells(const DisplayConfig& config) {
+std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
   std::vector<FanCell> cells;
   for (int index = 0; index < static_cast<int>(config.walls.size()); ++index) {
     const Wall& w = config.walls[index];
-    const double width = w.widthMetres(), height = w.heightMetres();
-    const std::array<double, 4> s{0.0, w.bezel.left, width - w.bezel.right, width};
-    const std::array<double, 4> t{0.0, w.bezel.bottom, height - w.bezel.top, height};
-    auto at = [&](double si, double ti) { return w.lowerLeft + si * w.right() + ti * w.up(); };
-    // The reference point's projection onto the wall, in wall coordinates.
-    const glm::dvec3 foot =
-        config.reference - glm::dot(config.reference - w.lowerLeft, w.normal()) * w.normal();
-    const double footS = glm::dot(foot - w.lowerLeft, w.right());
-    const double footT = glm::dot(foot - w.lowerLeft, w.up());
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const double s0 = s[i], s1 = s[i + 1], t0 = t[j], t1 = t[j + 1];
-        if (s1 - s0 < kTemplateTolerance || t1 - t0 < kTemplateTolerance) continue;
-        FanCell cell;
-        cell.polygon = {at(s0, t0), at(s1, t0), at(s1, t1), at(s0, t1)};
-        cell.lit = i == 1 && j == 1;
-        cell.wall = index;
-        cell.centre = at(0.5 * (s0 + s1), 0.5 * (t0 + t1));
-        // The dissertation's "green sphere": fan the lit area from the foot of the reference
-        // point where that keeps the fan well shaped (a quarter of the size from each side).
-        const double ms = 0.25 * (s1 - s0), mt = 0.25 * (t1 - t0);
-        if (cell.lit && footS > s0 + ms && footS < s1 - ms && footT > t0 + mt && footT < t1 - mt)
-          cell.centre = foot;
-        cells.push_back(std::move(cell));
-      }
+    const double W = w.widthMetres(), H = w.heightMetres();
+    const Bezel& b = w.bezel;
+    auto at = [&](double s, double t) { return w.lowerLeft + s * w.right() + t * w.up(); };
+    const double s0 = b.left, s1 = W - b.right, t0 = b.bottom, t1 = H - b.top;
+    auto quad = [&](const std::array<glm::dvec3, 4>& corners, bool lit) {
+      FanCell cell;
+      cell.lit = lit;
+      cell.wall = index;
+      cell.fanFromFirstCorner = true;
+      cell.polygon.assign(corners.begin(), corners.end());
+      for (const glm::dvec3& p : corners) cell.centre += p / 4.0;
+      cells.push_back(std::move(cell));
+    };
+    const bool hasBezel = std::max({b.left, b.right, b.bottom, b.top}) >= kTemplateTolerance;
+    if (!hasBezel) {
+      // One fan from the foot of the reference point (the dissertation's "green sphere") where
+      // that keeps the fan well shaped (a quarter of the size from each side), else the centre.
+      FanCell lit;
+      lit.polygon = {at(0, 0), at(W, 0), at(W, H), at(0, H)};
+      lit.wall = index;
+      lit.centre = at(0.5 * W, 0.5 * H);
+      const glm::dvec3 foot =
+          config.reference - glm::dot(config.reference - w.lowerLeft, w.normal()) * w.normal();
+      const double footS = glm::dot(foot - w.lowerLeft, w.right());
+      const double footT = glm::dot(foot - w.lowerLeft, w.up());
+      if (footS > 0.25 * W && footS < 0.75 * W && footT > 0.25 * H && footT < 0.75 * H) lit.centre = foot;
+      cells.push_back(lit);
+      continue;
+    }
+    // With bezels: an n x m grid of quads split by a diagonal, the lit area inside and four
+    // mitred bezel strips around it cut at the same grid lines. Thin strips then consist of
+    // right triangles, never of needles from a fan centre (whose bisection leaves obtuse slivers
+    // the flow cannot flatten), and the wall's outline has no vertices near its corners.
+    const int n = std::max(1, static_cast<int>(std::ceil(W / maxEdge - 1e-9)));
+    const int m = std::max(1, static_cast<int>(std::ceil(H / maxEdge - 1e-9)));
+    auto litPoint = [&](int i, int j) { return at(s0 + (s1 - s0) * i / n, t0 + (t1 - t0) * j / m); };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < m; ++j)
+        quad({litPoint(i, j), litPoint(i + 1, j), litPoint(i + 1, j + 1), litPoint(i, j + 1)}, true);
+    auto outer = [&](double fs, double ft) { return at(fs * W, ft * H); };
+    for (int i = 0; i < n; ++i) {
+      const double a = double(i) / n, z = double(i + 1) / n;
+      if (b.bottom >= kTemplateTolerance) quad({outer(a, 0), outer(z, 0), litPoint(i + 1, 0), litPoint(i, 0)}, false);
+      if (b.top >= kTemplateTolerance) quad({outer(z, 1), outer(a, 1), litPoint(i, m), litPoint(i + 1, m)}, false);
+    }
+    for (int j = 0; j < m; ++j) {
+      const double a = double(j) / m, z = double(j + 1) / m;
+      if (b.right >= kTemplateTolerance) quad({outer(1, a), outer(1, z), litPoint(n, j + 1), litPoint(n, j)}, false);
+      if (b.left >= kTemplateTolerance) quad({outer(0, z), outer(0, a), litPoint(0, j), litPoint(0, j + 1)}, false);
+    }
   }
   return cells;
 }
@@ -167,12 +193,13 @@ std::string wallsAround(const DisplayConfig& config, const TemplateBuild& mesh, 
   return names;
 }
 
-CoarseDisplay assembleDisplay(const DisplayConfig& config) {
+CoarseDisplay assembleDisplay(const DisplayConfig& config, double maxEdge) {
   if (config.walls.empty())
     throw Error(ErrorCode::InvalidInput, config.name + ": display has no walls");
   checkWallPairs(config);
   CoarseDisplay display;
-  display.mesh = assembleCells(wallCells(config), config.reference);
+  display.cells = wallCells(config, maxEdge);
+  display.mesh = assembleCells(display.cells, config.reference);
   const TemplateBuild& mesh = display.mesh;
   display.topology = analyzeTriangles(mesh);
   const TriangleTopology& topo = display.topology;
@@ -233,6 +260,8 @@ CoarseDisplay assembleDisplay(const DisplayConfig& config) {
 
 namespace confvis {
 
-void checkVisibleRegion(const DisplayConfig& config) { detail::assembleDisplay(config); }
+void checkVisibleRegion(const DisplayConfig& config) {
+  detail::assembleDisplay(config, config.edgeLength);
+}
 
 }  // namespace confvis
