@@ -272,7 +272,7 @@ DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeL
   if (config.source == SourceField::Hemisphere) return hemisphereTemplates(config, display, h);
   if (display.closed()) return closedTemplates(config, display, h);
   if (const auto cap = boxCap(config, display)) return closureTemplates(config, display, *cap, h);
-  return closureTemplates(config, display, coneCap(config, display), h);
+  return closureTemplates(config, display, coneCap(config, display, h), h);
 }
 
 }  // namespace confvis

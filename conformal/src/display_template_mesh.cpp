@@ -1,7 +1,7 @@
 // Template mesh plumbing: stitching fan cells, sub-meshes, cutting along a tree, topology.
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <numeric>
 
@@ -78,7 +78,8 @@ std::vector<HalfEdge> sortedHalfEdges(const TemplateBuild& mesh) {
     for (int k = 0; k < 3; ++k) {
       const int from = mesh.triangles[t][k], to = mesh.triangles[t][(k + 1) % 3];
       const auto [lo, hi] = edgeKey(from, to);
-      const std::uint64_t edge = (static_cast<std::uint64_t>(lo) << 31) | static_cast<std::uint64_t>(hi);
+      const std::uint64_t edge =
+          (static_cast<std::uint64_t>(lo) << 31) | static_cast<std::uint64_t>(hi);
       half[fill[lo]++] = {(edge << 1) | (from > to ? 1u : 0u), from, to, t, k};
     }
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
@@ -159,7 +160,8 @@ TemplateBuild assembleCells(std::vector<FanCell> cells, const glm::dvec3& refere
       for (const glm::dvec3& p : pointsOnSegment(a, b, corners)) ring.push_back(vertexAt(mesh, p));
     }
     if (cell.fanFromFirstCorner && ring.size() == cell.polygon.size()) {
-      for (std::size_t i = 1; i + 1 < ring.size(); ++i) mesh.addTriangle({ring[0], ring[i], ring[i + 1]}, cell);
+      for (std::size_t i = 1; i + 1 < ring.size(); ++i)
+        mesh.addTriangle({ring[0], ring[i], ring[i + 1]}, cell);
       continue;
     }
     const int centre = vertexAt(mesh, cell.centre);

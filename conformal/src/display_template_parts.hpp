@@ -30,7 +30,7 @@ struct FanCell {
   // Triangulate from polygon[0] instead of the centre (thin convex quads: no needles), unless
   // stitching inserted points on its sides.
   bool fanFromFirstCorner = false;
-  int wall = -1;           // index into config.walls, -1 for caps
+  int wall = -1;  // index into config.walls, -1 for caps
 };
 
 // A triangle mesh in physical space with per-triangle flags and a set of cut edges.

@@ -193,7 +193,7 @@ std::vector<int> boundaryCorners(const glm::dvec3& reference, const TemplateBuil
   return corners;
 }
 
-SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display) {
+SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display, double maxEdge) {
   const glm::dvec3 c = config.reference;
   const TemplateBuild& mesh = display.mesh;
   const std::vector<int>& loop = display.topology.boundaryLoops.front();
@@ -205,7 +205,7 @@ SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display) {
     radius += glm::length(a - c) / double(loop.size());
   }
   const auto [q, margin] = kernelCentre(normals, 4000);
-  // sin(1°): below it the cap's fan triangles degenerate.
+  // sin(1°): below it the cap's triangles next to some boundary edge degenerate.
   if (margin < 0.0175)
     throw Error(ErrorCode::InvalidInput,
                 config.name +
@@ -213,22 +213,64 @@ SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display) {
                     "boundary of the uncovered region (it is not star-shaped), so the "
                     "sphere cannot be cut open generally for this display; use a "
                     "hemisphere source (\"source\": {\"field\": \"hemisphere\"})");
+  // The rim: the display boundary at spacing <= maxEdge, so that the cap can be built at its
+  // final density; bisecting a coarse fan would leave obtuse slivers next to short boundary
+  // edges.
+  std::vector<glm::dvec3> rim;
+  std::vector<int> rimOfLoop;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const glm::dvec3 a = mesh.points[loop[i]], b = mesh.points[loop[(i + 1) % loop.size()]];
+    const int pieces =
+        std::max(1, static_cast<int>(std::ceil(glm::length(b - a) / maxEdge - 1e-9)));
+    rimOfLoop.push_back(static_cast<int>(rim.size()));
+    for (int j = 0; j < pieces; ++j) rim.push_back(glm::mix(a, b, double(j) / pieces));
+  }
+  // Polar grid around q: spokes from q to every rim point, rings at equal fractions of each
+  // spoke's angle (slerp, radius interpolated), ring spacing <= maxEdge.
+  double widest = 0;
+  for (const glm::dvec3& p : rim)
+    widest = std::max(widest, std::acos(std::clamp(glm::dot(q, glm::normalize(p - c)), -1.0, 1.0)));
+  const int rings = std::max(1, static_cast<int>(std::ceil(widest * radius / maxEdge)));
+  auto along = [&](const glm::dvec3& p, int ring) {
+    if (ring == rings) return p;
+    const double f = double(ring) / rings;
+    const glm::dvec3 d = glm::normalize(p - c);
+    const double angle = std::acos(std::clamp(glm::dot(q, d), -1.0, 1.0));
+    const glm::dvec3 dir =
+        angle < 1e-12 ? q
+                      : (std::sin((1 - f) * angle) * q + std::sin(f * angle) * d) / std::sin(angle);
+    return c + glm::mix(radius, glm::length(p - c), f) * dir;
+  };
   SourceCap cap;
   cap.kind = SourceKind::Cone;
-  FanCell cell;
-  for (auto it = loop.rbegin(); it != loop.rend(); ++it) cell.polygon.push_back(mesh.points[*it]);
-  cell.centre = c + radius * q;
-  cell.lit = false;
-  cell.covered = false;
-  cell.spherical = true;
-  cap.cells.push_back(cell);
-  cap.centres.push_back(cell.centre);
+  const glm::dvec3 centre = c + radius * q;
+  cap.centres.push_back(centre);
+  auto addCell = [&](std::vector<glm::dvec3> polygon) {
+    FanCell cell;
+    cell.polygon = std::move(polygon);
+    for (const glm::dvec3& p : cell.polygon) cell.centre += p / double(cell.polygon.size());
+    cell.lit = false;
+    cell.covered = false;
+    cell.spherical = true;
+    cell.fanFromFirstCorner = true;
+    cap.cells.push_back(std::move(cell));
+  };
+  // The rim runs counter-clockwise around the display, so around the cap it runs clockwise.
+  for (std::size_t i = 0; i < rim.size(); ++i) {
+    const glm::dvec3& a = rim[i];
+    const glm::dvec3& b = rim[(i + 1) % rim.size()];
+    addCell({centre, along(b, 1), along(a, 1)});
+    for (int r = 1; r < rings; ++r)
+      addCell({along(a, r), along(b, r), along(b, r + 1), along(a, r + 1)});
+  }
   std::vector<int> leaves = boundaryCorners(c, mesh, loop, true);
   if (leaves.size() < 3) leaves = boundaryCorners(c, mesh, loop, false);
   if (leaves.size() < 3) leaves = loop;
   for (int v : leaves) {
-    cap.leaves.push_back(mesh.points[v]);
-    cap.cutEdges.push_back({cell.centre, mesh.points[v]});
+    const glm::dvec3 leaf = mesh.points[v];
+    cap.leaves.push_back(leaf);
+    cap.cutEdges.push_back({centre, along(leaf, 1)});
+    for (int r = 1; r < rings; ++r) cap.cutEdges.push_back({along(leaf, r), along(leaf, r + 1)});
   }
   return cap;
 }

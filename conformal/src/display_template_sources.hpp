@@ -23,9 +23,9 @@ struct SourceCap {
 // is not a box with every face fully covered or empty (or is closed).
 std::optional<SourceCap> boxCap(const DisplayConfig& config, const CoarseDisplay& display);
 
-// One fan over the whole uncovered region from the direction that sees its boundary best;
-// throws Error(InvalidInput) when no direction sees all of it.
-SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display);
+// A polar grid over the whole uncovered region around the direction that sees its boundary
+// best, at its final density; throws Error(InvalidInput) when no direction sees all of it.
+SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display, double maxEdge);
 
 // Boundary-loop vertices where the boundary turns on the sphere (reflexOnly: where the display's
 // interior angle exceeds pi, i.e. the uncovered region is convex).

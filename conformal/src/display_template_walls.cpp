@@ -83,7 +83,8 @@ double segmentDistance(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dv
   double best = glm::length(p0 + s * d1 - (q0 + t * d2));
   // Parallel segments: the endpoint projections cover the remaining cases.
   if (!(denom > 1e-15 * a * e))
-    for (const auto& [x, y0, d] : {std::tuple{p0, q0, d2}, {p1, q0, d2}, {q0, p0, d1}, {q1, p0, d1}}) {
+    for (const auto& [x, y0, d] :
+         {std::tuple{p0, q0, d2}, {p1, q0, d2}, {q0, p0, d1}, {q1, p0, d1}}) {
       const double u = std::clamp(glm::dot(x - y0, d) / glm::dot(d, d), 0.0, 1.0);
       best = std::min(best, glm::length(x - (y0 + u * d)));
     }
@@ -154,7 +155,8 @@ std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
           config.reference - glm::dot(config.reference - w.lowerLeft, w.normal()) * w.normal();
       const double footS = glm::dot(foot - w.lowerLeft, w.right());
       const double footT = glm::dot(foot - w.lowerLeft, w.up());
-      if (footS > 0.25 * W && footS < 0.75 * W && footT > 0.25 * H && footT < 0.75 * H) lit.centre = foot;
+      if (footS > 0.25 * W && footS < 0.75 * W && footT > 0.25 * H && footT < 0.75 * H)
+        lit.centre = foot;
       cells.push_back(lit);
       continue;
     }
@@ -164,20 +166,27 @@ std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
     // the flow cannot flatten), and the wall's outline has no vertices near its corners.
     const int n = std::max(1, static_cast<int>(std::ceil(W / maxEdge - 1e-9)));
     const int m = std::max(1, static_cast<int>(std::ceil(H / maxEdge - 1e-9)));
-    auto litPoint = [&](int i, int j) { return at(s0 + (s1 - s0) * i / n, t0 + (t1 - t0) * j / m); };
+    auto litPoint = [&](int i, int j) {
+      return at(s0 + (s1 - s0) * i / n, t0 + (t1 - t0) * j / m);
+    };
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < m; ++j)
-        quad({litPoint(i, j), litPoint(i + 1, j), litPoint(i + 1, j + 1), litPoint(i, j + 1)}, true);
+        quad({litPoint(i, j), litPoint(i + 1, j), litPoint(i + 1, j + 1), litPoint(i, j + 1)},
+             true);
     auto outer = [&](double fs, double ft) { return at(fs * W, ft * H); };
     for (int i = 0; i < n; ++i) {
       const double a = double(i) / n, z = double(i + 1) / n;
-      if (b.bottom >= kTemplateTolerance) quad({outer(a, 0), outer(z, 0), litPoint(i + 1, 0), litPoint(i, 0)}, false);
-      if (b.top >= kTemplateTolerance) quad({outer(z, 1), outer(a, 1), litPoint(i, m), litPoint(i + 1, m)}, false);
+      if (b.bottom >= kTemplateTolerance)
+        quad({outer(a, 0), outer(z, 0), litPoint(i + 1, 0), litPoint(i, 0)}, false);
+      if (b.top >= kTemplateTolerance)
+        quad({outer(z, 1), outer(a, 1), litPoint(i, m), litPoint(i + 1, m)}, false);
     }
     for (int j = 0; j < m; ++j) {
       const double a = double(j) / m, z = double(j + 1) / m;
-      if (b.right >= kTemplateTolerance) quad({outer(1, a), outer(1, z), litPoint(n, j + 1), litPoint(n, j)}, false);
-      if (b.left >= kTemplateTolerance) quad({outer(0, z), outer(0, a), litPoint(0, j), litPoint(0, j + 1)}, false);
+      if (b.right >= kTemplateTolerance)
+        quad({outer(1, a), outer(1, z), litPoint(n, j + 1), litPoint(n, j)}, false);
+      if (b.left >= kTemplateTolerance)
+        quad({outer(0, z), outer(0, a), litPoint(0, j), litPoint(0, j + 1)}, false);
     }
   }
   return cells;

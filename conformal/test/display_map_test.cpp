@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
-#include <algorithm>
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/disk_map.hpp"
@@ -181,7 +181,8 @@ TEST(DisplayMap, DisplayCoveringExactlyTheFrontHemisphereIsTheIdentity) {
 TEST(DisplayMap, MovedReferenceOtherCavesAndTheMonitorWallGiveValidMaps) {
   DisplayConfig moved = shipped("cave5");
   moved.reference = {0.5, -0.4, 0.3};
-  for (const DisplayConfig& config : {moved, shipped("cave4"), shipped("cave3"), shipped("md230x6")}) {
+  for (const DisplayConfig& config :
+       {moved, shipped("cave4"), shipped("cave3"), shipped("md230x6")}) {
     DisplayMapOptions options;
     options.edgeLength = config.name == "md230x6" ? 0.1 : 0.4;
     const DisplayMap map = computeDisplayMap(config, options);

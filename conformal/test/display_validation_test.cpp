@@ -43,12 +43,14 @@ Wall renamed(Wall w, const std::string& name) {
 TEST(DisplayValidation, SeparateWallsAreNotConnected) {
   DisplayConfig config = shipped("cave6");
   std::erase_if(config.walls, [](const Wall& w) { return w.name != "front" && w.name != "back"; });
-  expectMentions(templateError(config), {"not connected", "'front'", "'back'", "not a topological disk"});
+  expectMentions(templateError(config),
+                 {"not connected", "'front'", "'back'", "not a topological disk"});
 }
 
 TEST(DisplayValidation, RingOfWallsAroundTheViewerIsAnAnnulus) {
   DisplayConfig config = shipped("cave6");
-  std::erase_if(config.walls, [](const Wall& w) { return w.name == "floor" || w.name == "ceiling"; });
+  std::erase_if(config.walls,
+                [](const Wall& w) { return w.name == "floor" || w.name == "ceiling"; });
   expectMentions(templateError(config), {"2 boundary loops", "not a topological disk"});
 }
 
@@ -61,18 +63,22 @@ TEST(DisplayValidation, WallsMeetingOnlyAtACornerPinch) {
 
 TEST(DisplayValidation, WallHidingAnotherIsRejected) {
   const DisplayConfig config = makeDisplay(
-      "hidden", {renamed(front(-1, 1, -1, 1, -1), "near"), renamed(front(-1.5, 1.5, -1.5, 1.5, -2), "far")},
+      "hidden",
+      {renamed(front(-1, 1, -1, 1, -1), "near"), renamed(front(-1.5, 1.5, -1.5, 1.5, -2), "far")},
       SourceField::Hemisphere);
-  expectMentions(templateError(config), {"'near'", "'far'", "overlap as seen from the reference point"});
+  expectMentions(templateError(config),
+                 {"'near'", "'far'", "overlap as seen from the reference point"});
 }
 
 TEST(DisplayValidation, WallsTouchingInViewButNotInSpaceAreRejected) {
   // The near wall's right edge and the far wall's left edge lie in the same plane x = 0 through
   // the reference, one metre apart in depth.
   const DisplayConfig config = makeDisplay(
-      "depth-gap", {renamed(front(-1, 0, -1, 1, -1), "near"), renamed(front(0, 2, -2, 2, -2), "far")},
+      "depth-gap",
+      {renamed(front(-1, 0, -1, 1, -1), "near"), renamed(front(0, 2, -2, 2, -2), "far")},
       SourceField::Hemisphere);
-  expectMentions(templateError(config), {"'near'", "'far'", "touch as seen from the reference point", "not in space"});
+  expectMentions(templateError(config),
+                 {"'near'", "'far'", "touch as seen from the reference point", "not in space"});
 }
 
 TEST(DisplayValidation, SphereSourceNeedsAStarShapedUncoveredRegion) {
@@ -114,6 +120,8 @@ TEST(DisplayValidation, TiledWallWithASphereSourceUsesTheGenericConeCap) {
   const DisplayMap map = computeDisplayMap(config, options);
   for (int k = 0; k < 3; ++k) {
     EXPECT_LT(std::abs(std::abs(map.source.disk[map.sourceMarkers[k]]) - 1), 1e-9);
-    EXPECT_LT(angleBetween(map.source.sphere[map.sourceMarkers[k]], map.target.sphere[map.targetMarkers[k]]), 1e-12);
+    EXPECT_LT(angleBetween(map.source.sphere[map.sourceMarkers[k]],
+                           map.target.sphere[map.targetMarkers[k]]),
+              1e-12);
   }
 }
