@@ -151,12 +151,10 @@ TemplateMesh refinedTarget(const DisplayConfig& config, const CoarseDisplay& dis
     refineTemplate(mesh, config.reference, h);
     return toTemplateMesh(mesh, true, "target");
   }
-  const StarCut star = closedDisplayStar(config, display);
+  const StarCut star = closedDisplayStar(config, display, h);
+  for (const auto& [a, b] : star.edges) addCutEdge(mesh, a, b);
   std::vector<int> coarseLeaves;
-  for (const glm::dvec3& leaf : star.leaves) {
-    addCutEdge(mesh, star.centre, leaf);
-    coarseLeaves.push_back(findVertex(mesh, leaf));
-  }
+  for (const glm::dvec3& leaf : star.leaves) coarseLeaves.push_back(findVertex(mesh, leaf));
   refineTemplate(mesh, config.reference, h);
   std::vector<int> origin;
   const TemplateBuild opened = cutOpen(mesh, &origin);

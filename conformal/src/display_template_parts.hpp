@@ -108,6 +108,16 @@ std::pair<glm::dvec3, double> kernelCentre(const std::vector<glm::dvec3>& normal
 // Great-circle angle between the directions of a and b from the reference point.
 double directionAngle(const glm::dvec3& reference, const glm::dvec3& a, const glm::dvec3& b);
 
+bool hasBezel(const Wall& w);
+
+// The grid over the lit area of a wall with bezels: n x m quads, corner points (i, j).
+struct LitGrid {
+  Wall wall;
+  int n = 2, m = 2;
+  glm::dvec3 point(int i, int j) const;
+};
+LitGrid litGrid(const Wall& w, double maxEdge);
+
 // The cells of every wall: without bezels one fan over the wall; with bezels a grid of quads
 // (sides up to maxEdge) over the lit area and the four mitred bezel strips around it.
 std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <tuple>
 
 #include "confvis/base/error.hpp"
 
@@ -275,17 +276,39 @@ SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display, dou
   return cap;
 }
 
-StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display) {
+StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display,
+                          double maxEdge) {
   // The ceiling-most wall: its normal (towards the viewer) points most downwards.
   int best = 0;
   for (int w = 1; w < static_cast<int>(config.walls.size()); ++w)
     if (config.walls[w].normal().y < config.walls[best].normal().y) best = w;
-  const Wall lit = config.walls[best].litRectangle();
+  const Wall& wall = config.walls[best];
   StarCut star;
-  // The fan centre of that wall's lit cell (see wallCells).
-  for (const FanCell& cell : display.cells)
-    if (cell.wall == best && cell.lit) star.centre = cell.centre;
-  star.leaves = {lit.lowerLeft, lit.lowerRight, lit.upperRight(), lit.upperLeft};
+  if (!hasBezel(wall)) {
+    for (const FanCell& cell : display.cells)  // the wall's single fan (see wallCells)
+      if (cell.wall == best) star.centre = cell.centre;
+    star.leaves = {wall.lowerLeft, wall.lowerRight, wall.upperRight(), wall.upperLeft};
+    for (const glm::dvec3& leaf : star.leaves) star.edges.push_back({star.centre, leaf});
+    return star;
+  }
+  // A cross along the lit grid from the grid vertex nearest the reference's foot.
+  const LitGrid grid = litGrid(wall, maxEdge);
+  const Wall lit = wall.litRectangle();
+  const glm::dvec3 d = config.reference - lit.lowerLeft;
+  const int i0 = std::clamp(
+      static_cast<int>(std::lround(glm::dot(d, lit.right()) / lit.widthMetres() * grid.n)), 1,
+      grid.n - 1);
+  const int j0 =
+      std::clamp(static_cast<int>(std::lround(glm::dot(d, lit.up()) / lit.heightMetres() * grid.m)),
+                 1, grid.m - 1);
+  star.centre = grid.point(i0, j0);
+  for (const auto& [di, dj, steps] :
+       {std::tuple{-1, 0, i0}, {1, 0, grid.n - i0}, {0, -1, j0}, {0, 1, grid.m - j0}}) {
+    for (int k = 0; k < steps; ++k)
+      star.edges.push_back(
+          {grid.point(i0 + k * di, j0 + k * dj), grid.point(i0 + (k + 1) * di, j0 + (k + 1) * dj)});
+    star.leaves.push_back(grid.point(i0 + steps * di, j0 + steps * dj));
+  }
   return star;
 }
 

@@ -32,12 +32,15 @@ SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display, dou
 std::vector<int> boundaryCorners(const glm::dvec3& reference, const TemplateBuild& mesh,
                                  const std::vector<int>& loop, bool reflexOnly);
 
-// The cut that opens a closed display: a star in the ceiling-most wall's lit area.
+// The cut that opens a closed display: a star in the ceiling-most wall, from its fan centre to
+// its corners, or (with bezels) a cross along the lit grid lines to the lit area's sides.
 struct StarCut {
   glm::dvec3 centre{0.0};
   std::vector<glm::dvec3> leaves;
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
 };
-StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display);
+StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display,
+                          double maxEdge);
 
 // Half of a cube of half-size `radius` around the reference about the hemisphere axis, with rim
 // points at the azimuths of `markerDirections`.

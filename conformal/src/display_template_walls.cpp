@@ -126,6 +126,24 @@ void checkWallPairs(const DisplayConfig& config) {
 
 }  // namespace
 
+bool hasBezel(const Wall& w) {
+  const Bezel& b = w.bezel;
+  return std::max({b.left, b.right, b.bottom, b.top}) >= kTemplateTolerance;
+}
+
+glm::dvec3 LitGrid::point(int i, int j) const {
+  const Bezel& b = wall.bezel;
+  const double s = b.left + (wall.widthMetres() - b.left - b.right) * i / n;
+  const double t = b.bottom + (wall.heightMetres() - b.bottom - b.top) * j / m;
+  return wall.lowerLeft + s * wall.right() + t * wall.up();
+}
+
+LitGrid litGrid(const Wall& w, double maxEdge) {
+  // At least 2 x 2, so that a closed display's cut star has a grid vertex inside the lit area.
+  return {w, std::max(2, static_cast<int>(std::ceil(w.widthMetres() / maxEdge - 1e-9))),
+          std::max(2, static_cast<int>(std::ceil(w.heightMetres() / maxEdge - 1e-9)))};
+}
+
 std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
   std::vector<FanCell> cells;
   for (int index = 0; index < static_cast<int>(config.walls.size()); ++index) {
@@ -133,7 +151,6 @@ std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
     const double W = w.widthMetres(), H = w.heightMetres();
     const Bezel& b = w.bezel;
     auto at = [&](double s, double t) { return w.lowerLeft + s * w.right() + t * w.up(); };
-    const double s0 = b.left, s1 = W - b.right, t0 = b.bottom, t1 = H - b.top;
     auto quad = [&](const std::array<glm::dvec3, 4>& corners, bool lit) {
       FanCell cell;
       cell.lit = lit;
@@ -143,8 +160,7 @@ std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
       for (const glm::dvec3& p : corners) cell.centre += p / 4.0;
       cells.push_back(std::move(cell));
     };
-    const bool hasBezel = std::max({b.left, b.right, b.bottom, b.top}) >= kTemplateTolerance;
-    if (!hasBezel) {
+    if (!hasBezel(w)) {
       // One fan from the foot of the reference point (the dissertation's "green sphere") where
       // that keeps the fan well shaped (a quarter of the size from each side), else the centre.
       FanCell lit;
@@ -164,29 +180,37 @@ std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
     // mitred bezel strips around it cut at the same grid lines. Thin strips then consist of
     // right triangles, never of needles from a fan centre (whose bisection leaves obtuse slivers
     // the flow cannot flatten), and the wall's outline has no vertices near its corners.
-    const int n = std::max(1, static_cast<int>(std::ceil(W / maxEdge - 1e-9)));
-    const int m = std::max(1, static_cast<int>(std::ceil(H / maxEdge - 1e-9)));
-    auto litPoint = [&](int i, int j) {
-      return at(s0 + (s1 - s0) * i / n, t0 + (t1 - t0) * j / m);
-    };
+    const LitGrid grid = litGrid(w, maxEdge);
+    const int n = grid.n, m = grid.m;
+    auto litPoint = [&](int i, int j) { return grid.point(i, j); };
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < m; ++j)
         quad({litPoint(i, j), litPoint(i + 1, j), litPoint(i + 1, j + 1), litPoint(i, j + 1)},
              true);
     auto outer = [&](double fs, double ft) { return at(fs * W, ft * H); };
+    // A strip piece from outer edge o0 -> o1 to the lit border i1 <- i0, cut further into quads
+    // at most 4 bezel widths long: right triangles with angles above 14 degrees, which the flow
+    // flattens without Delaunay flips (flips could fold the thin triangles in the result). The
+    // lit grid's border quads pick up the extra points and fan from their centres.
+    auto strip = [&](glm::dvec3 o0, glm::dvec3 o1, glm::dvec3 i1, glm::dvec3 i0, double width) {
+      if (width < kTemplateTolerance) return;
+      const double longest = std::max(glm::length(o1 - o0), glm::length(i1 - i0));
+      const int pieces = std::max(1, static_cast<int>(std::ceil(longest / (4 * width) - 1e-9)));
+      for (int k = 0; k < pieces; ++k) {
+        const double a = double(k) / pieces, z = double(k + 1) / pieces;
+        quad({glm::mix(o0, o1, a), glm::mix(o0, o1, z), glm::mix(i0, i1, z), glm::mix(i0, i1, a)},
+             false);
+      }
+    };
     for (int i = 0; i < n; ++i) {
       const double a = double(i) / n, z = double(i + 1) / n;
-      if (b.bottom >= kTemplateTolerance)
-        quad({outer(a, 0), outer(z, 0), litPoint(i + 1, 0), litPoint(i, 0)}, false);
-      if (b.top >= kTemplateTolerance)
-        quad({outer(z, 1), outer(a, 1), litPoint(i, m), litPoint(i + 1, m)}, false);
+      strip(outer(a, 0), outer(z, 0), litPoint(i + 1, 0), litPoint(i, 0), b.bottom);
+      strip(outer(z, 1), outer(a, 1), litPoint(i, m), litPoint(i + 1, m), b.top);
     }
     for (int j = 0; j < m; ++j) {
       const double a = double(j) / m, z = double(j + 1) / m;
-      if (b.right >= kTemplateTolerance)
-        quad({outer(1, a), outer(1, z), litPoint(n, j + 1), litPoint(n, j)}, false);
-      if (b.left >= kTemplateTolerance)
-        quad({outer(0, z), outer(0, a), litPoint(0, j), litPoint(0, j + 1)}, false);
+      strip(outer(1, a), outer(1, z), litPoint(n, j + 1), litPoint(n, j), b.right);
+      strip(outer(0, z), outer(0, a), litPoint(0, j), litPoint(0, j + 1), b.left);
     }
   }
   return cells;

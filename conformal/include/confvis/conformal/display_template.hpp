@@ -8,9 +8,10 @@
 // bezel shows nothing rather than squeezing the picture around it). A wall without bezels is one
 // fan from the projection of the reference point c onto it (the dissertation's "green sphere")
 // where that falls well inside the wall, else from its centre. A wall with bezels is a grid of
-// quads (sides up to the edge length) over its lit area plus four mitred bezel strips cut at the
-// same grid lines, every quad split by a diagonal: thin strips become right triangles, never
-// needles, and no triangle crosses a bezel border. Walls are stitched where they touch (shared
+// quads (sides up to the edge length) over its lit area plus four mitred bezel strips cut into
+// quads at most four bezel widths long, every quad split by a diagonal: no triangle crosses a
+// bezel border, and thin strips become right triangles with angles above 14 degrees, which the
+// flow flattens without Delaunay flips (with flips, thin triangles can fold in the result). Walls are stitched where they touch (shared
 // edges and T-junctions get common vertices); refinement then splits edges at mid-points.
 //
 // Source S, by source field and display:
@@ -34,7 +35,9 @@
 //   final density on a sphere around c. The cut runs along the spokes to the boundary corners
 //   where the cap is convex (else to all boundary corners). If no direction sees the whole
 //   boundary (the uncovered region is not star-shaped) the display is rejected: use a
-//   hemisphere source.
+//   hemisphere source. Known limit: with bezels on the display outline, the outline's short
+//   bezel pieces give this cap needle-shaped cells and the flow may fail (Error Unreachable);
+//   box caps and hemisphere sources handle bezels.
 // The cut leaves on the display boundary are the markers: each appears once on both templates'
 // boundaries, and three of them spread along the boundary are sent to 1, i, -1.
 #include <array>
