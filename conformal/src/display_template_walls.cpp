@@ -229,6 +229,14 @@ std::string wallsAround(const DisplayConfig& config, const TemplateBuild& mesh, 
 CoarseDisplay assembleDisplay(const DisplayConfig& config, double maxEdge) {
   if (config.walls.empty())
     throw Error(ErrorCode::InvalidInput, config.name + ": display has no walls");
+  // Loading a config checks this too, but callers may move the reference afterwards (a tracked
+  // head, `--reference`).
+  for (const Wall& w : config.walls)
+    if (glm::dot(w.normal(), config.reference - w.lowerLeft) <= kTemplateTolerance)
+      throw Error(ErrorCode::InvalidInput,
+                  config.name + ": the reference point " + pointText(config.reference) +
+                      " is not in front of wall " + quoted(w.name) +
+                      " (it must lie inside the display, on the lit side of every wall)");
   checkWallPairs(config);
   CoarseDisplay display;
   display.cells = wallCells(config, maxEdge);

@@ -91,6 +91,13 @@ TEST(DisplayValidation, SphereSourceNeedsAStarShapedUncoveredRegion) {
   expectMentions(templateError(config), {"narrowing", "not star-shaped", "hemisphere source"});
 }
 
+TEST(DisplayValidation, ReferenceMovedBehindAWallIsRejected) {
+  DisplayConfig config = shipped("cave5");
+  config.reference = {0, 0, 2};  // behind the back wall at z = 1.5
+  expectMentions(templateError(config),
+                 {"reference point (0, 0, 2)", "not in front of wall 'back'"});
+}
+
 TEST(DisplayValidation, HemisphereAxisPointingAwayFromTheDisplayIsRejected) {
   DisplayConfig config = shipped("flat-wall");
   config.hemisphereAxis = {0, 0, 1};
