@@ -2,8 +2,11 @@
 // around the reference, the two Riemann maps (in parallel) and the Möbius alignment.
 #include "confvis/conformal/display_map.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <future>
+#include <limits>
+#include <queue>
 
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
@@ -44,6 +47,49 @@ conformal::TriMesh toTriMesh(const SphereDiskMesh& mesh) {
   return tri;
 }
 
+// The face the Riemann map removes (dissertation 8.3.3: "at the center of the mesh, or farthest
+// from the original boundary"), among faces of at least a quarter of the median area: a tiny
+// bezel-corner face at the centre of a tiled wall would make the annulus extremely thin inside
+// and the flow crawl.
+int chooseRemovedFace(const SphereDiskMesh& mesh) {
+  const int n = static_cast<int>(mesh.sphere.size());
+  std::vector<std::vector<std::pair<int, double>>> neighbours(n);
+  std::vector<double> area(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      const double length = angleBetween(mesh.sphere[a], mesh.sphere[b]);
+      neighbours[a].emplace_back(b, length);
+      neighbours[b].emplace_back(a, length);
+    }
+    area[f] =
+        norm(cross(mesh.sphere[t[1]] - mesh.sphere[t[0]], mesh.sphere[t[2]] - mesh.sphere[t[0]]));
+  }
+  std::vector<double> distance(n, std::numeric_limits<double>::infinity());
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (int v : mesh.boundary) queue.push({distance[v] = 0, v});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distance[v]) continue;
+    for (const auto& [w, length] : neighbours[v])
+      if (d + length < distance[w]) queue.push({distance[w] = d + length, w});
+  }
+  std::vector<double> sorted = area;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double minArea = 0.25 * sorted[sorted.size() / 2];
+  int best = -1;
+  double bestScore = 0;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    const double score = std::min({distance[t[0]], distance[t[1]], distance[t[2]]});
+    if (area[f] >= minArea && score > bestScore) bestScore = score, best = static_cast<int>(f);
+  }
+  return best;  // -1: computeDiskMap picks (and reports a mesh too coarse)
+}
+
 struct FlowResult {
   conformal::DiskMap map;
   double seconds = 0;
@@ -56,6 +102,10 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
   // iterations where Yamabe took 7 on the cut cube sources (tools/bench/display_map_bench.cpp).
   conformal::DiskMapOptions options;
   options.scheme = conformal::Scheme::InversiveDistance;
+  options.removedFace = chooseRemovedFace(mesh);
+  // Newton converges in under 10 iterations here; one that needs more is stuck on a mesh only
+  // Delaunay flips can flatten (thin bezel strips), so give up early and retry with flips.
+  options.maxIterations = 30;
   result.map = conformal::computeDiskMap(toTriMesh(mesh), options);
   result.seconds = secondsSince(start);
   progress.advance();

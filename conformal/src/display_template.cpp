@@ -151,12 +151,10 @@ TemplateMesh refinedTarget(const DisplayConfig& config, const CoarseDisplay& dis
     refineTemplate(mesh, config.reference, h);
     return toTemplateMesh(mesh, true, "target");
   }
-  const StarCut star = closedDisplayStar(config, display);
+  const StarCut star = closedDisplayStar(config, display, h);
+  for (const auto& [a, b] : star.edges) addCutEdge(mesh, a, b);
   std::vector<int> coarseLeaves;
-  for (const glm::dvec3& leaf : star.leaves) {
-    addCutEdge(mesh, star.centre, leaf);
-    coarseLeaves.push_back(findVertex(mesh, leaf));
-  }
+  for (const glm::dvec3& leaf : star.leaves) coarseLeaves.push_back(findVertex(mesh, leaf));
   refineTemplate(mesh, config.reference, h);
   std::vector<int> origin;
   const TemplateBuild opened = cutOpen(mesh, &origin);
@@ -225,9 +223,10 @@ DisplayTemplates closedTemplates(const DisplayConfig& config, const CoarseDispla
   return out;
 }
 
-DisplayTemplates closureTemplates(const DisplayConfig& config, const SourceCap& cap, double h) {
+DisplayTemplates closureTemplates(const DisplayConfig& config, const CoarseDisplay& display,
+                                  const SourceCap& cap, double h) {
   const glm::dvec3 c = config.reference;
-  std::vector<FanCell> cells = wallCells(config);
+  std::vector<FanCell> cells = display.cells;
   cells.insert(cells.end(), cap.cells.begin(), cap.cells.end());
   TemplateBuild closed = assembleCells(cells, c, cap.extraPoints);
   const TriangleTopology topo = analyzeTriangles(closed);
@@ -265,13 +264,13 @@ DisplayTemplates closureTemplates(const DisplayConfig& config, const SourceCap& 
 
 DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength) {
   const double h = resolveEdgeLength(config, edgeLength);
-  const CoarseDisplay display = assembleDisplay(config);
+  const CoarseDisplay display = assembleDisplay(config, h);
   // The source of a sphere field is about as large as the display again (more for small ones).
   guardSize(config, wallArea(config) * (config.source == SourceField::Hemisphere ? 2 : 4), h);
   if (config.source == SourceField::Hemisphere) return hemisphereTemplates(config, display, h);
   if (display.closed()) return closedTemplates(config, display, h);
-  if (const auto cap = boxCap(config, display)) return closureTemplates(config, *cap, h);
-  return closureTemplates(config, coneCap(config, display), h);
+  if (const auto cap = boxCap(config, display)) return closureTemplates(config, display, *cap, h);
+  return closureTemplates(config, display, coneCap(config, display, h), h);
 }
 
 }  // namespace confvis

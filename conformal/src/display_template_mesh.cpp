@@ -1,9 +1,10 @@
 // Template mesh plumbing: stitching fan cells, sub-meshes, cutting along a tree, topology.
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <numeric>
+#include <unordered_map>
 
 #include "confvis/base/error.hpp"
 #include "display_template_parts.hpp"
@@ -21,6 +22,39 @@ struct UnionFind {
   void unite(int a, int b) { parent[find(a)] = find(b); }
 };
 
+// Points bucketed in a uniform grid, for neighbourhood queries in linear time.
+class PointGrid {
+ public:
+  explicit PointGrid(double cellSize) : cell_(cellSize) {}
+  void add(const glm::dvec3& p, int id) { buckets_[key(cellOf(p))].push_back({p, id}); }
+  // Calls f(point, id) for every point in the cells overlapping the box [lo, hi].
+  template <class F>
+  void forEachNear(const glm::dvec3& lo, const glm::dvec3& hi, F&& f) const {
+    const auto a = cellOf(lo), b = cellOf(hi);
+    for (long long x = a[0]; x <= b[0]; ++x)
+      for (long long y = a[1]; y <= b[1]; ++y)
+        for (long long z = a[2]; z <= b[2]; ++z) {
+          const auto it = buckets_.find(key({x, y, z}));
+          if (it == buckets_.end()) continue;
+          for (const auto& [p, id] : it->second) f(p, id);
+        }
+  }
+
+ private:
+  std::array<long long, 3> cellOf(const glm::dvec3& p) const {
+    return {static_cast<long long>(std::floor(p.x / cell_)),
+            static_cast<long long>(std::floor(p.y / cell_)),
+            static_cast<long long>(std::floor(p.z / cell_))};
+  }
+  static std::uint64_t key(const std::array<long long, 3>& c) {
+    return static_cast<std::uint64_t>(c[0]) * 0x9E3779B97F4A7C15ull ^
+           static_cast<std::uint64_t>(c[1]) * 0xC2B2AE3D27D4EB4Full ^
+           static_cast<std::uint64_t>(c[2]) * 0x165667B19E3779F9ull;
+  }
+  double cell_;
+  std::unordered_map<std::uint64_t, std::vector<std::pair<glm::dvec3, int>>> buckets_;
+};
+
 // Newell normal of a polygon (not normalised).
 glm::dvec3 polygonNormal(const std::vector<glm::dvec3>& polygon) {
   glm::dvec3 n(0.0);
@@ -31,17 +65,18 @@ glm::dvec3 polygonNormal(const std::vector<glm::dvec3>& polygon) {
 
 // Corners of `candidates` strictly inside segment a-b, in order from a.
 std::vector<glm::dvec3> pointsOnSegment(const glm::dvec3& a, const glm::dvec3& b,
-                                        const std::vector<glm::dvec3>& candidates) {
+                                        const PointGrid& candidates) {
   const glm::dvec3 d = b - a;
   const double length = glm::length(d);
   const glm::dvec3 u = d / length;
   std::vector<std::pair<double, glm::dvec3>> on;
-  for (const glm::dvec3& p : candidates) {
+  const glm::dvec3 pad(kTemplateTolerance);
+  candidates.forEachNear(glm::min(a, b) - pad, glm::max(a, b) + pad, [&](const glm::dvec3& p, int) {
     const double t = glm::dot(p - a, u);
-    if (t <= kTemplateTolerance || t >= length - kTemplateTolerance) continue;
-    if (glm::length(p - a - t * u) > kTemplateTolerance) continue;
+    if (t <= kTemplateTolerance || t >= length - kTemplateTolerance) return;
+    if (glm::length(p - a - t * u) > kTemplateTolerance) return;
     on.emplace_back(t, p);
-  }
+  });
   std::sort(on.begin(), on.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<glm::dvec3> result;
   for (std::size_t i = 0; i < on.size(); ++i)
@@ -50,12 +85,28 @@ std::vector<glm::dvec3> pointsOnSegment(const glm::dvec3& a, const glm::dvec3& b
   return result;
 }
 
-int vertexAt(TemplateBuild& mesh, const glm::dvec3& p) {
-  const int found = findVertex(mesh, p);
-  if (found >= 0) return found;
-  mesh.points.push_back(p);
-  return mesh.vertexCount() - 1;
-}
+// Merges points closer than kTemplateTolerance into one template vertex.
+class VertexIndex {
+ public:
+  explicit VertexIndex(TemplateBuild& mesh) : mesh_(mesh), grid_(1e-4) {
+    for (int i = 0; i < mesh.vertexCount(); ++i) grid_.add(mesh.points[i], i);
+  }
+  int at(const glm::dvec3& p) {
+    int found = -1;
+    const glm::dvec3 pad(kTemplateTolerance);
+    grid_.forEachNear(p - pad, p + pad, [&](const glm::dvec3& q, int id) {
+      if (found < 0 && glm::length(q - p) <= kTemplateTolerance) found = id;
+    });
+    if (found >= 0) return found;
+    mesh_.points.push_back(p);
+    grid_.add(p, mesh_.vertexCount() - 1);
+    return mesh_.vertexCount() - 1;
+  }
+
+ private:
+  TemplateBuild& mesh_;
+  PointGrid grid_;
+};
 
 // Directed edges of every triangle as (from, to, triangle, corner of `from`), sorted by the
 // undirected key, so each interior edge's two sides are neighbours.
@@ -78,7 +129,8 @@ std::vector<HalfEdge> sortedHalfEdges(const TemplateBuild& mesh) {
     for (int k = 0; k < 3; ++k) {
       const int from = mesh.triangles[t][k], to = mesh.triangles[t][(k + 1) % 3];
       const auto [lo, hi] = edgeKey(from, to);
-      const std::uint64_t edge = (static_cast<std::uint64_t>(lo) << 31) | static_cast<std::uint64_t>(hi);
+      const std::uint64_t edge =
+          (static_cast<std::uint64_t>(lo) << 31) | static_cast<std::uint64_t>(hi);
       half[fill[lo]++] = {(edge << 1) | (from > to ? 1u : 0u), from, to, t, k};
     }
   for (std::size_t v = 0; v + 1 < start.size(); ++v)
@@ -140,10 +192,22 @@ int findVertex(const TemplateBuild& mesh, const glm::dvec3& p) {
 
 TemplateBuild assembleCells(std::vector<FanCell> cells, const glm::dvec3& reference,
                             const std::vector<glm::dvec3>& extraPoints) {
-  std::vector<glm::dvec3> corners = extraPoints;
+  // Breakpoint candidates in a grid of about the typical cell side.
+  std::vector<double> sides;
   for (const FanCell& cell : cells)
-    corners.insert(corners.end(), cell.polygon.begin(), cell.polygon.end());
+    for (std::size_t i = 0; i < cell.polygon.size(); ++i)
+      sides.push_back(glm::length(cell.polygon[(i + 1) % cell.polygon.size()] - cell.polygon[i]));
+  double cellSize = 1.0;
+  if (!sides.empty()) {
+    std::nth_element(sides.begin(), sides.begin() + sides.size() / 2, sides.end());
+    cellSize = std::max(sides[sides.size() / 2], 1e-3);
+  }
+  PointGrid corners(cellSize);
+  for (const glm::dvec3& p : extraPoints) corners.add(p, 0);
+  for (const FanCell& cell : cells)
+    for (const glm::dvec3& p : cell.polygon) corners.add(p, 0);
   TemplateBuild mesh;
+  VertexIndex vertices(mesh);
   for (FanCell& cell : cells) {
     if (!cell.spherical) {
       glm::dvec3 centroid(0.0);
@@ -155,10 +219,15 @@ TemplateBuild assembleCells(std::vector<FanCell> cells, const glm::dvec3& refere
     for (std::size_t i = 0; i < cell.polygon.size(); ++i) {
       const glm::dvec3& a = cell.polygon[i];
       const glm::dvec3& b = cell.polygon[(i + 1) % cell.polygon.size()];
-      ring.push_back(vertexAt(mesh, a));
-      for (const glm::dvec3& p : pointsOnSegment(a, b, corners)) ring.push_back(vertexAt(mesh, p));
+      ring.push_back(vertices.at(a));
+      for (const glm::dvec3& p : pointsOnSegment(a, b, corners)) ring.push_back(vertices.at(p));
     }
-    const int centre = vertexAt(mesh, cell.centre);
+    if (cell.fanFromFirstCorner && ring.size() == cell.polygon.size()) {
+      for (std::size_t i = 1; i + 1 < ring.size(); ++i)
+        mesh.addTriangle({ring[0], ring[i], ring[i + 1]}, cell);
+      continue;
+    }
+    const int centre = vertices.at(cell.centre);
     for (std::size_t i = 0; i < ring.size(); ++i)
       mesh.addTriangle({centre, ring[i], ring[(i + 1) % ring.size()]}, cell);
   }

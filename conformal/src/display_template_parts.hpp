@@ -27,7 +27,10 @@ struct FanCell {
   bool lit = true;         // false on bezels
   bool covered = true;     // on a wall (part of the target D); false on the source's cap
   bool spherical = false;  // refined on a sphere around the reference (generic caps)
-  int wall = -1;           // index into config.walls, -1 for caps
+  // Triangulate from polygon[0] instead of the centre (thin convex quads: no needles), unless
+  // stitching inserted points on its sides.
+  bool fanFromFirstCorner = false;
+  int wall = -1;  // index into config.walls, -1 for caps
 };
 
 // A triangle mesh in physical space with per-triangle flags and a set of cut edges.
@@ -105,18 +108,30 @@ std::pair<glm::dvec3, double> kernelCentre(const std::vector<glm::dvec3>& normal
 // Great-circle angle between the directions of a and b from the reference point.
 double directionAngle(const glm::dvec3& reference, const glm::dvec3& a, const glm::dvec3& b);
 
-// One fan cell per bezel strip, corner and lit area of each wall (zero-width strips skipped).
-std::vector<FanCell> wallCells(const DisplayConfig& config);
+bool hasBezel(const Wall& w);
+
+// The grid over the lit area of a wall with bezels: n x m quads, corner points (i, j).
+struct LitGrid {
+  Wall wall;
+  int n = 2, m = 2;
+  glm::dvec3 point(int i, int j) const;
+};
+LitGrid litGrid(const Wall& w, double maxEdge);
+
+// The cells of every wall: without bezels one fan over the wall; with bezels a grid of quads
+// (sides up to maxEdge) over the lit area and the four mitred bezel strips around it.
+std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge);
 
 // The walls stitched into the coarse target after checking the visible region: walls hiding or
 // touching each other as seen from the reference point, pinches, several pieces or holes all
 // throw Error(InvalidInput) naming the walls. The topology is a disk or a closed sphere.
 struct CoarseDisplay {
+  std::vector<FanCell> cells;  // wallCells
   TemplateBuild mesh;
   TriangleTopology topology;
   bool closed() const { return topology.boundaryLoops.empty(); }
 };
-CoarseDisplay assembleDisplay(const DisplayConfig& config);
+CoarseDisplay assembleDisplay(const DisplayConfig& config, double maxEdge);
 
 // Names of the walls of the triangles around vertex v, quoted and comma-separated.
 std::string wallsAround(const DisplayConfig& config, const TemplateBuild& mesh, int v);

@@ -15,7 +15,7 @@ namespace {
 
 struct Candidate {
   double length;
-  int a, b, triangle;  // the edge a-b, one of its triangles when queued
+  int a, b, triangle;                         // the edge a-b, one of its triangles when queued
   bool operator<(const Candidate& o) const {  // max-heap by length, ties by indices
     if (length != o.length) return length < o.length;
     return a != o.a ? a > o.a : b > o.b;
@@ -51,7 +51,8 @@ class Refiner {
     mesh_.cut.clear();
     for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
       for (int k = 0; k < 3; ++k)
-        if (cut_[t][k]) mesh_.cut.insert(edgeKey(mesh_.triangles[t][k], mesh_.triangles[t][(k + 1) % 3]));
+        if (cut_[t][k])
+          mesh_.cut.insert(edgeKey(mesh_.triangles[t][k], mesh_.triangles[t][(k + 1) % 3]));
   }
 
  private:

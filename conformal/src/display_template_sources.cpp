@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <tuple>
 
 #include "confvis/base/error.hpp"
 
@@ -193,7 +194,7 @@ std::vector<int> boundaryCorners(const glm::dvec3& reference, const TemplateBuil
   return corners;
 }
 
-SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display) {
+SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display, double maxEdge) {
   const glm::dvec3 c = config.reference;
   const TemplateBuild& mesh = display.mesh;
   const std::vector<int>& loop = display.topology.boundaryLoops.front();
@@ -205,7 +206,7 @@ SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display) {
     radius += glm::length(a - c) / double(loop.size());
   }
   const auto [q, margin] = kernelCentre(normals, 4000);
-  // sin(1°): below it the cap's fan triangles degenerate.
+  // sin(1°): below it the cap's triangles next to some boundary edge degenerate.
   if (margin < 0.0175)
     throw Error(ErrorCode::InvalidInput,
                 config.name +
@@ -213,38 +214,101 @@ SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display) {
                     "boundary of the uncovered region (it is not star-shaped), so the "
                     "sphere cannot be cut open generally for this display; use a "
                     "hemisphere source (\"source\": {\"field\": \"hemisphere\"})");
+  // The rim: the display boundary at spacing <= maxEdge, so that the cap can be built at its
+  // final density; bisecting a coarse fan would leave obtuse slivers next to short boundary
+  // edges.
+  std::vector<glm::dvec3> rim;
+  std::vector<int> rimOfLoop;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const glm::dvec3 a = mesh.points[loop[i]], b = mesh.points[loop[(i + 1) % loop.size()]];
+    const int pieces =
+        std::max(1, static_cast<int>(std::ceil(glm::length(b - a) / maxEdge - 1e-9)));
+    rimOfLoop.push_back(static_cast<int>(rim.size()));
+    for (int j = 0; j < pieces; ++j) rim.push_back(glm::mix(a, b, double(j) / pieces));
+  }
+  // Polar grid around q: spokes from q to every rim point, rings at equal fractions of each
+  // spoke's angle (slerp, radius interpolated), ring spacing <= maxEdge.
+  double widest = 0;
+  for (const glm::dvec3& p : rim)
+    widest = std::max(widest, std::acos(std::clamp(glm::dot(q, glm::normalize(p - c)), -1.0, 1.0)));
+  const int rings = std::max(1, static_cast<int>(std::ceil(widest * radius / maxEdge)));
+  auto along = [&](const glm::dvec3& p, int ring) {
+    if (ring == rings) return p;
+    const double f = double(ring) / rings;
+    const glm::dvec3 d = glm::normalize(p - c);
+    const double angle = std::acos(std::clamp(glm::dot(q, d), -1.0, 1.0));
+    const glm::dvec3 dir =
+        angle < 1e-12 ? q
+                      : (std::sin((1 - f) * angle) * q + std::sin(f * angle) * d) / std::sin(angle);
+    return c + glm::mix(radius, glm::length(p - c), f) * dir;
+  };
   SourceCap cap;
   cap.kind = SourceKind::Cone;
-  FanCell cell;
-  for (auto it = loop.rbegin(); it != loop.rend(); ++it) cell.polygon.push_back(mesh.points[*it]);
-  cell.centre = c + radius * q;
-  cell.lit = false;
-  cell.covered = false;
-  cell.spherical = true;
-  cap.cells.push_back(cell);
-  cap.centres.push_back(cell.centre);
+  const glm::dvec3 centre = c + radius * q;
+  cap.centres.push_back(centre);
+  auto addCell = [&](std::vector<glm::dvec3> polygon) {
+    FanCell cell;
+    cell.polygon = std::move(polygon);
+    for (const glm::dvec3& p : cell.polygon) cell.centre += p / double(cell.polygon.size());
+    cell.lit = false;
+    cell.covered = false;
+    cell.spherical = true;
+    cell.fanFromFirstCorner = true;
+    cap.cells.push_back(std::move(cell));
+  };
+  // The rim runs counter-clockwise around the display, so around the cap it runs clockwise.
+  for (std::size_t i = 0; i < rim.size(); ++i) {
+    const glm::dvec3& a = rim[i];
+    const glm::dvec3& b = rim[(i + 1) % rim.size()];
+    addCell({centre, along(b, 1), along(a, 1)});
+    for (int r = 1; r < rings; ++r)
+      addCell({along(a, r), along(b, r), along(b, r + 1), along(a, r + 1)});
+  }
   std::vector<int> leaves = boundaryCorners(c, mesh, loop, true);
   if (leaves.size() < 3) leaves = boundaryCorners(c, mesh, loop, false);
   if (leaves.size() < 3) leaves = loop;
   for (int v : leaves) {
-    cap.leaves.push_back(mesh.points[v]);
-    cap.cutEdges.push_back({cell.centre, mesh.points[v]});
+    const glm::dvec3 leaf = mesh.points[v];
+    cap.leaves.push_back(leaf);
+    cap.cutEdges.push_back({centre, along(leaf, 1)});
+    for (int r = 1; r < rings; ++r) cap.cutEdges.push_back({along(leaf, r), along(leaf, r + 1)});
   }
   return cap;
 }
 
-StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display) {
+StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display,
+                          double maxEdge) {
   // The ceiling-most wall: its normal (towards the viewer) points most downwards.
   int best = 0;
   for (int w = 1; w < static_cast<int>(config.walls.size()); ++w)
     if (config.walls[w].normal().y < config.walls[best].normal().y) best = w;
-  const Wall lit = config.walls[best].litRectangle();
+  const Wall& wall = config.walls[best];
   StarCut star;
-  // The fan centre of that wall's lit cell (see wallCells).
-  for (const FanCell& cell : wallCells(config))
-    if (cell.wall == best && cell.lit) star.centre = cell.centre;
-  star.leaves = {lit.lowerLeft, lit.lowerRight, lit.upperRight(), lit.upperLeft};
-  (void)display;
+  if (!hasBezel(wall)) {
+    for (const FanCell& cell : display.cells)  // the wall's single fan (see wallCells)
+      if (cell.wall == best) star.centre = cell.centre;
+    star.leaves = {wall.lowerLeft, wall.lowerRight, wall.upperRight(), wall.upperLeft};
+    for (const glm::dvec3& leaf : star.leaves) star.edges.push_back({star.centre, leaf});
+    return star;
+  }
+  // A cross along the lit grid from the grid vertex nearest the reference's foot.
+  const LitGrid grid = litGrid(wall, maxEdge);
+  const Wall lit = wall.litRectangle();
+  const glm::dvec3 d = config.reference - lit.lowerLeft;
+  const int i0 = std::clamp(
+      static_cast<int>(std::lround(glm::dot(d, lit.right()) / lit.widthMetres() * grid.n)), 1,
+      grid.n - 1);
+  const int j0 =
+      std::clamp(static_cast<int>(std::lround(glm::dot(d, lit.up()) / lit.heightMetres() * grid.m)),
+                 1, grid.m - 1);
+  star.centre = grid.point(i0, j0);
+  for (const auto& [di, dj, steps] :
+       {std::tuple{-1, 0, i0}, {1, 0, grid.n - i0}, {0, -1, j0}, {0, 1, grid.m - j0}}) {
+    for (int k = 0; k < steps; ++k)
+      star.edges.push_back(
+          {grid.point(i0 + k * di, j0 + k * dj), grid.point(i0 + (k + 1) * di, j0 + (k + 1) * dj)});
+    star.leaves.push_back(grid.point(i0 + steps * di, j0 + steps * dj));
+  }
   return star;
 }
 

@@ -23,21 +23,24 @@ struct SourceCap {
 // is not a box with every face fully covered or empty (or is closed).
 std::optional<SourceCap> boxCap(const DisplayConfig& config, const CoarseDisplay& display);
 
-// One fan over the whole uncovered region from the direction that sees its boundary best;
-// throws Error(InvalidInput) when no direction sees all of it.
-SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display);
+// A polar grid over the whole uncovered region around the direction that sees its boundary
+// best, at its final density; throws Error(InvalidInput) when no direction sees all of it.
+SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display, double maxEdge);
 
 // Boundary-loop vertices where the boundary turns on the sphere (reflexOnly: where the display's
 // interior angle exceeds pi, i.e. the uncovered region is convex).
 std::vector<int> boundaryCorners(const glm::dvec3& reference, const TemplateBuild& mesh,
                                  const std::vector<int>& loop, bool reflexOnly);
 
-// The cut that opens a closed display: a star in the ceiling-most wall's lit area.
+// The cut that opens a closed display: a star in the ceiling-most wall, from its fan centre to
+// its corners, or (with bezels) a cross along the lit grid lines to the lit area's sides.
 struct StarCut {
   glm::dvec3 centre{0.0};
   std::vector<glm::dvec3> leaves;
+  std::vector<std::pair<glm::dvec3, glm::dvec3>> edges;
 };
-StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display);
+StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display,
+                          double maxEdge);
 
 // Half of a cube of half-size `radius` around the reference about the hemisphere axis, with rim
 // points at the azimuths of `markerDirections`.

@@ -2,6 +2,7 @@
 // make (engine/src/engine/display_checks.cpp already rejects degenerate, overlapping and
 // back-facing walls and a reference point behind any wall).
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <set>
 #include <tuple>
@@ -82,7 +83,8 @@ double segmentDistance(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dv
   double best = glm::length(p0 + s * d1 - (q0 + t * d2));
   // Parallel segments: the endpoint projections cover the remaining cases.
   if (!(denom > 1e-15 * a * e))
-    for (const auto& [x, y0, d] : {std::tuple{p0, q0, d2}, {p1, q0, d2}, {q0, p0, d1}, {q1, p0, d1}}) {
+    for (const auto& [x, y0, d] :
+         {std::tuple{p0, q0, d2}, {p1, q0, d2}, {q0, p0, d1}, {q1, p0, d1}}) {
       const double u = std::clamp(glm::dot(x - y0, d) / glm::dot(d, d), 0.0, 1.0);
       best = std::min(best, glm::length(x - (y0 + u * d)));
     }
@@ -124,35 +126,92 @@ void checkWallPairs(const DisplayConfig& config) {
 
 }  // namespace
 
-std::vector<FanCell> wallCells(const DisplayConfig& config) {
+bool hasBezel(const Wall& w) {
+  const Bezel& b = w.bezel;
+  return std::max({b.left, b.right, b.bottom, b.top}) >= kTemplateTolerance;
+}
+
+glm::dvec3 LitGrid::point(int i, int j) const {
+  const Bezel& b = wall.bezel;
+  const double s = b.left + (wall.widthMetres() - b.left - b.right) * i / n;
+  const double t = b.bottom + (wall.heightMetres() - b.bottom - b.top) * j / m;
+  return wall.lowerLeft + s * wall.right() + t * wall.up();
+}
+
+LitGrid litGrid(const Wall& w, double maxEdge) {
+  // At least 2 x 2, so that a closed display's cut star has a grid vertex inside the lit area.
+  return {w, std::max(2, static_cast<int>(std::ceil(w.widthMetres() / maxEdge - 1e-9))),
+          std::max(2, static_cast<int>(std::ceil(w.heightMetres() / maxEdge - 1e-9)))};
+}
+
+std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
   std::vector<FanCell> cells;
   for (int index = 0; index < static_cast<int>(config.walls.size()); ++index) {
     const Wall& w = config.walls[index];
-    const double width = w.widthMetres(), height = w.heightMetres();
-    const std::array<double, 4> s{0.0, w.bezel.left, width - w.bezel.right, width};
-    const std::array<double, 4> t{0.0, w.bezel.bottom, height - w.bezel.top, height};
-    auto at = [&](double si, double ti) { return w.lowerLeft + si * w.right() + ti * w.up(); };
-    // The reference point's projection onto the wall, in wall coordinates.
-    const glm::dvec3 foot =
-        config.reference - glm::dot(config.reference - w.lowerLeft, w.normal()) * w.normal();
-    const double footS = glm::dot(foot - w.lowerLeft, w.right());
-    const double footT = glm::dot(foot - w.lowerLeft, w.up());
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const double s0 = s[i], s1 = s[i + 1], t0 = t[j], t1 = t[j + 1];
-        if (s1 - s0 < kTemplateTolerance || t1 - t0 < kTemplateTolerance) continue;
-        FanCell cell;
-        cell.polygon = {at(s0, t0), at(s1, t0), at(s1, t1), at(s0, t1)};
-        cell.lit = i == 1 && j == 1;
-        cell.wall = index;
-        cell.centre = at(0.5 * (s0 + s1), 0.5 * (t0 + t1));
-        // The dissertation's "green sphere": fan the lit area from the foot of the reference
-        // point where that keeps the fan well shaped (a quarter of the size from each side).
-        const double ms = 0.25 * (s1 - s0), mt = 0.25 * (t1 - t0);
-        if (cell.lit && footS > s0 + ms && footS < s1 - ms && footT > t0 + mt && footT < t1 - mt)
-          cell.centre = foot;
-        cells.push_back(std::move(cell));
+    const double W = w.widthMetres(), H = w.heightMetres();
+    const Bezel& b = w.bezel;
+    auto at = [&](double s, double t) { return w.lowerLeft + s * w.right() + t * w.up(); };
+    auto quad = [&](const std::array<glm::dvec3, 4>& corners, bool lit) {
+      FanCell cell;
+      cell.lit = lit;
+      cell.wall = index;
+      cell.fanFromFirstCorner = true;
+      cell.polygon.assign(corners.begin(), corners.end());
+      for (const glm::dvec3& p : corners) cell.centre += p / 4.0;
+      cells.push_back(std::move(cell));
+    };
+    if (!hasBezel(w)) {
+      // One fan from the foot of the reference point (the dissertation's "green sphere") where
+      // that keeps the fan well shaped (a quarter of the size from each side), else the centre.
+      FanCell lit;
+      lit.polygon = {at(0, 0), at(W, 0), at(W, H), at(0, H)};
+      lit.wall = index;
+      lit.centre = at(0.5 * W, 0.5 * H);
+      const glm::dvec3 foot =
+          config.reference - glm::dot(config.reference - w.lowerLeft, w.normal()) * w.normal();
+      const double footS = glm::dot(foot - w.lowerLeft, w.right());
+      const double footT = glm::dot(foot - w.lowerLeft, w.up());
+      if (footS > 0.25 * W && footS < 0.75 * W && footT > 0.25 * H && footT < 0.75 * H)
+        lit.centre = foot;
+      cells.push_back(lit);
+      continue;
+    }
+    // With bezels: an n x m grid of quads split by a diagonal, the lit area inside and four
+    // mitred bezel strips around it cut at the same grid lines. Thin strips then consist of
+    // right triangles, never of needles from a fan centre (whose bisection leaves obtuse slivers
+    // the flow cannot flatten), and the wall's outline has no vertices near its corners.
+    const LitGrid grid = litGrid(w, maxEdge);
+    const int n = grid.n, m = grid.m;
+    auto litPoint = [&](int i, int j) { return grid.point(i, j); };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < m; ++j)
+        quad({litPoint(i, j), litPoint(i + 1, j), litPoint(i + 1, j + 1), litPoint(i, j + 1)},
+             true);
+    auto outer = [&](double fs, double ft) { return at(fs * W, ft * H); };
+    // A strip piece from outer edge o0 -> o1 to the lit border i1 <- i0, cut further into quads
+    // at most 4 bezel widths long: right triangles with angles above 14 degrees, which the flow
+    // flattens without Delaunay flips (flips could fold the thin triangles in the result). The
+    // lit grid's border quads pick up the extra points and fan from their centres.
+    auto strip = [&](glm::dvec3 o0, glm::dvec3 o1, glm::dvec3 i1, glm::dvec3 i0, double width) {
+      if (width < kTemplateTolerance) return;
+      const double longest = std::max(glm::length(o1 - o0), glm::length(i1 - i0));
+      const int pieces = std::max(1, static_cast<int>(std::ceil(longest / (4 * width) - 1e-9)));
+      for (int k = 0; k < pieces; ++k) {
+        const double a = double(k) / pieces, z = double(k + 1) / pieces;
+        quad({glm::mix(o0, o1, a), glm::mix(o0, o1, z), glm::mix(i0, i1, z), glm::mix(i0, i1, a)},
+             false);
       }
+    };
+    for (int i = 0; i < n; ++i) {
+      const double a = double(i) / n, z = double(i + 1) / n;
+      strip(outer(a, 0), outer(z, 0), litPoint(i + 1, 0), litPoint(i, 0), b.bottom);
+      strip(outer(z, 1), outer(a, 1), litPoint(i, m), litPoint(i + 1, m), b.top);
+    }
+    for (int j = 0; j < m; ++j) {
+      const double a = double(j) / m, z = double(j + 1) / m;
+      strip(outer(1, a), outer(1, z), litPoint(n, j + 1), litPoint(n, j), b.right);
+      strip(outer(0, z), outer(0, a), litPoint(0, j), litPoint(0, j + 1), b.left);
+    }
   }
   return cells;
 }
@@ -167,12 +226,21 @@ std::string wallsAround(const DisplayConfig& config, const TemplateBuild& mesh, 
   return names;
 }
 
-CoarseDisplay assembleDisplay(const DisplayConfig& config) {
+CoarseDisplay assembleDisplay(const DisplayConfig& config, double maxEdge) {
   if (config.walls.empty())
     throw Error(ErrorCode::InvalidInput, config.name + ": display has no walls");
+  // Loading a config checks this too, but callers may move the reference afterwards (a tracked
+  // head, `--reference`).
+  for (const Wall& w : config.walls)
+    if (glm::dot(w.normal(), config.reference - w.lowerLeft) <= kTemplateTolerance)
+      throw Error(ErrorCode::InvalidInput,
+                  config.name + ": the reference point " + pointText(config.reference) +
+                      " is not in front of wall " + quoted(w.name) +
+                      " (it must lie inside the display, on the lit side of every wall)");
   checkWallPairs(config);
   CoarseDisplay display;
-  display.mesh = assembleCells(wallCells(config), config.reference);
+  display.cells = wallCells(config, maxEdge);
+  display.mesh = assembleCells(display.cells, config.reference);
   const TemplateBuild& mesh = display.mesh;
   display.topology = analyzeTriangles(mesh);
   const TriangleTopology& topo = display.topology;
@@ -233,6 +301,8 @@ CoarseDisplay assembleDisplay(const DisplayConfig& config) {
 
 namespace confvis {
 
-void checkVisibleRegion(const DisplayConfig& config) { detail::assembleDisplay(config); }
+void checkVisibleRegion(const DisplayConfig& config) {
+  detail::assembleDisplay(config, config.edgeLength);
+}
 
 }  // namespace confvis

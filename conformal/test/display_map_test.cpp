@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <map>
+#include <tuple>
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/disk_map.hpp"
@@ -177,18 +180,55 @@ TEST(DisplayMap, DisplayCoveringExactlyTheFrontHemisphereIsTheIdentity) {
       << "the test needs two different meshes";
 }
 
-TEST(DisplayMap, MovedReferenceAndOtherCavesGiveValidMaps) {
+TEST(DisplayMap, MovedReferenceOtherCavesAndTheMonitorWallGiveValidMaps) {
   DisplayConfig moved = shipped("cave5");
   moved.reference = {0.5, -0.4, 0.3};
-  for (const DisplayConfig& config : {moved, shipped("cave4"), shipped("cave3")}) {
+  for (const DisplayConfig& config :
+       {moved, shipped("cave4"), shipped("cave3"), shipped("md230x6")}) {
     DisplayMapOptions options;
-    options.edgeLength = 0.4;
+    options.edgeLength = config.name == "md230x6" ? 0.1 : 0.4;
     const DisplayMap map = computeDisplayMap(config, options);
     expectAlignedDiskMap(map.source, map.sourceMarkers, config.name + " source");
     expectAlignedDiskMap(map.target, map.targetMarkers, config.name + " target");
-    for (int k = 0; k < 3; ++k)
+    // Sphere sources share the markers' directions (cut leaves); hemisphere markers share only
+    // their azimuths about the axis.
+    for (int k = 0; k < 3 && config.source == SourceField::FullSphere; ++k) {
       EXPECT_LT(angleBetween(map.source.sphere[map.sourceMarkers[k]],
                              map.target.sphere[map.targetMarkers[k]]),
-                1e-12);
+                1e-12)
+          << config.name;
+    }
+    ASSERT_EQ(map.target.lit.size(), map.target.triangles.size());
+    EXPECT_EQ(std::count(map.target.lit.begin(), map.target.lit.end(), 0) > 0,
+              config.name == "md230x6");
   }
+}
+
+TEST(DisplayMap, SixSidedCaveWithBezelsIsTheIdentityWithUnlitFrames) {
+  // With bezels the ceiling is a grid, so the closed display is cut along a cross of grid lines.
+  DisplayConfig config = shipped("cave6");
+  for (Wall& w : config.walls) w.bezel = {0.05, 0.05, 0.05, 0.05};
+  DisplayMapOptions options;
+  options.edgeLength = 0.6;
+  const DisplayMap map = computeDisplayMap(config, options);
+  expectAlignedDiskMap(map.target, map.targetMarkers, "target");
+  EXPECT_EQ(map.source.disk, map.target.disk);
+  EXPECT_LT(maxIdentityError(map), 1e-9);
+  // The ceiling's cross: its centre (a grid vertex on the ceiling) opens into four boundary
+  // copies, its four leaves on the lit area's sides appear once.
+  std::map<std::tuple<double, double, double>, int> copies;
+  for (int v : map.target.boundary) {
+    const Vec3d& d = map.target.sphere[v];
+    ++copies[{d.x, d.y, d.z}];
+  }
+  int centres = 0;
+  for (const auto& [d, count] : copies) {
+    EXPECT_TRUE(count == 1 || count == 2 || count == 4);
+    if (count == 4) {
+      ++centres;
+      EXPECT_GT(std::get<1>(d), 0.5) << "on the ceiling";
+    }
+  }
+  EXPECT_EQ(centres, 1);
+  EXPECT_GT(std::count(map.target.lit.begin(), map.target.lit.end(), 0), 0);
 }

@@ -3,12 +3,16 @@
 // 8.3.3), refined and still in physical space (metres). display_map.hpp projects them to the
 // sphere and maps them to the disk.
 //
-// Target D: the walls, each split into its lit area and its bezel strips (bezels are *covered
-// but unlit*: they belong to D, so the map has no gap at a seam, and their triangles carry
-// lit = 0 so the bake gives alpha 0 there). Every cell is a fan from a centre (the projection of
-// the reference point c onto the wall where it falls well inside the lit area, the dissertation's
-// "green sphere"; else the cell's centre); walls are stitched where they touch (shared edges and
-// T-junctions get common vertices), so refinement never crosses a bezel border.
+// Target D: the walls. Bezels are *covered but unlit*: they belong to D, so the map has no gap
+// at a seam, and their triangles carry lit = 0 so the bake gives alpha 0 there (a texel on a
+// bezel shows nothing rather than squeezing the picture around it). A wall without bezels is one
+// fan from the projection of the reference point c onto it (the dissertation's "green sphere")
+// where that falls well inside the wall, else from its centre. A wall with bezels is a grid of
+// quads (sides up to the edge length) over its lit area plus four mitred bezel strips cut into
+// quads at most four bezel widths long, every quad split by a diagonal: no triangle crosses a
+// bezel border, and thin strips become right triangles with angles above 14 degrees, which the
+// flow flattens without Delaunay flips (with flips, thin triangles can fold in the result). Walls are stitched where they touch (shared
+// edges and T-junctions get common vertices); refinement then splits edges at mid-points.
 //
 // Source S, by source field and display:
 // - hemisphere: half of a cube around c about source.axis (the front face and four half side
@@ -24,13 +28,18 @@
 //   no other missing face (where the uncovered region is convex), and between adjacent missing
 //   faces (a spanning tree) through the point of their shared edge nearest c. With fewer than
 //   three such corners, every missing-face corner on the display boundary joins the cut.
-// - sphere, any other display: S is D plus one cap over the uncovered region, a fan from the
-//   direction q that sees the whole display boundary best (the Chebyshev centre of the kernel of
-//   the uncovered region on the sphere), refined on a sphere around c; the cut runs from q to the
-//   display's convex-for-the-cap boundary corners. If no direction sees the whole boundary
-//   (the uncovered region is not star-shaped) the display is rejected: use a hemisphere source.
+// - sphere, any other display (angled walls, partly covered box faces): S is D plus one cap over
+//   the uncovered region around the direction q that sees the whole display boundary best (the
+//   Chebyshev centre of the kernel of the uncovered region on the sphere): a polar grid of
+//   spokes from q to the boundary (spaced at the edge length) and rings along them, built at its
+//   final density on a sphere around c. The cut runs along the spokes to the boundary corners
+//   where the cap is convex (else to all boundary corners). If no direction sees the whole
+//   boundary (the uncovered region is not star-shaped) the display is rejected: use a
+//   hemisphere source. Known limit: with bezels on the display outline, the outline's short
+//   bezel pieces give this cap needle-shaped cells and the flow may fail (Error Unreachable);
+//   box caps and hemisphere sources handle bezels.
 // The cut leaves on the display boundary are the markers: each appears once on both templates'
-// boundaries.
+// boundaries, and three of them spread along the boundary are sent to 1, i, -1.
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
