@@ -186,6 +186,10 @@ RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, 
       }
   stats.measured = errors.size();
   std::sort(errors.begin(), errors.end());
+  const std::size_t valid = stats.measured + stats.discontinuous + stats.invalid;
+  const auto below = static_cast<std::size_t>(
+      std::lower_bound(errors.begin(), errors.end(), 1.0) - errors.begin());
+  stats.fractionBelowOneTexel = valid ? static_cast<double>(below) / static_cast<double>(valid) : 0;
   stats.p50 = percentile(errors, 0.5);
   stats.p95 = percentile(errors, 0.95);
   stats.p99 = percentile(errors, 0.99);
@@ -234,7 +238,8 @@ nlohmann::json toJson(const BakedConformality& s) {
 nlohmann::json toJson(const RoundTripStats& s) {
   return {{"measured_texels", s.measured}, {"discontinuous_texels", s.discontinuous},
           {"invalid_texels", s.invalid}, {"error_p50_texels", s.p50},
-          {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99}, {"error_max_texels", s.max}};
+          {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99}, {"error_max_texels", s.max},
+          {"fraction_below_one_texel", s.fractionBelowOneTexel}};
 }
 
 nlohmann::json toJson(const CoverageStats& s) {

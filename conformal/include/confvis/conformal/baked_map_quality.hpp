@@ -45,6 +45,9 @@ struct RoundTripStats {
   std::size_t discontinuous = 0;
   std::size_t invalid = 0;  // inverse lookup invalid (alpha < 0.5)
   double p50 = 0, p95 = 0, p99 = 0, max = 0;  // angle(inverse(forward(d)), d), texels
+  // Of all valid texels (discontinuous and invalid ones counted as failures): error below one
+  // texel.
+  double fractionBelowOneTexel = 0;
 };
 
 // For every texel d of `forward` with alpha >= 0.5: v = the stored direction, then a bilinear
