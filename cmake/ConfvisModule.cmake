@@ -3,6 +3,25 @@
 # the single test binary by tests/CMakeLists.txt (pbrt-v4 style: one binary, tests near code).
 set_property(GLOBAL PROPERTY CONFVIS_TEST_SOURCES "")
 
+# Packaging (cmake/ConfvisInstall.cmake, included once at the end of the root CMakeLists.txt):
+# every module library registers itself here and is installed and exported as confvis::NAME
+# (the "confvis_" prefix dropped), its include/ folder installed beside the others.
+set_property(GLOBAL PROPERTY CONFVIS_INSTALL_TARGETS "")
+set_property(GLOBAL PROPERTY CONFVIS_INSTALL_INCLUDE_DIRS "")
+set_property(GLOBAL PROPERTY CONFVIS_PACKAGE_DEPENDENCIES "")
+
+function(confvis_install_module name include_dir)
+  set_property(GLOBAL APPEND PROPERTY CONFVIS_INSTALL_TARGETS ${name})
+  set_property(GLOBAL APPEND PROPERTY CONFVIS_INSTALL_INCLUDE_DIRS ${include_dir})
+endfunction()
+
+# confvis_package_dependency("embree 3"): one find_dependency(...) line in the generated
+# confvisConfig.cmake, for a package whose targets a module links (publicly, or privately: static
+# libraries carry their private dependencies to the consumer's link line).
+function(confvis_package_dependency arguments)
+  set_property(GLOBAL APPEND PROPERTY CONFVIS_PACKAGE_DEPENDENCIES "${arguments}")
+endfunction()
+
 function(confvis_module name dir)
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${dir}/src/*.cpp)
   add_library(${name} STATIC ${sources})
@@ -13,6 +32,7 @@ function(confvis_module name dir)
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${dir}/test/*_test.cpp)
   set_property(GLOBAL APPEND PROPERTY CONFVIS_TEST_SOURCES ${tests})
   set_property(GLOBAL APPEND PROPERTY CONFVIS_TEST_LIBRARIES ${name})
+  confvis_install_module(${name} ${dir}/include)
 endfunction()
 
 # confvis_module_sources(NAME DIR SUBDIR DEPS...): like confvis_module, but for a module that
@@ -28,4 +48,5 @@ function(confvis_module_sources name dir subdir)
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS ${dir}/test/${subdir}/*_test.cpp)
   set_property(GLOBAL APPEND PROPERTY CONFVIS_TEST_SOURCES ${tests})
   set_property(GLOBAL APPEND PROPERTY CONFVIS_TEST_LIBRARIES ${name})
+  confvis_install_module(${name} ${dir}/include)
 endfunction()

@@ -10,30 +10,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "cli_test_support.hpp"
+
 namespace fs = std::filesystem;
+using confvis::testing::CliRun;
+using confvis::testing::runCli;
+using confvis::testing::scratch;
 
 namespace {
-
-struct CliRun {
-  int exitCode;
-  std::string output;  // stdout and stderr together
-};
-
-CliRun runCli(const std::string& args) {
-  const std::string command = std::string(CONFVIS_CLI_PATH) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("confvis_cli_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
 
 TEST(CliFlow, HemisphereMapsIntoTheUnitDiskWithAReport) {
   const fs::path mesh = scratch("hemi.obj"), out = scratch("hemi-disk.obj"),

@@ -12,6 +12,8 @@ packages=(
   libglm-dev libopenmesh-dev libeigen3-dev
   # image and scene I/O: EXR, PNG previews, OBJ and glTF loaders (tinygltf uses stb + nlohmann)
   libopenexr-dev libpng-dev libtinyobjloader-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
+  # XML display descriptions (ParaView .pvx, SGCT's older XML); ParaView itself reads .pvx with it
+  libpugixml-dev
   # CLI parsing and tests
   libcli11-dev libgtest-dev
 )

@@ -10,6 +10,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/engine/display_import.hpp"
 #include "display_checks.hpp"
 
 namespace confvis {
@@ -254,6 +255,8 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
 }
 
 DisplayConfig loadDisplayConfig(const std::filesystem::path& path) {
+  // SGCT and ParaView descriptions load directly, with default import options.
+  if (detectDisplayFormat(path) != DisplayFormat::Confvis) return importDisplayConfig(path);
   const std::string text = readTextFile(path);  // Error(FileNotFound) naming the path
   json root;
   try {

@@ -76,6 +76,8 @@ struct DisplayConfig {
 
 // Reads and validates a config; Error(FileNotFound) naming the path if it cannot be read,
 // Error(InvalidInput) naming the file and the culprit (wall, key) for any invalid content.
+// SGCT configs (JSON, XML) and ParaView .pvx files load too, imported with default options
+// (display_import.hpp).
 DisplayConfig loadDisplayConfig(const std::filesystem::path& path);
 
 // Validates `json`; sourceName (usually the file name) prefixes every error message.

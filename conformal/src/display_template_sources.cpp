@@ -1,0 +1,282 @@
+// Source caps (display_template.hpp): the missing faces of a box display with the
+// dissertation's cut tree, the generic cone cap, the half cube of a hemisphere source, and the
+// star cut of a closed display.
+#include "display_template_sources.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "confvis/base/error.hpp"
+
+namespace confvis::detail {
+namespace {
+
+constexpr double kAxisTolerance = 1e-9;
+
+struct BoxFrame {
+  std::array<glm::dvec3, 3> axis;
+  std::array<double, 3> lo, hi;
+  glm::dvec3 point(const std::array<double, 3>& x) const {
+    return x[0] * axis[0] + x[1] * axis[1] + x[2] * axis[2];
+  }
+  double coord(const glm::dvec3& p, int k) const { return glm::dot(p, axis[k]); }
+};
+
+int axisIndex(const BoxFrame& frame, const glm::dvec3& d) {
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(glm::dot(d, frame.axis[k])) > 1 - kAxisTolerance) return k;
+  return -1;
+}
+
+struct BoxFace {
+  int axis, side;  // side 0: at lo[axis], 1: at hi[axis]
+};
+
+// The box of a display whose walls all lie on faces of their bounding box (in the frame of the
+// first wall) with the reference strictly inside; nullopt otherwise.
+std::optional<BoxFrame> findBox(const DisplayConfig& config) {
+  const Wall& first = config.walls.front();
+  BoxFrame frame{{first.right(), first.up(), first.normal()}, {}, {}};
+  frame.lo.fill(1e300);
+  frame.hi.fill(-1e300);
+  for (const Wall& w : config.walls) {
+    if (axisIndex(frame, w.right()) < 0 || axisIndex(frame, w.up()) < 0) return std::nullopt;
+    for (const glm::dvec3& p : {w.lowerLeft, w.lowerRight, w.upperLeft, w.upperRight()})
+      for (int k = 0; k < 3; ++k) {
+        frame.lo[k] = std::min(frame.lo[k], frame.coord(p, k));
+        frame.hi[k] = std::max(frame.hi[k], frame.coord(p, k));
+      }
+  }
+  for (int k = 0; k < 3; ++k) {
+    const double c = frame.coord(config.reference, k);
+    if (!(c > frame.lo[k] + kTemplateTolerance && c < frame.hi[k] - kTemplateTolerance))
+      return std::nullopt;
+  }
+  for (const Wall& w : config.walls) {
+    const int k = axisIndex(frame, w.normal());
+    const double x = frame.coord(w.lowerLeft, k);
+    if (std::abs(x - frame.lo[k]) > kTemplateTolerance &&
+        std::abs(x - frame.hi[k]) > kTemplateTolerance)
+      return std::nullopt;
+  }
+  return frame;
+}
+
+std::array<int, 2> otherAxes(int k) { return {(k + 1) % 3, (k + 2) % 3}; }
+
+double faceCoord(const BoxFrame& frame, const BoxFace& f) {
+  return f.side ? frame.hi[f.axis] : frame.lo[f.axis];
+}
+
+// 1 covered, 0 empty, -1 partly covered.
+int faceCoverage(const DisplayConfig& config, const BoxFrame& frame, const BoxFace& f) {
+  const auto [i, j] = otherAxes(f.axis);
+  const double area = (frame.hi[i] - frame.lo[i]) * (frame.hi[j] - frame.lo[j]);
+  double covered = 0;
+  for (const Wall& w : config.walls)
+    if (axisIndex(frame, w.normal()) == f.axis &&
+        std::abs(frame.coord(w.lowerLeft, f.axis) - faceCoord(frame, f)) <= kTemplateTolerance)
+      covered += w.widthMetres() * w.heightMetres();
+  if (covered < kTemplateTolerance * kTemplateTolerance) return 0;
+  return std::abs(covered - area) <= 1e-9 * area ? 1 : -1;
+}
+
+// Clamps x into [lo, hi] shrunk by `fraction` of its length at both ends.
+double clampInside(double x, double lo, double hi, double fraction) {
+  const double margin = fraction * (hi - lo);
+  return std::clamp(x, lo + margin, hi - margin);
+}
+
+glm::dvec3 faceFoot(const BoxFrame& frame, const BoxFace& f, const glm::dvec3& reference) {
+  std::array<double, 3> x{};
+  x[f.axis] = faceCoord(frame, f);
+  for (int k : otherAxes(f.axis))
+    x[k] = clampInside(frame.coord(reference, k), frame.lo[k], frame.hi[k], 0.1);
+  return frame.point(x);
+}
+
+}  // namespace
+
+std::optional<SourceCap> boxCap(const DisplayConfig& config, const CoarseDisplay& display) {
+  const auto found = findBox(config);
+  if (!found) return std::nullopt;
+  const BoxFrame& frame = *found;
+  const glm::dvec3 c = config.reference;
+  std::vector<BoxFace> missing;
+  std::array<std::array<int, 2>, 3> covered{};
+  for (int k = 0; k < 3; ++k)
+    for (int side = 0; side < 2; ++side) {
+      const int coverage = faceCoverage(config, frame, {k, side});
+      if (coverage < 0) return std::nullopt;  // partly covered: the generic cap handles it
+      covered[k][side] = coverage;
+      if (!coverage) missing.push_back({k, side});
+    }
+  if (missing.empty() || display.closed()) return std::nullopt;
+  SourceCap cap;
+  cap.kind = SourceKind::Box;
+  std::vector<glm::dvec3> feet;
+  for (const BoxFace& f : missing) {
+    FanCell cell;
+    const auto [i, j] = otherAxes(f.axis);
+    for (auto [a, b] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+      std::array<double, 3> x{};
+      x[f.axis] = faceCoord(frame, f);
+      x[i] = a ? frame.hi[i] : frame.lo[i];
+      x[j] = b ? frame.hi[j] : frame.lo[j];
+      cell.polygon.push_back(frame.point(x));
+    }
+    cell.centre = faceFoot(frame, f, c);
+    cell.lit = false;
+    cell.covered = false;
+    feet.push_back(cell.centre);
+    cap.centres.push_back(cell.centre);
+    cap.cells.push_back(std::move(cell));
+  }
+  // Spanning tree of the missing faces (breadth first), joined through their shared edges.
+  std::vector<char> inTree(missing.size(), 0);
+  std::vector<std::size_t> order{0};
+  inTree[0] = 1;
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    const BoxFace& f = missing[order[n]];
+    for (std::size_t g = 0; g < missing.size(); ++g) {
+      if (inTree[g] || missing[g].axis == f.axis) continue;
+      const int along = 3 - f.axis - missing[g].axis;
+      std::array<double, 3> x{};
+      x[f.axis] = faceCoord(frame, f);
+      x[missing[g].axis] = faceCoord(frame, missing[g]);
+      x[along] = clampInside(frame.coord(c, along), frame.lo[along], frame.hi[along], 0.1);
+      const glm::dvec3 joint = frame.point(x);
+      cap.extraPoints.push_back(joint);
+      cap.centres.push_back(joint);
+      cap.cutEdges.push_back({feet[order[n]], joint});
+      cap.cutEdges.push_back({feet[g], joint});
+      inTree[g] = 1;
+      order.push_back(g);
+    }
+  }
+  // Leaves: missing-face corners on the display boundary where the uncovered region is convex
+  // (two covered faces meet there); with fewer than three, every missing-face corner on it.
+  for (int coveredFacesWanted : {2, 1}) {
+    for (int corner = 0; corner < 8; ++corner) {
+      std::array<double, 3> x{};
+      int coveredFaces = 0, firstMissing = -1;
+      for (int k = 0; k < 3; ++k) {
+        const int side = (corner >> k) & 1;
+        x[k] = side ? frame.hi[k] : frame.lo[k];
+        coveredFaces += covered[k][side];
+      }
+      for (std::size_t m = 0; m < missing.size() && firstMissing < 0; ++m)
+        if (((corner >> missing[m].axis) & 1) == missing[m].side)
+          firstMissing = static_cast<int>(m);
+      if (coveredFaces != coveredFacesWanted || firstMissing < 0) continue;
+      cap.leaves.push_back(frame.point(x));
+      cap.cutEdges.push_back({feet[firstMissing], frame.point(x)});
+    }
+    if (cap.leaves.size() >= 3) break;
+  }
+  return cap;
+}
+
+std::vector<int> boundaryCorners(const glm::dvec3& reference, const TemplateBuild& mesh,
+                                 const std::vector<int>& loop, bool reflexOnly) {
+  std::vector<int> corners;
+  const std::size_t n = loop.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle =
+        sphericalBoundaryAngle(reference, mesh.points[loop[(i + n - 1) % n]], mesh.points[loop[i]],
+                               mesh.points[loop[(i + 1) % n]]);
+    if (reflexOnly ? angle > std::numbers::pi + 1e-6 : std::abs(angle - std::numbers::pi) > 1e-6)
+      corners.push_back(loop[i]);
+  }
+  return corners;
+}
+
+SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display) {
+  const glm::dvec3 c = config.reference;
+  const TemplateBuild& mesh = display.mesh;
+  const std::vector<int>& loop = display.topology.boundaryLoops.front();
+  std::vector<glm::dvec3> normals;
+  double radius = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const glm::dvec3 a = mesh.points[loop[i]], b = mesh.points[loop[(i + 1) % loop.size()]];
+    normals.push_back(glm::normalize(glm::cross(a - c, b - c)));  // points away from the display
+    radius += glm::length(a - c) / double(loop.size());
+  }
+  const auto [q, margin] = kernelCentre(normals, 4000);
+  // sin(1°): below it the cap's fan triangles degenerate.
+  if (margin < 0.0175)
+    throw Error(ErrorCode::InvalidInput,
+                config.name +
+                    ": sphere source: no direction from the reference point sees the whole "
+                    "boundary of the uncovered region (it is not star-shaped), so the "
+                    "sphere cannot be cut open generally for this display; use a "
+                    "hemisphere source (\"source\": {\"field\": \"hemisphere\"})");
+  SourceCap cap;
+  cap.kind = SourceKind::Cone;
+  FanCell cell;
+  for (auto it = loop.rbegin(); it != loop.rend(); ++it) cell.polygon.push_back(mesh.points[*it]);
+  cell.centre = c + radius * q;
+  cell.lit = false;
+  cell.covered = false;
+  cell.spherical = true;
+  cap.cells.push_back(cell);
+  cap.centres.push_back(cell.centre);
+  std::vector<int> leaves = boundaryCorners(c, mesh, loop, true);
+  if (leaves.size() < 3) leaves = boundaryCorners(c, mesh, loop, false);
+  if (leaves.size() < 3) leaves = loop;
+  for (int v : leaves) {
+    cap.leaves.push_back(mesh.points[v]);
+    cap.cutEdges.push_back({cell.centre, mesh.points[v]});
+  }
+  return cap;
+}
+
+StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& display) {
+  // The ceiling-most wall: its normal (towards the viewer) points most downwards.
+  int best = 0;
+  for (int w = 1; w < static_cast<int>(config.walls.size()); ++w)
+    if (config.walls[w].normal().y < config.walls[best].normal().y) best = w;
+  const Wall lit = config.walls[best].litRectangle();
+  StarCut star;
+  // The fan centre of that wall's lit cell (see wallCells).
+  for (const FanCell& cell : wallCells(config))
+    if (cell.wall == best && cell.lit) star.centre = cell.centre;
+  star.leaves = {lit.lowerLeft, lit.lowerRight, lit.upperRight(), lit.upperLeft};
+  (void)display;
+  return star;
+}
+
+HalfCube hemisphereHalfCube(const DisplayConfig& config, double radius,
+                            const std::vector<glm::dvec3>& markerDirections) {
+  const glm::dvec3 c = config.reference;
+  const glm::dvec3 a = glm::normalize(config.hemisphereAxis);
+  const glm::dvec3 upHint = std::abs(a.y) < 0.99 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, -1);
+  const glm::dvec3 u = glm::normalize(upHint - glm::dot(upHint, a) * a);
+  const glm::dvec3 r = glm::cross(u, a);
+  HalfCube cube;
+  const double R = radius;
+  FanCell front;
+  front.polygon = {c + R * (a - r - u), c + R * (a + r - u), c + R * (a + r + u),
+                   c + R * (a - r + u)};
+  front.centre = c + R * a;
+  front.covered = false;
+  cube.cells.push_back(front);
+  for (const auto& [e, side] : {std::pair{r, u}, {u, -r}, {-r, -u}, {-u, r}}) {
+    FanCell half;
+    half.polygon = {c + R * (e - side), c + R * (e + side), c + R * (e + side + a),
+                    c + R * (e - side + a)};
+    half.centre = c + R * (e + 0.5 * a);
+    half.covered = false;
+    cube.cells.push_back(half);
+  }
+  for (const glm::dvec3& d : markerDirections) {
+    const double x = glm::dot(d, r), y = glm::dot(d, u);
+    const double scale = R / std::max(std::abs(x), std::abs(y));
+    cube.rimPoints.push_back(c + scale * (x * r + y * u));
+  }
+  return cube;
+}
+
+}  // namespace confvis::detail

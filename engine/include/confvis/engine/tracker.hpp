@@ -1,0 +1,78 @@
+#pragma once
+// Head tracking. A Tracker hands out the newest head pose without ever blocking, so a render loop
+// can poll it once per frame. confvis ships a recorded-path player (tests, demos, offline
+// renders); a live tracker (VRPN, OpenXR, a lab's own protocol) implements the same interface in
+// the application. Debian 12 packages no VRPN, so confvis has no VRPN client (README).
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "confvis/engine/viewer.hpp"
+
+namespace confvis {
+
+struct TrackedPose {
+  HeadPose head;
+  double seconds = 0.0;  // when the pose was measured, on the tracker's clock
+};
+
+class Tracker {
+ public:
+  virtual ~Tracker() = default;
+  // The newest pose, or nullopt before the first one arrives. Never blocks.
+  virtual std::optional<TrackedPose> latest() = 0;
+};
+
+// One sample of a recorded head path.
+struct PathKey {
+  double seconds = 0.0;
+  HeadPose head;
+};
+
+// A head path: keys at strictly increasing times, positions interpolated linearly and
+// orientations by spherical linear interpolation (shortest arc).
+//
+// File format (CSV, one key per line; blank lines and lines starting with '#' are ignored):
+//   seconds,x,y,z,qw,qx,qy,qz
+//   0.0,0,0,0,1,0,0,0
+//   ...
+// Positions in metres in the display's physical frame; (qw,qx,qy,qz) a rotation quaternion
+// (normalised on reading; identity looks down -z with +y up). Sample: configs/paths/.
+class RecordedPath {
+ public:
+  // Throws Error(InvalidInput) naming `sourceName` and the key for an empty path, times that do
+  // not increase, non-finite values or a zero quaternion.
+  explicit RecordedPath(std::vector<PathKey> keys, const std::string& sourceName = "path");
+
+  // Error(FileNotFound) naming the path; Error(InvalidInput) naming file and line.
+  static RecordedPath load(const std::filesystem::path& path);
+  static RecordedPath parse(const std::string& text, const std::string& sourceName);
+
+  // The pose at time `seconds`. loop: the path repeats with period duration() (from its first
+  // key's time), so a closed path (last key = first key) loops seamlessly; otherwise times
+  // outside the keys clamp to the first or last key.
+  HeadPose at(double seconds, bool loop) const;
+  double duration() const { return keys_.back().seconds - keys_.front().seconds; }
+  const std::vector<PathKey>& keys() const { return keys_; }
+
+ private:
+  std::vector<PathKey> keys_;
+};
+
+// Plays a RecordedPath against a clock. The default clock is real time since construction; tests
+// and offline renders pass their own (e.g. frame number / frame rate).
+class RecordedPathTracker : public Tracker {
+ public:
+  using Clock = std::function<double()>;  // seconds
+  explicit RecordedPathTracker(RecordedPath path, bool loop = true, Clock clock = {});
+  std::optional<TrackedPose> latest() override;
+
+ private:
+  RecordedPath path_;
+  bool loop_;
+  Clock clock_;
+};
+
+}  // namespace confvis

@@ -1,0 +1,193 @@
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "confvis/base/error.hpp"
+#include "import_parts.hpp"
+
+namespace confvis::detail {
+
+using nlohmann::json;
+
+namespace {
+
+// Corners equal to this many file units are the same corner (hand-written files repeat a wall
+// for the second eye with the very same numbers).
+constexpr double kSameCorner = 1e-9;
+// Walls whose planes agree this closely make a flat wall (metres; unit normals).
+constexpr double kCoplanar = 1e-6;
+
+json vecJson(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
+
+bool sameCorners(const ImportedWall& a, const ImportedWall& b) {
+  return glm::length(a.lowerLeft - b.lowerLeft) <= kSameCorner &&
+         glm::length(a.lowerRight - b.lowerRight) <= kSameCorner &&
+         glm::length(a.upperLeft - b.upperLeft) <= kSameCorner;
+}
+
+// right x up, unnormalised: its length is the wall's area; zero for a degenerate wall.
+glm::dvec3 areaNormal(const ImportedWall& w) {
+  return glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft);
+}
+
+bool allCoplanar(const std::vector<ImportedWall>& walls) {
+  const glm::dvec3 n0 = areaNormal(walls.front());
+  if (!(glm::length(n0) > 0.0)) return false;
+  const glm::dvec3 unit0 = glm::normalize(n0);
+  const double offset0 = glm::dot(unit0, walls.front().lowerLeft);
+  return std::all_of(walls.begin(), walls.end(), [&](const ImportedWall& w) {
+    const glm::dvec3 n = areaNormal(w);
+    if (!(glm::length(n) > 0.0)) return false;
+    const glm::dvec3 unit = glm::normalize(n);
+    return glm::length(unit - unit0) <= kCoplanar &&
+           std::abs(glm::dot(unit0, w.lowerLeft) - offset0) <= kCoplanar;
+  });
+}
+
+// The direction from the viewer towards the walls: area-weighted mean of -normal.
+glm::dvec3 hemisphereAxis(const std::vector<ImportedWall>& walls, const std::string& sourceName) {
+  glm::dvec3 sum(0.0);
+  for (const ImportedWall& w : walls) sum -= areaNormal(w);
+  if (!(glm::length(sum) > 1e-12))
+    throw Error(ErrorCode::InvalidInput,
+                sourceName + ": the walls face every way, so no hemisphere faces them; import "
+                             "with the full sphere as source");
+  return glm::normalize(sum);
+}
+
+void makeNamesUnique(std::vector<ImportedWall>& walls, const std::string& sourceName,
+                     std::vector<std::string>& notes) {
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    auto taken = [&](const std::string& name) {
+      for (std::size_t j = 0; j < walls.size(); ++j)
+        if (j != i && walls[j].name == name) return true;
+      return false;
+    };
+    bool clash = false;
+    for (std::size_t j = 0; j < i; ++j) clash = clash || walls[j].name == walls[i].name;
+    if (!clash) continue;
+    std::string renamed;
+    for (int k = 2; renamed.empty() || taken(renamed); ++k)
+      renamed = walls[i].name + "-" + std::to_string(k);
+    notes.push_back(sourceName + ": " + walls[i].element + " repeats the name '" + walls[i].name +
+                    "'; imported as '" + renamed + "'");
+    walls[i].name = renamed;
+  }
+}
+
+}  // namespace
+
+DisplayConfig finishImport(ImportedDisplay display, const std::string& sourceName,
+                           const ImportOptions& options, ImportReport* report) {
+  if (!(std::isfinite(options.scale) && options.scale > 0.0))
+    throw Error(ErrorCode::InvalidInput, sourceName + ": import scale must be a positive number, got " +
+                                             std::to_string(options.scale));
+  // Second-eye viewports repeat a wall exactly: keep the first.
+  std::vector<ImportedWall> walls;
+  for (ImportedWall& w : display.walls) {
+    const auto same = std::find_if(walls.begin(), walls.end(),
+                                   [&](const ImportedWall& kept) { return sameCorners(kept, w); });
+    if (same != walls.end()) {
+      display.notes.push_back(sourceName + ": " + w.element + " repeats the corners of wall '" +
+                              same->name + "' (another eye or window on the same screen); skipped");
+      continue;
+    }
+    walls.push_back(std::move(w));
+  }
+  if (walls.empty())
+    throw Error(ErrorCode::InvalidInput, sourceName + ": describes no walls");
+  makeNamesUnique(walls, sourceName, display.notes);
+
+  const double s = options.scale;
+  for (ImportedWall& w : walls) {
+    w.lowerLeft *= s;
+    w.lowerRight *= s;
+    w.upperLeft *= s;
+  }
+  const glm::dvec3 reference = options.reference.value_or(display.viewer.value_or(glm::dvec3(0.0)) * s);
+
+  SourceField source = SourceField::FullSphere;
+  if (options.source) source = *options.source;
+  else if (allCoplanar(walls)) source = SourceField::Hemisphere;
+  json sourceJson = {{"field", source == SourceField::Hemisphere ? "hemisphere" : "sphere"}};
+  if (source == SourceField::Hemisphere) sourceJson["axis"] = vecJson(hemisphereAxis(walls, sourceName));
+
+  std::string name = options.name;
+  if (name.empty()) name = std::filesystem::path(sourceName).stem().string();
+  json config = {{"name", name}, {"reference", vecJson(reference)}, {"source", sourceJson},
+                 {"walls", json::array()}};
+  if (display.eyeSeparation)
+    config["stereo"] = {{"eye_separation", *display.eyeSeparation * s}};
+  for (const ImportedWall& w : walls)
+    config["walls"].push_back({{"name", w.name},
+                               {"lower_left", vecJson(w.lowerLeft)},
+                               {"lower_right", vecJson(w.lowerRight)},
+                               {"upper_left", vecJson(w.upperLeft)},
+                               {"resolution", json::array({w.width, w.height})}});
+  DisplayConfig result = parseDisplayConfig(config, sourceName);
+  if (report) {
+    report->format = display.format;
+    report->notes = std::move(display.notes);
+  }
+  return result;
+}
+
+// ---- XML -------------------------------------------------------------------------------------
+
+XmlReader::XmlReader(const std::string& text, std::string sourceName)
+    : text_(text), sourceName_(std::move(sourceName)) {
+  const pugi::xml_parse_result result =
+      document_.load_buffer(text_.data(), text_.size(), pugi::parse_default);
+  if (!result)
+    throw Error(ErrorCode::InvalidInput, sourceName_ + ":" + std::to_string(lineOf(result.offset)) +
+                                             ": invalid XML: " + result.description());
+}
+
+pugi::xml_node XmlReader::root(const char* rootName) const {
+  const pugi::xml_node element = document_.document_element();
+  if (!element)
+    throw Error(ErrorCode::InvalidInput, sourceName_ + ": no XML element in the file");
+  if (std::string(element.name()) != rootName)
+    fail(element, std::string("the root element must be <") + rootName + ">");
+  return element;
+}
+
+int XmlReader::lineOf(std::ptrdiff_t offset) const {
+  const auto end = text_.begin() + std::clamp<std::ptrdiff_t>(offset, 0, text_.size());
+  return 1 + static_cast<int>(std::count(text_.begin(), end, '\n'));
+}
+
+std::string XmlReader::where(const pugi::xml_node& node) const {
+  std::string element = "<" + std::string(node.name());
+  for (const char* key : {"Name", "name"})
+    if (const pugi::xml_attribute a = node.attribute(key))
+      element += " " + std::string(key) + "=\"" + a.value() + "\"";
+  return sourceName_ + ":" + std::to_string(lineOf(node.offset_debug())) + ": " + element + ">";
+}
+
+void XmlReader::fail(const pugi::xml_node& node, const std::string& what) const {
+  throw Error(ErrorCode::InvalidInput, where(node) + ": " + what);
+}
+
+std::optional<std::string> XmlReader::attribute(const pugi::xml_node& node,
+                                                const char* name) const {
+  const pugi::xml_attribute a = node.attribute(name);
+  if (!a) return std::nullopt;
+  return std::string(a.value());
+}
+
+double XmlReader::number(const pugi::xml_node& node, const char* name) const {
+  const std::optional<std::string> text = attribute(node, name);
+  if (!text) fail(node, std::string("attribute '") + name + "' is missing");
+  const std::optional<double> value = parseNumber(*text);
+  if (!value)
+    fail(node, std::string("attribute '") + name + "' must be a finite number, got \"" + *text + "\"");
+  return *value;
+}
+
+glm::dvec3 XmlReader::xyz(const pugi::xml_node& node) const {
+  return {number(node, "x"), number(node, "y"), number(node, "z")};
+}
+
+}  // namespace confvis::detail
