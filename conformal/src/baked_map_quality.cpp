@@ -197,8 +197,7 @@ RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, 
   return stats;
 }
 
-CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, int stride,
-                              double discontinuityTexels) {
+CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, int stride) {
   requireMap(map.ray, "measureCoverage");
   requireMap(map.geom, "measureCoverage");
   const int n = map.geom.faceSize;
@@ -210,21 +209,19 @@ CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, in
         if (!isValid(map.geom, {face, x, y})) continue;
         ++stats.sourceTexels;
         const Vec3d d = storedDirection(map.geom, {face, x, y});
-        if (footprintSpread(map.ray, d) > discontinuityTexels * texelAngle(map.ray.faceSize)) {
-          ++stats.discontinuous;
-          continue;
-        }
         const std::optional<Vec3d> v = lookupDirection(map.ray, d);
         if (!v) {
           ++stats.unlit;
           continue;
         }
         const double error = angleBetween(*v, texelDirection(face, x, y, n)) / texelAngle(n);
+        const double footprint = footprintSpread(map.ray, d) / texelAngle(n);
         stats.maxErrorTexels = std::max(stats.maxErrorTexels, error);
-        if (error <= toleranceTexels) ++stats.covered;
+        if (error <= std::max(toleranceTexels, footprint)) ++stats.covered;
       }
-  const std::size_t lit = stats.sourceTexels - stats.unlit;
-  stats.fraction = lit > 0 ? static_cast<double>(stats.covered) / static_cast<double>(lit) : 0.0;
+  stats.fraction = stats.sourceTexels > 0 ? static_cast<double>(stats.covered) /
+                                                static_cast<double>(stats.sourceTexels)
+                                          : 0.0;
   return stats;
 }
 
@@ -244,8 +241,8 @@ nlohmann::json toJson(const RoundTripStats& s) {
 
 nlohmann::json toJson(const CoverageStats& s) {
   return {{"source_texels", s.sourceTexels}, {"covered_texels", s.covered},
-          {"unlit_texels", s.unlit}, {"discontinuous_texels", s.discontinuous},
-          {"fraction", s.fraction}, {"max_error_texels", s.maxErrorTexels}};
+          {"unlit_texels", s.unlit}, {"fraction", s.fraction},
+          {"max_error_texels", s.maxErrorTexels}};
 }
 
 }  // namespace confvis
