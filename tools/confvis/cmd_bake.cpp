@@ -74,7 +74,8 @@ int runBake(const BakeArgs& args) {
   if (!baked.cacheEntry.empty() && fs::exists(baked.cacheEntry / "bake.json", ec))
     copyBakeDirectory(baked.cacheEntry, output);
   else  // no cache, or it could not be written: the files come from memory
-    writeBakeDirectory(output, *baked.displayMap, baked.map, baked.sidecar, args.threads);
+    writeBakeDirectory(output, *baked.displayMap, baked.map, baked.sidecar, args.threads,
+                       !args.quiet);
   printSummary(baked, output);
   return 0;
 }
