@@ -91,34 +91,48 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
     const float alpha = domain.lit.empty() || domain.lit[span.triangle] ? 1.0f : 0.0f;
     float* texel = out.face(span.face).at(span.xBegin, span.y);
     std::uint8_t* mark = &covered[detail::texelIndex(span.face, span.xBegin, span.y, n)];
-    int current = hints[1] >= 0 ? hints[1] : hint;  // the previous texel's (-1: none, clamped)
-    if (hints[1] >= 0) hint = hints[1];
+    // The codomain triangle the texels are in, as linear maps of h = (hx, hy, hw): its
+    // homogeneous barycentric coordinates l1, l2 (l0 = hw - l1 - l2) and the unnormalised
+    // direction l0 s0 + l1 s1 + l2 s2 (rows of a 3 x 3 matrix).
+    int current = -1;
+    std::array<double, 3> row1{}, row2{};
+    std::array<Vec3d, 3> toDirection{};
+    auto select = [&](int triangle) {
+      current = triangle;
+      if (triangle < 0) return;
+      const detail::DiskLocator::Affine& a = codomainDisk.affine(triangle);
+      row1 = {a.m11, a.m12, -(a.m11 * a.x0 + a.m12 * a.y0)};
+      row2 = {a.m21, a.m22, -(a.m21 * a.x0 + a.m22 * a.y0)};
+      const auto& image = codomain.triangles[triangle];
+      const Vec3d& s0 = codomain.sphere[image[0]];
+      const Vec3d s1 = codomain.sphere[image[1]] - s0, s2 = codomain.sphere[image[2]] - s0;
+      // direction = hw s0 + l1 (s1 - s0) + l2 (s2 - s0)
+      for (int c = 0; c < 3; ++c) toDirection[c] = row1[c] * s1 + row2[c] * s2;
+      toDirection[2] = toDirection[2] + s0;
+    };
+    select(hints[1] >= 0 ? hints[1] : hint);
     for (int x = span.xBegin; x <= span.xEnd; ++x, texel += 4, ++mark) {
       const double k = x - span.xBegin;
       const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
-      std::array<double, 3> l{-1, -1, -1};
-      if (current >= 0) {
-        const detail::DiskLocator::Affine& a = codomainDisk.affine(current);
-        const double px = hx - a.x0 * hw, py = hy - a.y0 * hw;
-        l[1] = a.m11 * px + a.m12 * py;
-        l[2] = a.m21 * px + a.m22 * py;
-        l[0] = hw - l[1] - l[2];
-      }
       const double tolerance = -1e-12 * hw;
-      if (!(l[0] >= tolerance && l[1] >= tolerance && l[2] >= tolerance)) {
-        const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, hint);
-        l = hit.barycentric;
-        current = hit.inside ? hit.triangle : -1;  // outside: clamped, not linear in x
-        hint = hit.triangle;
-        const auto& image = codomain.triangles[hit.triangle];
-        const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
-                          l[2] * codomain.sphere[image[2]];
-        writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
+      bool inside = false;
+      if (current >= 0) {
+        const double l1 = row1[0] * hx + row1[1] * hy + row1[2] * hw;
+        const double l2 = row2[0] * hx + row2[1] * hy + row2[2] * hw;
+        inside = l1 >= tolerance && l2 >= tolerance && hw - l1 - l2 >= tolerance;
+      }
+      if (inside) {
+        const Vec3d sum = hx * toDirection[0] + hy * toDirection[1] + hw * toDirection[2];
+        writeDirection(texel, sum, codomain.sphere[codomain.triangles[current][0]], alpha);
       } else {
-        const auto& image = codomain.triangles[current];
+        const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, hint);
+        const auto& image = codomain.triangles[hit.triangle];
+        const std::array<double, 3>& l = hit.barycentric;
         const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
                           l[2] * codomain.sphere[image[2]];
         writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
+        select(hit.inside ? hit.triangle : -1);  // outside: clamped, not linear in x
+        hint = hit.triangle;
       }
       *mark = 1;
       if (x == span.xBegin) hints[1] = current;

@@ -65,7 +65,7 @@ std::optional<LoadedBake> loadCacheEntry(const fs::path& entry, const DisplayCon
 
 nlohmann::json publishCacheEntry(const fs::path& entry, const DisplayMap& displayMap,
                                  const RetargetMap& map, const nlohmann::json& sidecar,
-                                 int threads) {
+                                 int threads, bool showProgress) {
   static std::atomic<int> counter{0};
   const fs::path temp = entry.parent_path() / (".tmp-" + entry.filename().string() + "-" +
                                                std::to_string(getpid()) + "-" +
@@ -73,7 +73,7 @@ nlohmann::json publishCacheEntry(const fs::path& entry, const DisplayMap& displa
   std::error_code ec;
   fs::remove_all(temp, ec);
   try {
-    const nlohmann::json written = writeBakeDirectory(temp, displayMap, map, sidecar, threads);
+    const nlohmann::json written = writeBakeDirectory(temp, displayMap, map, sidecar, threads, showProgress);
     fs::rename(temp, entry, ec);  // atomic; fails if another process published first
     if (ec) fs::remove_all(temp, ec);
     return written;

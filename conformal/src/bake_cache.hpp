@@ -20,6 +20,7 @@ std::optional<LoadedBake> loadCacheEntry(const std::filesystem::path& entry,
 // Writes the bake directory into a temporary folder beside `entry` and renames it into place.
 // If another process published the same entry first, keeps theirs. Returns the sidecar written.
 nlohmann::json publishCacheEntry(const std::filesystem::path& entry, const DisplayMap& displayMap,
-                                 const RetargetMap& map, const nlohmann::json& sidecar, int threads);
+                                 const RetargetMap& map, const nlohmann::json& sidecar, int threads,
+                                 bool showProgress);
 
 }  // namespace confvis::detail

@@ -47,12 +47,14 @@ BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptio
   bake.threads = options.threads;
   bake.showProgress = options.showProgress;
   result.map = bakeRetargetMap(displayMap, result.config.cubeResolution, bake, &result.timings);
-  result.sidecar = makeBakeSidecar(result.config, displayMap, result.map, result.timings);
+  result.sidecar = makeBakeSidecar(result.config, displayMap, result.map, result.timings, 0,
+                                   options.showProgress);
   if (options.useCache) {
     // A cache that cannot be written (read-only, full disk) costs the next call a bake, no more.
     try {
       result.sidecar = detail::publishCacheEntry(result.cacheEntry, displayMap, result.map,
-                                                 result.sidecar, options.threads);
+                                                 result.sidecar, options.threads,
+                                                 options.showProgress);
     } catch (const Error& e) {
       result.cacheNote = std::string("cache entry not written: ") + e.what();
     }

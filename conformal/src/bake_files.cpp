@@ -10,6 +10,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/png_io.hpp"
+#include "confvis/base/progress.hpp"
 #include "confvis/conformal/baked_map_quality.hpp"
 #include "confvis/conformal/obj_output.hpp"
 #include "confvis/engine/display_config.hpp"
@@ -57,17 +58,23 @@ std::vector<std::string> listedFiles(const fs::path& directory, const json& side
 }  // namespace
 
 json makeBakeSidecar(const DisplayConfig& config, const DisplayMap& displayMap,
-                     const RetargetMap& map, const BakeTimings& timings, int qualityStride) {
+                     const RetargetMap& map, const BakeTimings& timings, int qualityStride,
+                     bool showProgress) {
   const int n = map.resolution();
   const int stride = qualityStride > 0 ? qualityStride : std::max(1, n / 128);
   const auto start = Clock::now();
-  const BakedConformality rayConformality =
-      measureBakedConformality(map.ray, {.margin = 2, .discontinuityTolerance = 0.5, .stride = stride});
-  const BakedConformality geomConformality =
-      measureBakedConformality(map.geom, {.margin = 2, .discontinuityTolerance = 0.5, .stride = stride});
+  Progress progress("quality", 5, showProgress);
+  const ConformalityOptions conformality{.margin = 2, .discontinuityTolerance = 0.5, .stride = stride};
+  const BakedConformality rayConformality = measureBakedConformality(map.ray, conformality);
+  progress.advance();
+  const BakedConformality geomConformality = measureBakedConformality(map.geom, conformality);
+  progress.advance();
   const RoundTripStats rayGeom = measureRoundTrip(map.ray, map.geom, stride);
+  progress.advance();
   const RoundTripStats geomRay = measureRoundTrip(map.geom, map.ray, stride);
+  progress.advance();
   const CoverageStats coverage = measureCoverage(map, 1.0, stride);
+  progress.finish();
   const double qualitySeconds = secondsSince(start);
   return {
       {"format", kBakeFormat},
@@ -103,7 +110,7 @@ json makeBakeSidecar(const DisplayConfig& config, const DisplayMap& displayMap,
 }
 
 json writeBakeDirectory(const fs::path& directory, const DisplayMap& displayMap,
-                        const RetargetMap& map, json sidecar, int threads) {
+                        const RetargetMap& map, json sidecar, int threads, bool showProgress) {
   std::error_code ec;
   fs::create_directories(directory, ec);
   if (ec)
@@ -137,7 +144,12 @@ json writeBakeDirectory(const fs::path& directory, const DisplayMap& displayMap,
        }},
   };
   const auto start = Clock::now();
-  detail::parallelFor(files.size(), threads, [&](std::size_t i) { files[i].second(directory / files[i].first); });
+  Progress progress("files", files.size(), showProgress);
+  detail::parallelFor(files.size(), threads, [&](std::size_t i) {
+    files[i].second(directory / files[i].first);
+    progress.advance();
+  });
+  progress.finish();
   json sizes = json::object();
   for (const auto& [name, write] : files) sizes[name] = fs::file_size(directory / name);
   sidecar["files"] = sizes;

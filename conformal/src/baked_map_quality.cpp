@@ -186,6 +186,10 @@ RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, 
       }
   stats.measured = errors.size();
   std::sort(errors.begin(), errors.end());
+  const std::size_t valid = stats.measured + stats.discontinuous + stats.invalid;
+  const auto below = static_cast<std::size_t>(
+      std::lower_bound(errors.begin(), errors.end(), 1.0) - errors.begin());
+  stats.fractionBelowOneTexel = valid ? static_cast<double>(below) / static_cast<double>(valid) : 0;
   stats.p50 = percentile(errors, 0.5);
   stats.p95 = percentile(errors, 0.95);
   stats.p99 = percentile(errors, 0.99);
@@ -193,8 +197,7 @@ RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, 
   return stats;
 }
 
-CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, int stride,
-                              double discontinuityTexels) {
+CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, int stride) {
   requireMap(map.ray, "measureCoverage");
   requireMap(map.geom, "measureCoverage");
   const int n = map.geom.faceSize;
@@ -206,21 +209,19 @@ CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, in
         if (!isValid(map.geom, {face, x, y})) continue;
         ++stats.sourceTexels;
         const Vec3d d = storedDirection(map.geom, {face, x, y});
-        if (footprintSpread(map.ray, d) > discontinuityTexels * texelAngle(map.ray.faceSize)) {
-          ++stats.discontinuous;
-          continue;
-        }
         const std::optional<Vec3d> v = lookupDirection(map.ray, d);
         if (!v) {
           ++stats.unlit;
           continue;
         }
         const double error = angleBetween(*v, texelDirection(face, x, y, n)) / texelAngle(n);
+        const double footprint = footprintSpread(map.ray, d) / texelAngle(n);
         stats.maxErrorTexels = std::max(stats.maxErrorTexels, error);
-        if (error <= toleranceTexels) ++stats.covered;
+        if (error <= std::max(toleranceTexels, footprint)) ++stats.covered;
       }
-  const std::size_t lit = stats.sourceTexels - stats.unlit;
-  stats.fraction = lit > 0 ? static_cast<double>(stats.covered) / static_cast<double>(lit) : 0.0;
+  stats.fraction = stats.sourceTexels > 0 ? static_cast<double>(stats.covered) /
+                                                static_cast<double>(stats.sourceTexels)
+                                          : 0.0;
   return stats;
 }
 
@@ -234,13 +235,14 @@ nlohmann::json toJson(const BakedConformality& s) {
 nlohmann::json toJson(const RoundTripStats& s) {
   return {{"measured_texels", s.measured}, {"discontinuous_texels", s.discontinuous},
           {"invalid_texels", s.invalid}, {"error_p50_texels", s.p50},
-          {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99}, {"error_max_texels", s.max}};
+          {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99}, {"error_max_texels", s.max},
+          {"fraction_below_one_texel", s.fractionBelowOneTexel}};
 }
 
 nlohmann::json toJson(const CoverageStats& s) {
   return {{"source_texels", s.sourceTexels}, {"covered_texels", s.covered},
-          {"unlit_texels", s.unlit}, {"discontinuous_texels", s.discontinuous},
-          {"fraction", s.fraction}, {"max_error_texels", s.maxErrorTexels}};
+          {"unlit_texels", s.unlit}, {"fraction", s.fraction},
+          {"max_error_texels", s.maxErrorTexels}};
 }
 
 }  // namespace confvis

@@ -39,11 +39,23 @@ std::vector<std::vector<RasterBinEntry>> binSphereTriangles(
     const std::array<Vec3d, 4> sides = {frame.normal + frame.right, frame.normal - frame.right,
                                         frame.normal + frame.down, frame.normal - frame.down};
     for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
-      polygon = {sphere[triangles[t][0]], sphere[triangles[t][1]], sphere[triangles[t][2]]};
+      const std::array<Vec3d, 3> corners = {sphere[triangles[t][0]], sphere[triangles[t][1]],
+                                            sphere[triangles[t][2]]};
+      // Most triangles lie wholly inside or wholly outside one side plane: clip only the rest.
+      bool outside = false, straddles = false;
       for (const Vec3d& side : sides) {
-        clip(polygon, side, scratch);
-        if (polygon.empty()) break;
+        int in = 0;
+        for (const Vec3d& p : corners) in += dot(p, side) >= 0;
+        outside |= in == 0;
+        straddles |= in > 0 && in < 3;
       }
+      if (outside) continue;
+      polygon.assign(corners.begin(), corners.end());
+      if (straddles)
+        for (const Vec3d& side : sides) {
+          clip(polygon, side, scratch);
+          if (polygon.empty()) break;
+        }
       if (polygon.empty()) continue;
       double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
       bool degenerate = false;

@@ -147,6 +147,19 @@ TEST(BakedMapQuality, FlagsABakedNonConformalMeshMap) {
   EXPECT_LT(identity.ratioMax, 1.01);
 }
 
+TEST(BakedMapQuality, CoverageFlagsAnImageThatMissesPartOfTheSource) {
+  // ray folds the back hemisphere onto the front one, so its image is the front hemisphere only:
+  // the back half of the source is not covered, whatever geom claims.
+  RetargetMap folded = RetargetMap::identity(32);
+  fillCubeMap(folded.ray, [](const Vec3d& d) {
+    return std::pair{Vec3d{d.x, d.y, -std::abs(d.z)}, true};
+  });
+  const CoverageStats coverage = measureCoverage(folded);
+  EXPECT_EQ(coverage.sourceTexels, 6u * 32 * 32);
+  EXPECT_NEAR(coverage.fraction, 0.5, 0.05);
+  EXPECT_NEAR(measureCoverage(RetargetMap::identity(32)).fraction, 1.0, 1e-12);
+}
+
 TEST(BakedMapQuality, SkipsTheJumpAcrossACut) {
   // A map that is continuous except across the plane x = 0, where it jumps by 90 degrees (like
   // geom across the source cut): the texels next to the jump are reported, not measured.

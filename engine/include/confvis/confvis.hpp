@@ -26,7 +26,12 @@
 #include "confvis/engine/view.hpp"
 #include "confvis/engine/viewer.hpp"
 
-// The conformal map of a display, baked into direction cube maps.
+// The conformal map of a display, baked into direction cube maps (bakeDisplay: config -> map,
+// with the on-disk cache), their files and their measured quality.
+#include "confvis/conformal/bake.hpp"
+#include "confvis/conformal/bake_display.hpp"
+#include "confvis/conformal/bake_files.hpp"
+#include "confvis/conformal/baked_map_quality.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 

@@ -32,13 +32,14 @@ inline constexpr int kBakeFormatVersion = 1;
 // stride that keeps about 128 x 128 samples per face.
 nlohmann::json makeBakeSidecar(const DisplayConfig& config, const DisplayMap& displayMap,
                                const RetargetMap& map, const BakeTimings& timings,
-                               int qualityStride = 0);
+                               int qualityStride = 0, bool showProgress = false);
 
 // Writes every file into `directory` (created if missing), bake.json last with the sizes of the
 // others added under "files"; returns what it wrote to bake.json. Throws Error(IoFailure)
 // naming the file that failed.
 nlohmann::json writeBakeDirectory(const std::filesystem::path& directory, const DisplayMap& displayMap,
-                        const RetargetMap& map, nlohmann::json sidecar, int threads = 0);
+                        const RetargetMap& map, nlohmann::json sidecar, int threads = 0,
+                        bool showProgress = false);
 
 struct LoadedBake {
   RetargetMap map;

@@ -45,6 +45,9 @@ struct RoundTripStats {
   std::size_t discontinuous = 0;
   std::size_t invalid = 0;  // inverse lookup invalid (alpha < 0.5)
   double p50 = 0, p95 = 0, p99 = 0, max = 0;  // angle(inverse(forward(d)), d), texels
+  // Of all valid texels (discontinuous and invalid ones counted as failures): error below one
+  // texel.
+  double fractionBelowOneTexel = 0;
 };
 
 // For every texel d of `forward` with alpha >= 0.5: v = the stored direction, then a bilinear
@@ -54,17 +57,19 @@ RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, 
 
 struct CoverageStats {
   std::size_t sourceTexels = 0;  // geom texels with alpha >= 0.5: directions v in S
-  std::size_t covered = 0;       // v = ray(d) within tolerance for the lit d = geom(v)
-  std::size_t unlit = 0;         // geom(v) falls on an unlit part (bezel) of the display
-  std::size_t discontinuous = 0; // ray's footprint at geom(v) straddles a discontinuity
-  double fraction = 0;           // covered / (sourceTexels - unlit)
+  std::size_t covered = 0;       // v = ray(d) for the lit d = geom(v), within the tolerance
+  std::size_t unlit = 0;         // geom(v) falls on an unlit part of the display (a bezel) or
+                                 // within half a texel of its rim
+  double fraction = 0;           // covered / sourceTexels
   double maxErrorTexels = 0;     // largest angle(ray(geom(v)), v) over lit v
 };
 
 // Whether the image of ray covers the source field: every v in S must be ray(d) for the lit
-// display direction d = geom(v), within `toleranceTexels`.
-CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels = 1.0, int stride = 1,
-                              double discontinuityTexels = 8.0);
+// display direction d = geom(v). The tolerance is `toleranceTexels`, or the spread of the
+// directions ray's bilinear lookup at d blends where that is larger: where ray magnifies (the
+// whole sphere shown on a few walls), one texel of the display spans several of the source,
+// and no lookup can be closer than its own footprint.
+CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels = 1.0, int stride = 1);
 
 nlohmann::json toJson(const BakedConformality& stats);
 nlohmann::json toJson(const RoundTripStats& stats);

@@ -1,0 +1,147 @@
+// Bake benchmark (run by hand, never in CI): time from a display config to both cube maps in
+// memory (computeDisplayMap + bakeRetargetMap), split into template, flow, alignment and bake,
+// per refinement edge length and cube-map resolution, at the config's reference point and at a
+// moved one (a tracked head). The baseline, measured in the same run, is filling both maps with
+// the identity (RetargetMap::identity, one thread): the least a bake at that resolution must do.
+// Wall times (ms) per stage, and the process CPU time of the whole run and of the bake alone.
+//
+//   build/confvis_bench_bake [--config configs/cave5.json] [--edges 0.2,0.1,0.05]
+//                            [--resolutions 256,512,1024] [--repeat 5] [--threads 0]
+#include <CLI/CLI.hpp>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "confvis/conformal/bake.hpp"
+#include "confvis/conformal/bake_display.hpp"
+#include "confvis/conformal/baked_map_quality.hpp"
+#include "confvis/conformal/display_map.hpp"
+#include "confvis/engine/display_config.hpp"
+
+using namespace confvis;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+// CPU seconds of the whole process (all threads): on a shared machine wall times inflate with
+// the load, CPU time much less.
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+         1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+template <class T>
+std::vector<T> parseList(const std::string& text) {
+  std::vector<T> values;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) values.push_back(static_cast<T>(std::stod(item)));
+  return values;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+double stage(const DisplayMap& map, const char* key) {
+  return map.stats.contains(key) && map.stats[key].is_number() ? map.stats[key].get<double>() : 0;
+}
+
+struct Sample {
+  double templ = 0, flow = 0, alignment = 0, bake = 0, ray = 0, geom = 0, extend = 0, total = 0;
+  double cpu = 0, bakeCpu = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"confvis bake benchmark: config -> both cube maps in memory"};
+  std::string configPath = std::string(CONFVIS_SOURCE_DIR) + "/configs/cave5.json";
+  std::string edges = "0.2,0.1,0.05", resolutions = "256,512,1024";
+  int repeat = 5, threads = 0;
+  app.add_option("--config", configPath, "Display config")->capture_default_str();
+  app.add_option("--edges", edges, "Refinement edge lengths, metres")->capture_default_str();
+  app.add_option("--resolutions", resolutions, "Cube-map face sizes")->capture_default_str();
+  app.add_option("--repeat", repeat, "Runs per row (the median is reported)")->capture_default_str();
+  app.add_option("--threads", threads, "Bake threads (0: one per core)")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  const DisplayConfig base = loadDisplayConfig(configPath);
+  const Vec3d moved{0.15, 0.1, -0.2};  // a head 27 cm off centre
+  std::printf("config %s, %u hardware threads, bake threads %d, median of %d runs; times in ms\n",
+              configPath.c_str(), std::thread::hardware_concurrency(), threads, repeat);
+  std::printf("%-6s %5s %-9s %6s %6s | %8s %8s %9s %8s (%6s %6s %6s) | %8s | %8s %8s | %8s %6s | %s\n",
+              "edge", "res", "reference", "S tris", "T tris", "template", "flow", "alignment",
+              "bake", "ray", "geom", "extend", "total", "cpu", "bake cpu", "baseline", "bake/b",
+              "ray ratio p50/p95/max, flipped");
+  for (double edge : parseList<double>(edges))
+    for (int n : parseList<int>(resolutions))
+      for (const bool movedReference : {false, true}) {
+        BakeDisplayOptions overrides;
+        overrides.edgeLength = edge;
+        overrides.resolution = n;
+        if (movedReference) overrides.reference = moved;
+        const DisplayConfig config = effectiveBakeConfig(base, overrides);
+        std::vector<Sample> samples;
+        DisplayMap last;
+        RetargetMap map;
+        for (int r = 0; r < repeat; ++r) {
+          const auto start = Clock::now();
+          const double cpuStart = processCpuSeconds();
+          last = computeDisplayMap(config);
+          const double bakeCpuStart = processCpuSeconds();
+          BakeOptions bake;
+          bake.reference = {config.reference.x, config.reference.y, config.reference.z};
+          bake.threads = threads;
+          BakeTimings t;
+          map = bakeRetargetMap(last, n, bake, &t);
+          Sample s;
+          s.total = secondsSince(start);
+          s.cpu = processCpuSeconds() - cpuStart;
+          s.bakeCpu = processCpuSeconds() - bakeCpuStart;
+          s.templ = stage(last, "template");
+          s.flow = stage(last, "flow");
+          s.alignment = stage(last, "alignment");
+          s.bake = t.total;
+          s.ray = t.ray;
+          s.geom = t.geom;
+          s.extend = t.extend;
+          samples.push_back(s);
+        }
+        std::vector<double> baseline;
+        for (int r = 0; r < std::max(3, repeat); ++r) {
+          const auto start = Clock::now();
+          const RetargetMap identity = RetargetMap::identity(n);
+          baseline.push_back(secondsSince(start));
+        }
+        auto med = [&](double Sample::*field) {
+          std::vector<double> v;
+          for (const Sample& s : samples) v.push_back(s.*field * 1e3);
+          return median(v);
+        };
+        const BakedConformality q =
+            measureBakedConformality(map.ray, {.margin = 2, .discontinuityTolerance = 0.5, .stride = std::max(1, n / 256)});
+        std::printf("%-6.2f %5d %-9s %6zu %6zu | %8.2f %8.2f %9.2f %8.2f (%6.2f %6.2f %6.2f) | %8.2f | %8.2f %8.2f | %8.2f %6.2f | %.4f/%.4f/%.3f, %zu\n",
+                    edge, n, movedReference ? "moved" : "config", last.source.triangles.size(),
+                    last.target.triangles.size(), med(&Sample::templ), med(&Sample::flow),
+                    med(&Sample::alignment), med(&Sample::bake), med(&Sample::ray),
+                    med(&Sample::geom), med(&Sample::extend), med(&Sample::total),
+                    med(&Sample::cpu), med(&Sample::bakeCpu),
+                    median(baseline) * 1e3, med(&Sample::bake) / (median(baseline) * 1e3),
+                    q.ratioP50, q.ratioP95, q.ratioMax, q.flipped);
+        std::fflush(stdout);
+      }
+  return 0;
+}
