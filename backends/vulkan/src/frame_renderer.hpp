@@ -1,0 +1,52 @@
+#pragma once
+// Per-frame work: offscreen colour + depth targets per wall size (one layer per eye), the frame's
+// uniform and view buffers, the geom cube map, command recording (all eyes of a wall in one
+// multiview pass), submission and readback into images.
+#include <cstddef>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "confvis/backends/render_backend.hpp"
+#include "confvis/base/progress.hpp"
+#include "frame_plan.hpp"
+#include "gpu_scene.hpp"
+#include "memory.hpp"
+#include "pipelines.hpp"
+
+namespace confvis::vulkan {
+
+class FrameRenderer {
+ public:
+  FrameRenderer(VulkanContext& context, Pipelines& pipelines);
+
+  // Renders every wall of `plan` (conformal when `map` is non-null), returning images in wall
+  // order then eye order.
+  std::vector<WallImage> render(const FramePlan& plan, const GpuScene& scene,
+                                const RetargetMap* map, Progress& progress);
+
+ private:
+  struct Targets {
+    Image color, depth;
+    UniqueFramebuffer framebuffer;
+    Buffer readback;
+  };
+  Targets& targets(std::uint32_t width, std::uint32_t height, std::uint32_t views,
+                   VkRenderPass renderPass);
+  void uploadFrame(const FramePlan& plan);
+  void uploadMap(const RetargetMap& map);
+  void recordWall(VkCommandBuffer cmd, const FramePlan& plan, std::size_t wall,
+                  const GpuScene& scene, bool conformal, const Targets& targets);
+
+  VulkanContext& context_;
+  Pipelines& pipelines_;
+  std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, Targets> targets_;
+  Buffer frameBuffer_, viewBuffer_;
+  UniqueDescriptorPool pool_;
+  VkDescriptorSet frameSet_ = VK_NULL_HANDLE, warpSet_ = VK_NULL_HANDLE;
+  Image geomMap_;
+  UniqueSampler warpSampler_;
+  std::size_t mapHash_ = 0;
+};
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,35 @@
+// Resources shared by the confvis Vulkan backend's shaders (backends/vulkan/src/pipelines.cpp
+// creates the matching layouts). Not part of the public warp interface (confvis_warp.glsl).
+#ifndef CONFVIS_RENDER_COMMON_GLSL
+#define CONFVIS_RENDER_COMMON_GLSL
+
+#extension GL_EXT_multiview : require
+
+// Set 0: the frame. worldToPhysical undoes the virtual camera: a world (virtual) point x goes to
+// c + R^T (x - position) in the physical frame. warpCentre.xyz is the map's reference point.
+layout(set = 0, binding = 0) uniform Frame {
+  mat4 worldToPhysical;
+  vec4 warpCentre;
+} frame;
+
+// One entry per (wall, eye), index wall * viewCount + gl_ViewIndex.
+// params: x = largest bend error (radians), y = largest segment angle (radians),
+//         z = smallest cut gap (radians), w = 1 to tessellate, 0 to draw the warp unsubdivided.
+struct View {
+  mat4 viewProj;     // physical frame -> Vulkan clip space of the wall for this eye
+  vec4 eyeVirtual;   // xyz: where the headlight sits, in world coordinates
+  vec4 params;
+};
+layout(set = 0, binding = 1, std430) readonly buffer Views { View views[]; };
+
+layout(push_constant) uniform Push {
+  vec4 baseColorFactor;
+  uint wallIndex;
+  uint viewCount;
+  uint hasNormals;
+} push;
+
+View currentView() { return views[push.wallIndex * push.viewCount + gl_ViewIndex]; }
+View wallView() { return views[push.wallIndex * push.viewCount]; }  // eye-independent params
+
+#endif
