@@ -93,13 +93,18 @@ vec4 confvisWarpRelative(vec3 relative) {
 // confvisWarpRelative) so that the drawn polyline stays within maxErrorAngle (radians, seen
 // from c) of the bent edge: the warped midpoint's deviation from the chord shrinks with the square
 // of the segment count. maxSegmentAngle caps the angular length of a segment so that a long edge
-// whose bend happens to vanish at its midpoint is still subdivided. Symmetric in (a, b), so the
-// two triangles sharing an edge agree and leave no cracks. Clamped to [1, 64].
+// whose bend happens to vanish at its midpoint is still subdivided. An edge across the source's
+// cut (the map jumps: its midpoint lands far off the chord, farther than any smooth bend of a
+// quarter of the edge's own angle) gets the most segments, so that the triangles dropped along the
+// cut (confvisDropTriangle) are as small as possible. Symmetric in (a, b), so the two triangles
+// sharing an edge agree and leave no cracks. In [1, 64].
 float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
                           float maxSegmentAngle) {
   vec3 wm = confvisWarpRelative(0.5 * (a + b)).xyz;
   float deviation = confvisAngle(wm, 0.5 * (wa + wb));
-  float segments = max(sqrt(deviation / maxErrorAngle), confvisAngle(a, b) / maxSegmentAngle);
+  float edge = confvisAngle(a, b);
+  if (deviation > 0.25 * edge + maxErrorAngle) return 64.0;
+  float segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
   return clamp(ceil(segments), 1.0, 64.0);
 }
 

@@ -4,13 +4,18 @@
 // bad-pixel budget.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "confvis/backends/vulkan_backend.hpp"
 #include "confvis/engine/display_config.hpp"
+#include "confvis/engine/view.hpp"
 
 namespace confvis::test {
 
@@ -73,6 +78,54 @@ inline PixelComparison comparePixels(const ImageRGBA& a, const ImageRGBA& b, flo
       if (worst > tolerance) ++c.bad;
     }
   return c;
+}
+
+// The colour a scene shows along a direction from the eye; nullopt where nothing is drawn.
+using DirectionColor = std::function<std::optional<glm::vec3>(glm::dvec3)>;
+
+struct AnalyticComparison {
+  std::size_t pixels = 0, unambiguous = 0, bad = 0, empty = 0;
+};
+
+// Compares `image` (a render of `wall` seen from `eye`) with `expected` at every pixel whose
+// centre and four half-pixel neighbours all expect the same (colour, or nothing drawn: alpha 0);
+// pixels on an edge are left out, since rasterization places edges only to within a pixel.
+inline AnalyticComparison compareAnalytic(const ImageRGBA& image, const Wall& wall,
+                                          glm::dvec3 eye, const DirectionColor& expected,
+                                          float tolerance) {
+  const WallView view = makeWallView(wall, eye);
+  const double sx = double(wall.width) / image.width, sy = double(wall.height) / image.height;
+  AnalyticComparison c;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      ++c.pixels;
+      const auto colorAt = [&](double dx, double dy) {
+        return expected(view.rayDirection((x + 0.5 + dx) * sx, (y + 0.5 + dy) * sy));
+      };
+      const std::optional<glm::vec3> centre = colorAt(0, 0);
+      bool same = true;
+      for (auto [dx, dy] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}}) {
+        const std::optional<glm::vec3> other = colorAt(dx, dy);
+        same = same && other.has_value() == centre.has_value() &&
+               (!centre || glm::all(glm::equal(*other, *centre)));
+      }
+      if (!same) continue;
+      ++c.unambiguous;
+      const float* p = image.at(x, y);
+      const glm::vec4 want = centre ? glm::vec4(*centre, 1.0f) : glm::vec4(0.0f);
+      if (!centre) ++c.empty;
+      float error = 0.0f;
+      for (int k = 0; k < 4; ++k) error = std::max(error, std::abs(p[k] - want[k]));
+      if (error > tolerance) ++c.bad;
+    }
+  return c;
+}
+
+inline const WallImage& imageOf(const RenderResult& result, const std::string& wall,
+                                Eye eye = Eye::Center) {
+  for (const WallImage& image : result.images)
+    if (image.wall == wall && image.eye == eye) return image;
+  throw std::runtime_error("no image for wall " + wall);
 }
 
 }  // namespace confvis::test
