@@ -12,7 +12,7 @@ layout(set = 0, binding = 0) uniform Frame {
   vec4 warpCentre;
 } frame;
 
-// One entry per (wall, eye), index wall * viewCount + gl_ViewIndex.
+// One entry per (wall, eye), index wall * eyes + eye; a pass draws views viewBase + gl_ViewIndex.
 // params: x = largest bend error (radians), y = largest segment angle (radians),
 //         z = smallest cut gap (radians), w = 1 to tessellate, 0 to draw the warp unsubdivided.
 struct View {
@@ -24,12 +24,11 @@ layout(set = 0, binding = 1, std430) readonly buffer Views { View views[]; };
 
 layout(push_constant) uniform Push {
   vec4 baseColorFactor;
-  uint wallIndex;
-  uint viewCount;
+  uint viewBase;  // views[] index of this pass's view 0
   uint hasNormals;
 } push;
 
-View currentView() { return views[push.wallIndex * push.viewCount + gl_ViewIndex]; }
-View wallView() { return views[push.wallIndex * push.viewCount]; }  // eye-independent params
+View currentView() { return views[push.viewBase + gl_ViewIndex]; }
+View wallView() { return views[push.viewBase]; }  // for the eye-independent params
 
 #endif

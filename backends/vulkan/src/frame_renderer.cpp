@@ -138,10 +138,9 @@ void FrameRenderer::uploadMap(const RetargetMap& map) {
   mapHash_ = hash;
 }
 
-void FrameRenderer::recordWall(VkCommandBuffer cmd, const FramePlan& plan, std::size_t wall,
-                               const GpuScene& scene, bool conformal, const Targets& t) {
-  const std::uint32_t width = plan.widths[wall], height = plan.heights[wall];
-  const auto views = static_cast<std::uint32_t>(plan.eyes.size());
+void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
+                               const GpuScene& scene, const Targets& t) {
+  const std::uint32_t width = request.width, height = request.height, views = request.views;
   const Pipelines::Pass& pass = pipelines_.pass(views);
   std::array<VkClearValue, 2> clear{};
   clear[0].color = {{0.0f, 0.0f, 0.0f, 0.0f}};  // alpha 0 where nothing is drawn
@@ -158,11 +157,11 @@ void FrameRenderer::recordWall(VkCommandBuffer cmd, const FramePlan& plan, std::
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                    conformal ? pass.conformal.get() : pass.plain.get());
+                    request.conformal ? pass.conformal.get() : pass.plain.get());
   const VkPipelineLayout layout = pipelines_.layout();
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &frameSet_, 0,
                           nullptr);
-  if (conformal)
+  if (request.conformal)
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kWarpDescriptorSet, 1,
                             &warpSet_, 0, nullptr);
   const VkDeviceSize offset = 0;
@@ -172,8 +171,8 @@ void FrameRenderer::recordWall(VkCommandBuffer cmd, const FramePlan& plan, std::
   for (const GpuScene::Draw& draw : scene.draws()) {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material, 0,
                             nullptr);
-    const PushConstants push{draw.baseColorFactor, static_cast<std::uint32_t>(wall), views,
-                             draw.hasNormals ? 1u : 0u, 0u};
+    const PushConstants push{draw.baseColorFactor, request.viewBase, draw.hasNormals ? 1u : 0u,
+                             {0u, 0u}};
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
     vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
   }
@@ -192,21 +191,38 @@ void FrameRenderer::recordWall(VkCommandBuffer cmd, const FramePlan& plan, std::
                        &toHost, 0, nullptr, 0, nullptr);
 }
 
+std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
+                                                 const GpuScene& scene) {
+  const VkRenderPass renderPass = pipelines_.pass(request.views).renderPass.get();
+  const Targets& t = targets(request.width, request.height, request.views, renderPass);
+  context_.submitAndWait([&](VkCommandBuffer cmd) { recordPass(cmd, request, scene, t); });
+  std::vector<ImageRGBA> layers;
+  for (std::uint32_t layer = 0; layer < request.views; ++layer)
+    layers.push_back(layerToImage(t.readback, request.width, request.height, layer));
+  return layers;
+}
+
 std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuScene& scene,
-                                             const RetargetMap* map, Progress& progress) {
+                                             const RetargetMap* map, bool multiview,
+                                             Progress& progress) {
   const bool conformal = map != nullptr;
   if (conformal) uploadMap(*map);
   uploadFrame(plan);
-  const auto views = static_cast<std::uint32_t>(plan.eyes.size());
-  const VkRenderPass renderPass = pipelines_.pass(views).renderPass.get();
+  const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());
   std::vector<WallImage> images;
   for (std::size_t wall = 0; wall < plan.walls.size(); ++wall) {
-    const Targets& t = targets(plan.widths[wall], plan.heights[wall], views, renderPass);
-    context_.submitAndWait(
-        [&](VkCommandBuffer cmd) { recordWall(cmd, plan, wall, scene, conformal, t); });
-    for (std::uint32_t layer = 0; layer < views; ++layer)
-      images.push_back({plan.walls[wall]->name, plan.eyes[layer],
-                        layerToImage(t.readback, plan.widths[wall], plan.heights[wall], layer)});
+    PassRequest request{plan.widths[wall], plan.heights[wall],
+                        static_cast<std::uint32_t>(wall) * eyes, eyes, conformal};
+    std::vector<ImageRGBA> layers;
+    if (multiview) {
+      layers = renderPass(request, scene);  // every eye in one multiview pass
+    } else {
+      request.views = 1;
+      for (std::uint32_t eye = 0; eye < eyes; ++eye, ++request.viewBase)
+        layers.push_back(std::move(renderPass(request, scene).front()));
+    }
+    for (std::uint32_t eye = 0; eye < eyes; ++eye)
+      images.push_back({plan.walls[wall]->name, plan.eyes[eye], std::move(layers[eye])});
     progress.advance();
   }
   return images;

@@ -21,9 +21,10 @@ class FrameRenderer {
   FrameRenderer(VulkanContext& context, Pipelines& pipelines);
 
   // Renders every wall of `plan` (conformal when `map` is non-null), returning images in wall
-  // order then eye order.
+  // order then eye order. multiview: all eyes of a wall in one pass (VK_KHR_multiview);
+  // otherwise one pass per eye (see multiview_probe.hpp for why that exists).
   std::vector<WallImage> render(const FramePlan& plan, const GpuScene& scene,
-                                const RetargetMap* map, Progress& progress);
+                                const RetargetMap* map, bool multiview, Progress& progress);
 
  private:
   struct Targets {
@@ -35,8 +36,16 @@ class FrameRenderer {
                    VkRenderPass renderPass);
   void uploadFrame(const FramePlan& plan);
   void uploadMap(const RetargetMap& map);
-  void recordWall(VkCommandBuffer cmd, const FramePlan& plan, std::size_t wall,
-                  const GpuScene& scene, bool conformal, const Targets& targets);
+  struct PassRequest {
+    std::uint32_t width, height;
+    std::uint32_t viewBase;  // index into FramePlan::views of the pass's view 0
+    std::uint32_t views;     // multiview layers drawn in the pass
+    bool conformal;
+  };
+  // Draws one pass, reads it back; one image per view.
+  std::vector<ImageRGBA> renderPass(const PassRequest& request, const GpuScene& scene);
+  void recordPass(VkCommandBuffer cmd, const PassRequest& request, const GpuScene& scene,
+                  const Targets& targets);
 
   VulkanContext& context_;
   Pipelines& pipelines_;

@@ -31,10 +31,9 @@ struct ViewData {
 // Push constant block `Push` of confvis_render_common.glsl.
 struct PushConstants {
   glm::vec4 baseColorFactor;
-  std::uint32_t wallIndex;
-  std::uint32_t viewCount;
+  std::uint32_t viewBase;
   std::uint32_t hasNormals;
-  std::uint32_t padding;
+  std::uint32_t padding[2];
 };
 
 // Interleaved vertex as uploaded by GpuScene.

@@ -10,6 +10,7 @@
 #include "frame_plan.hpp"
 #include "frame_renderer.hpp"
 #include "gpu_scene.hpp"
+#include "multiview_probe.hpp"
 #include "pipelines.hpp"
 
 namespace confvis {
@@ -37,7 +38,11 @@ class VulkanBackend final : public RenderBackend {
       : options_((checkOptions(options), options)),
         context_({options.device, options.validation, options.onValidationMessage}),
         pipelines_(context_),
-        frames_(context_, pipelines_) {}
+        frames_(context_, pipelines_),
+        multiview_(options.stereoPasses == StereoPasses::Multiview ||
+                   (options.stereoPasses == StereoPasses::Auto &&
+                    vulkan::multiviewKeepsClippedPrimitivesInTheirView(context_, pipelines_,
+                                                                       frames_))) {}
 
   std::string name() const override { return "vulkan"; }
 
@@ -59,7 +64,9 @@ class VulkanBackend final : public RenderBackend {
     Progress progress("vulkan " + std::string(conformal ? "conformal" : "plain"),
                       plan.walls.size(), settings.showProgress);
     RenderResult result;
-    result.images = frames_.render(plan, *scene_, conformal ? map : nullptr, progress);
+    const bool onePass = multiview_ || plan.eyes.size() == 1;
+    result.images =
+        frames_.render(plan, *scene_, conformal ? map : nullptr, multiview_, progress);
     progress.finish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -67,7 +74,8 @@ class VulkanBackend final : public RenderBackend {
                     {"device", context_.capabilities().name},
                     {"mode", conformal ? "conformal" : "plain"},
                     {"walls", plan.walls.size()},
-                    {"views_per_pass", plan.eyes.size()},
+                    {"views_per_pass", onePass ? plan.eyes.size() : 1},
+                    {"stereo_passes", multiview_ ? "multiview" : "per-eye"},
                     {"triangles", scene_->triangleCount()},
                     {"seconds", seconds}};
     if (conformal) {
@@ -82,6 +90,7 @@ class VulkanBackend final : public RenderBackend {
   vulkan::VulkanContext context_;
   vulkan::Pipelines pipelines_;
   vulkan::FrameRenderer frames_;
+  bool multiview_;  // every eye of a wall in one pass
   std::optional<vulkan::GpuScene> scene_;
 };
 

@@ -12,6 +12,16 @@
 
 namespace confvis {
 
+// How the eyes of a wall are drawn in stereo.
+enum class StereoPasses {
+  // One multiview pass where the device draws it correctly (checked once at startup by
+  // rendering a clipped triangle into two views), else one pass per eye: Mesa's lavapipe 22.x
+  // rasterizes clipped primitives of view 1 into view 0.
+  Auto,
+  Multiview,  // always one pass with VK_KHR_multiview (Vulkan 1.1 multiview)
+  PerEye,     // always one pass per eye
+};
+
 struct VulkanOptions {
   // Which device renders: "" or "auto" picks the best device that supports everything confvis
   // needs (discrete GPU, then integrated, then virtual, then CPU such as lavapipe); a decimal
@@ -31,6 +41,7 @@ struct VulkanOptions {
   // Longest segment of a subdivided edge, degrees: long edges are subdivided even where the bend
   // measured at their midpoint is small.
   double maxSegmentDegrees = 20.0;
+  StereoPasses stereoPasses = StereoPasses::Auto;
   // Conformal mode without any subdivision: a deliberately wrong render for tests and for the
   // tessellation benchmark's baseline.
   bool tessellate = true;
