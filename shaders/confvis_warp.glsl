@@ -95,16 +95,18 @@ vec4 confvisWarpRelative(vec3 relative) {
 // of the segment count. maxSegmentAngle caps the angular length of a segment so that a long edge
 // whose bend happens to vanish at its midpoint is still subdivided. An edge across the source's
 // cut (the map jumps: its midpoint lands far off the chord, farther than any smooth bend of a
-// quarter of the edge's own angle) gets the most segments, so that the triangles dropped along the
-// cut (confvisDropTriangle) are as small as possible. Symmetric in (a, b), so the two triangles
+// quarter of the edge's own angle) is cut into segments of about twice maxErrorAngle (a pixel at
+// the default half-pixel error), so that the triangles dropped along the cut
+// (confvisDropTriangle) leave gaps of about a pixel. Symmetric in (a, b), so the two triangles
 // sharing an edge agree and leave no cracks. In [1, 64].
 float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
                           float maxSegmentAngle) {
   vec3 wm = confvisWarpRelative(0.5 * (a + b)).xyz;
   float deviation = confvisAngle(wm, 0.5 * (wa + wb));
   float edge = confvisAngle(a, b);
-  if (deviation > 0.25 * edge + maxErrorAngle) return 64.0;
-  float segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
+  float segments = deviation > 0.25 * edge + maxErrorAngle
+                       ? edge / (2.0 * maxErrorAngle)
+                       : max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
   return clamp(ceil(segments), 1.0, 64.0);
 }
 

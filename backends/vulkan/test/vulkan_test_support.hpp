@@ -88,8 +88,9 @@ struct AnalyticComparison {
 };
 
 // Compares `image` (a render of `wall` seen from `eye`) with `expected` at every pixel whose
-// centre and four half-pixel neighbours all expect the same (colour, or nothing drawn: alpha 0);
-// pixels on an edge are left out, since rasterization places edges only to within a pixel.
+// centre and four half-pixel neighbours all expect the same (colours within half the tolerance,
+// or nothing drawn: alpha 0); pixels on an edge are left out, since rasterization places edges
+// only to within a pixel.
 inline AnalyticComparison compareAnalytic(const ImageRGBA& image, const Wall& wall,
                                           glm::dvec3 eye, const DirectionColor& expected,
                                           float tolerance) {
@@ -107,7 +108,8 @@ inline AnalyticComparison compareAnalytic(const ImageRGBA& image, const Wall& wa
       for (auto [dx, dy] : {std::pair{-0.5, 0.0}, {0.5, 0.0}, {0.0, -0.5}, {0.0, 0.5}}) {
         const std::optional<glm::vec3> other = colorAt(dx, dy);
         same = same && other.has_value() == centre.has_value() &&
-               (!centre || glm::all(glm::equal(*other, *centre)));
+               (!centre || glm::all(glm::lessThanEqual(glm::abs(*other - *centre),
+                                                        glm::vec3(0.5f * tolerance))));
       }
       if (!same) continue;
       ++c.unambiguous;
