@@ -5,12 +5,8 @@
 
 #extension GL_EXT_multiview : require
 
-// Set 0: the frame. worldToPhysical undoes the virtual camera: a world (virtual) point x goes to
-// c + R^T (x - position) in the physical frame. warpCentre.xyz is the map's reference point.
-layout(set = 0, binding = 0) uniform Frame {
-  mat4 worldToPhysical;
-  vec4 warpCentre;
-} frame;
+// Set 0: the frame.
+#include "confvis_frame.glsl"
 
 // One entry per (wall, eye), index wall * eyes + eye; a pass draws views viewBase + gl_ViewIndex.
 // params: x = largest bend error (radians), y = largest segment angle (radians),

@@ -98,10 +98,12 @@ vec4 confvisWarpRelative(vec3 relative) {
 // quarter of the edge's own angle) is cut into segments of about twice maxErrorAngle (a pixel at
 // the default half-pixel error), so that the triangles dropped along the cut
 // (confvisDropTriangle) leave gaps of about a pixel. Symmetric in (a, b), so the two triangles
-// sharing an edge agree and leave no cracks. In [1, 64].
+// sharing an edge agree and leave no cracks. In [1, 64]. warpedMidpoint receives the warp of the
+// edge's midpoint (relative to c), e.g. for culling the patch.
 float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
-                          float maxSegmentAngle) {
+                          float maxSegmentAngle, out vec3 warpedMidpoint) {
   vec3 wm = confvisWarpRelative(0.5 * (a + b)).xyz;
+  warpedMidpoint = wm;
   float deviation = confvisAngle(wm, 0.5 * (wa + wb));
   float edge = confvisAngle(a, b);
   float segments = deviation > 0.25 * edge + maxErrorAngle

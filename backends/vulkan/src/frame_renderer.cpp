@@ -35,7 +35,7 @@ void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t b
 }  // namespace
 
 FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
-    : context_(context), pipelines_(pipelines) {
+    : context_(context), pipelines_(pipelines), prepass_(context, pipelines) {
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
@@ -156,26 +156,7 @@ void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
   const VkRect2D scissor{{0, 0}, {width, height}};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                    request.conformal ? pass.conformal.get() : pass.plain.get());
-  const VkPipelineLayout layout = pipelines_.layout();
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &frameSet_, 0,
-                          nullptr);
-  if (request.conformal)
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kWarpDescriptorSet, 1,
-                            &warpSet_, 0, nullptr);
-  const VkDeviceSize offset = 0;
-  const VkBuffer vertexBuffer = scene.vertexBuffer();
-  vkCmdBindVertexBuffers(cmd, 0, 1, &vertexBuffer, &offset);
-  vkCmdBindIndexBuffer(cmd, scene.indexBuffer(), 0, VK_INDEX_TYPE_UINT32);
-  for (const GpuScene::Draw& draw : scene.draws()) {
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material, 0,
-                            nullptr);
-    const PushConstants push{draw.baseColorFactor, request.viewBase, draw.hasNormals ? 1u : 0u,
-                             {0u, 0u}};
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-    vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
-  }
+  recordDraws(cmd, pass, request, scene);
   vkCmdEndRenderPass(cmd);
   // The pass left the colour layers in TRANSFER_SRC_OPTIMAL; its dependency orders this copy.
   VkBufferImageCopy region{};
@@ -189,6 +170,43 @@ void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
   toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
                        &toHost, 0, nullptr, 0, nullptr);
+}
+
+void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass,
+                                const PassRequest& request, const GpuScene& scene) {
+  const VkPipelineLayout layout = pipelines_.layout();
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &frameSet_, 0,
+                          nullptr);
+  if (request.conformal)
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kWarpDescriptorSet, 1,
+                            &warpSet_, 0, nullptr);
+  const std::array<VkBuffer, 2> vertexBuffers = {scene.vertexBuffer(), prepass_.warped()};
+  const std::array<VkDeviceSize, 2> offsets = {0, 0};
+  vkCmdBindVertexBuffers(cmd, 0, request.conformal ? 2 : 1, vertexBuffers.data(), offsets.data());
+  const auto drawAll = [&](VkPipeline pipeline, VkBuffer indices, bool tessellated) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+    for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+      const GpuScene::Draw& draw = scene.draws()[d];
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
+                              0, nullptr);
+      const PushConstants push{draw.baseColorFactor, request.viewBase,
+                               draw.hasNormals ? 1u : 0u, {0u, 0u}};
+      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+      if (request.conformal)  // the pre-pass's lists and counts
+        vkCmdDrawIndexedIndirect(cmd, prepass_.commands(),
+                                 ConformalPrepass::commandOffset(d, tessellated), 1,
+                                 sizeof(VkDrawIndexedIndirectCommand));
+      else
+        vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+    }
+  };
+  if (!request.conformal) {
+    drawAll(pass.plain.get(), scene.indexBuffer(), false);
+    return;
+  }
+  drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), false);
+  drawAll(pass.conformalTessellated.get(), prepass_.tessellatedIndices(), true);
 }
 
 std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
@@ -208,6 +226,19 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
   const bool conformal = map != nullptr;
   if (conformal) uploadMap(*map);
   uploadFrame(plan);
+  if (conformal) {
+    // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
+    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f};
+    for (const ViewData& view : plan.views)
+      if (view.params.w != 0.0f)  // tessellation on
+        thresholds = {std::min(thresholds.maxErrorAngle, view.params.x), view.params.y,
+                      std::min(thresholds.minGap, view.params.z)};
+      else
+        thresholds.minGap = std::min(thresholds.minGap, view.params.z);
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+      prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
+    });
+  }
   const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());
   std::vector<WallImage> images;
   for (std::size_t wall = 0; wall < plan.walls.size(); ++wall) {

@@ -9,6 +9,7 @@
 
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/base/progress.hpp"
+#include "conformal_prepass.hpp"
 #include "frame_plan.hpp"
 #include "gpu_scene.hpp"
 #include "memory.hpp"
@@ -46,6 +47,8 @@ class FrameRenderer {
   std::vector<ImageRGBA> renderPass(const PassRequest& request, const GpuScene& scene);
   void recordPass(VkCommandBuffer cmd, const PassRequest& request, const GpuScene& scene,
                   const Targets& targets);
+  void recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass, const PassRequest& request,
+                   const GpuScene& scene);
 
   VulkanContext& context_;
   Pipelines& pipelines_;
@@ -56,6 +59,7 @@ class FrameRenderer {
   Image geomMap_;
   UniqueSampler warpSampler_;
   std::size_t mapHash_ = 0;
+  ConformalPrepass prepass_;
 };
 
 }  // namespace confvis::vulkan

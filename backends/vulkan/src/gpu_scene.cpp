@@ -1,5 +1,6 @@
 #include "gpu_scene.hpp"
 
+#include <atomic>
 #include <limits>
 #include <string>
 
@@ -105,10 +106,13 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
     if (draw.indexCount > 0) draws_.push_back(draw);
   }
   triangleCount_ = indices.size() / 3;
+  vertexCount_ = vertices.size();
+  static std::atomic<std::uint64_t> nextId{1};
+  id_ = nextId++;
   vertices_ = uploadBuffer(context, vertices.data(), vertices.size() * sizeof(Vertex),
-                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   indices_ = uploadBuffer(context, indices.data(), indices.size() * sizeof(std::uint32_t),
-                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
 }  // namespace confvis::vulkan

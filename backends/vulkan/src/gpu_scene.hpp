@@ -1,6 +1,7 @@
 #pragma once
-// A Scene on the device: one interleaved vertex buffer and one index buffer for all meshes,
-// base-colour textures as float images, one descriptor set per texture (plus a white one).
+// A Scene on the device: one interleaved vertex buffer and one index buffer for all meshes (also
+// read as storage buffers by the conformal pre-pass), base-colour textures as float images, one
+// descriptor set per texture (plus a white one).
 #include <cstdint>
 #include <vector>
 
@@ -30,6 +31,9 @@ class GpuScene {
   VkBuffer indexBuffer() const { return indices_.get(); }
   const Bounds& bounds() const { return bounds_; }
   std::size_t triangleCount() const { return triangleCount_; }
+  std::size_t vertexCount() const { return vertexCount_; }
+  // Distinct for every GpuScene ever built, so that derived buffers know when to rebuild.
+  std::uint64_t id() const { return id_; }
 
  private:
   std::vector<Draw> draws_;
@@ -39,6 +43,8 @@ class GpuScene {
   UniqueDescriptorPool pool_;
   Bounds bounds_;
   std::size_t triangleCount_ = 0;
+  std::size_t vertexCount_ = 0;
+  std::uint64_t id_ = 0;
 };
 
 }  // namespace confvis::vulkan

@@ -16,20 +16,14 @@
 #include "confvis_spirv/warp_geom.h"
 #include "confvis_spirv/warp_tesc.h"
 #include "confvis_spirv/warp_tese.h"
+#include "confvis_spirv/warp_simple_vert.h"
 #include "confvis_spirv/warp_vert.h"
 
 namespace confvis::vulkan {
-namespace {
 
-constexpr VkShaderStageFlags kGeometryStages =
-    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
-    VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_GEOMETRY_BIT;
-constexpr VkShaderStageFlags kAllStages = kGeometryStages | VK_SHADER_STAGE_FRAGMENT_BIT;
-
-template <std::size_t N>
-UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t (&code)[N]) {
+UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
   VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = sizeof(code);
+  info.codeSize = bytes;
   info.pCode = code;
   VkShaderModule module = VK_NULL_HANDLE;
   check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
@@ -47,6 +41,13 @@ UniqueDescriptorSetLayout setLayout(VkDevice device,
   return UniqueDescriptorSetLayout(device, layout);
 }
 
+namespace {
+
+constexpr VkShaderStageFlags kGeometryStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
+    VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_GEOMETRY_BIT;
+constexpr VkShaderStageFlags kAllStages = kGeometryStages | VK_SHADER_STAGE_FRAGMENT_BIT;
+
 VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits bit, const UniqueShaderModule& module) {
   VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage = bit;
@@ -61,15 +62,18 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   const VkDevice device = context.device();
   sceneVert_ = shaderModule(device, kSpirv_scene_vert);
   sceneFrag_ = shaderModule(device, kSpirv_scene_frag);
+  warpSimpleVert_ = shaderModule(device, kSpirv_warp_simple_vert);
   warpVert_ = shaderModule(device, kSpirv_warp_vert);
   warpTesc_ = shaderModule(device, kSpirv_warp_tesc);
   warpTese_ = shaderModule(device, kSpirv_warp_tese);
   warpGeom_ = shaderModule(device, kSpirv_warp_geom);
 
   frameSetLayout_ = setLayout(
-      device, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
+      device, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages | VK_SHADER_STAGE_COMPUTE_BIT,
+                nullptr},
                {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr}});
-  warpSetLayout_ = setLayout(device, {warpLayoutBinding(kGeometryStages)});
+  warpSetLayout_ =
+      setLayout(device, {warpLayoutBinding(kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT)});
   materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                            VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
   static_assert(kWarpDescriptorSet == 1, "set numbers of confvis_render_common.glsl");
@@ -84,6 +88,7 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   check(vkCreatePipelineLayout(device, &info, nullptr, &layout), "vkCreatePipelineLayout");
   layout_ = UniquePipelineLayout(device, layout);
+  createComputePipelines();
 }
 
 const Pipelines::Pass& Pipelines::pass(std::uint32_t viewCount) {
@@ -91,8 +96,9 @@ const Pipelines::Pass& Pipelines::pass(std::uint32_t viewCount) {
   if (found != passes_.end()) return found->second;
   Pass pass;
   pass.renderPass = createRenderPass(viewCount);
-  pass.plain = createPipeline(pass.renderPass.get(), false);
-  pass.conformal = createPipeline(pass.renderPass.get(), true);
+  pass.plain = createPipeline(pass.renderPass.get(), Kind::Plain);
+  pass.conformalFlat = createPipeline(pass.renderPass.get(), Kind::ConformalFlat);
+  pass.conformalTessellated = createPipeline(pass.renderPass.get(), Kind::ConformalTessellated);
   return passes_.emplace(viewCount, std::move(pass)).first->second;
 }
 
@@ -159,34 +165,46 @@ UniqueRenderPass Pipelines::createRenderPass(std::uint32_t viewCount) const {
   return UniqueRenderPass(context_.device(), renderPass);
 }
 
-UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, bool conformal) const {
+UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) const {
+  const bool tessellated = kind == Kind::ConformalTessellated;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
-  if (conformal) {
-    stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
-              stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
-              stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpTese_),
-              stage(VK_SHADER_STAGE_GEOMETRY_BIT, warpGeom_),
-              stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_)};
-  } else {
-    stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, sceneVert_),
-              stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_)};
+  switch (kind) {
+    case Kind::Plain:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, sceneVert_)};
+      break;
+    case Kind::ConformalFlat:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpSimpleVert_)};
+      break;
+    case Kind::ConformalTessellated:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
+                stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
+                stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpTese_),
+                stage(VK_SHADER_STAGE_GEOMETRY_BIT, warpGeom_)};
+      break;
   }
-  const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  const std::array<VkVertexInputAttributeDescription, 3> attributes = {{
+  stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_));
+  // Binding 0: the scene's vertices; binding 1 (conformal): their warps from the pre-pass.
+  const std::array<VkVertexInputBindingDescription, 2> bindings = {{
+      {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
+      {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
+  }};
+  const std::array<VkVertexInputAttributeDescription, 4> attributes = {{
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+      {3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
   }};
+  const bool conformal = kind != Kind::Plain;
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertexInput.vertexBindingDescriptionCount = 1;
-  vertexInput.pVertexBindingDescriptions = &binding;
-  vertexInput.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(attributes.size());
+  vertexInput.vertexBindingDescriptionCount = conformal ? 2 : 1;
+  vertexInput.pVertexBindingDescriptions = bindings.data();
+  vertexInput.vertexAttributeDescriptionCount = conformal ? 4 : 3;
   vertexInput.pVertexAttributeDescriptions = attributes.data();
   VkPipelineInputAssemblyStateCreateInfo assembly{
       VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology =
-      conformal ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+      tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkPipelineTessellationStateCreateInfo tessellation{
       VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
   tessellation.patchControlPoints = 3;
@@ -225,7 +243,7 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, bool conformal
   info.pStages = stages.data();
   info.pVertexInputState = &vertexInput;
   info.pInputAssemblyState = &assembly;
-  info.pTessellationState = conformal ? &tessellation : nullptr;
+  info.pTessellationState = tessellated ? &tessellation : nullptr;
   info.pViewportState = &viewport;
   info.pRasterizationState = &raster;
   info.pMultisampleState = &multisample;

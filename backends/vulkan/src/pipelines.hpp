@@ -1,9 +1,11 @@
 #pragma once
 // Shader modules (SPIR-V embedded at build time), descriptor set and pipeline layouts, render
-// passes and graphics pipelines. Set 0: the frame (uniforms, per wall-and-eye views); set 1: the
-// warp's geom cube map (confvis_warp.glsl); set 2: a material's base-colour texture.
+// passes, graphics pipelines and the conformal pre-pass compute pipelines. Set 0: the frame
+// (uniforms, per wall-and-eye views); set 1: the warp's geom cube map (confvis_warp.glsl);
+// set 2: a material's base-colour texture (graphics) or the pre-pass buffers (compute).
 #include <cstdint>
 #include <map>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -36,12 +38,32 @@ struct PushConstants {
   std::uint32_t padding[2];
 };
 
+// Push constant block `Prepass` of confvis_prepass_common.glsl.
+struct PrepassConstants {
+  std::uint32_t count;
+  std::uint32_t mesh;
+  std::uint32_t firstIndex;
+  std::int32_t vertexOffset;
+  float maxErrorAngle;
+  float maxSegmentAngle;
+  float minGap;
+  float padding;
+};
+
 // Interleaved vertex as uploaded by GpuScene.
 struct Vertex {
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;
 };
+
+UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t* code, std::size_t bytes);
+template <std::size_t N>
+UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t (&spirv)[N]) {
+  return shaderModule(device, spirv, sizeof(spirv));
+}
+UniqueDescriptorSetLayout setLayout(VkDevice device,
+                                    const std::vector<VkDescriptorSetLayoutBinding>& bindings);
 
 class Pipelines {
  public:
@@ -50,25 +72,37 @@ class Pipelines {
   VkDescriptorSetLayout frameSetLayout() const { return frameSetLayout_.get(); }
   VkDescriptorSetLayout warpSetLayout() const { return warpSetLayout_.get(); }
   VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_.get(); }
+  VkDescriptorSetLayout prepassSetLayout() const { return prepassSetLayout_.get(); }
   VkPipelineLayout layout() const { return layout_.get(); }
+  VkPipelineLayout computeLayout() const { return computeLayout_.get(); }
+  VkPipeline warpVertices() const { return warpVertices_.get(); }
+  VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
 
-  // A render pass drawing `viewCount` views (multiview layers) of one wall, with its plain and
-  // conformal pipelines; built on first use.
+  // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
+  // built on first use. Conformal mode draws with two: conformalFlat for the triangles the
+  // pre-pass found straight enough, conformalTessellated (tessellation + geometry shader) for
+  // the rest.
   struct Pass {
     UniqueRenderPass renderPass;
     UniquePipeline plain;
-    UniquePipeline conformal;
+    UniquePipeline conformalFlat;
+    UniquePipeline conformalTessellated;
   };
   const Pass& pass(std::uint32_t viewCount);
 
  private:
+  enum class Kind { Plain, ConformalFlat, ConformalTessellated };
   UniqueRenderPass createRenderPass(std::uint32_t viewCount) const;
-  UniquePipeline createPipeline(VkRenderPass renderPass, bool conformal) const;
+  UniquePipeline createPipeline(VkRenderPass renderPass, Kind kind) const;
+  void createComputePipelines();  // pipelines_compute.cpp
 
   VulkanContext& context_;
-  UniqueShaderModule sceneVert_, sceneFrag_, warpVert_, warpTesc_, warpTese_, warpGeom_;
-  UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_;
-  UniquePipelineLayout layout_;
+  UniqueShaderModule sceneVert_, sceneFrag_, warpSimpleVert_, warpVert_, warpTesc_, warpTese_,
+      warpGeom_;
+  UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
+      prepassSetLayout_;
+  UniquePipelineLayout layout_, computeLayout_;
+  UniquePipeline warpVertices_, classifyTriangles_;
   std::map<std::uint32_t, Pass> passes_;
 };
 
