@@ -113,10 +113,11 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   VkMemoryBarrier listsReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   listsReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   listsReady.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT |
-                             VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+                             VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_HOST_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, 0,
-                       1, &listsReady, 0, nullptr, 0, nullptr);
+                       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                           VK_PIPELINE_STAGE_HOST_BIT,
+                       0, 1, &listsReady, 0, nullptr, 0, nullptr);
 }
 
 }  // namespace confvis::vulkan

@@ -32,6 +32,11 @@ class ConformalPrepass {
   VkBuffer flatIndices() const { return flat_.get(); }
   VkBuffer tessellatedIndices() const { return tessellated_.get(); }
   VkBuffer commands() const { return commands_.get(); }
+  // The command as the pre-pass left it; valid once its submission has completed.
+  VkDrawIndexedIndirectCommand command(std::size_t draw, bool tessellated) const {
+    return static_cast<const VkDrawIndexedIndirectCommand*>(commands_.mapped())
+        [2 * draw + (tessellated ? 1 : 0)];
+  }
   // Byte offset of mesh `draw`'s VkDrawIndexedIndirectCommand of the given kind.
   static VkDeviceSize commandOffset(std::size_t draw, bool tessellated);
 

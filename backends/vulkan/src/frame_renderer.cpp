@@ -1,5 +1,6 @@
 #include "frame_renderer.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <functional>
@@ -10,6 +11,11 @@
 
 namespace confvis::vulkan {
 namespace {
+
+// Patches per draw of the tessellation pipeline. Mesa's lavapipe 22.3 corrupts the output of a
+// tessellation + geometry shader draw past about 65536 generated triangles (a stray triangle
+// covering the wall); at the highest level (64) a patch makes 4096 triangles.
+constexpr std::uint32_t kMaxPatchesPerDraw = 16;
 
 std::size_t hashMap(const RetargetMap& map, const std::vector<float>& data) {
   const std::string_view bytes(reinterpret_cast<const char*>(data.data()),
@@ -193,12 +199,20 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
       const PushConstants push{draw.baseColorFactor, request.viewBase,
                                draw.hasNormals ? 1u : 0u, {0u, 0u}};
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-      if (request.conformal)  // the pre-pass's lists and counts
-        vkCmdDrawIndexedIndirect(cmd, prepass_.commands(),
-                                 ConformalPrepass::commandOffset(d, tessellated), 1,
-                                 sizeof(VkDrawIndexedIndirectCommand));
-      else
+      if (request.conformal && tessellated) {
+        // The pre-pass has finished (the frame waited for it): split its list into draws of a
+        // bounded number of patches.
+        const VkDrawIndexedIndirectCommand c = prepass_.command(d, true);
+        constexpr std::uint32_t kChunk = 3 * kMaxPatchesPerDraw;
+        for (std::uint32_t first = 0; first < c.indexCount; first += kChunk)
+          vkCmdDrawIndexed(cmd, std::min(kChunk, c.indexCount - first), 1, c.firstIndex + first,
+                           c.vertexOffset, 0);
+      } else if (request.conformal) {  // the pre-pass's list and count
+        vkCmdDrawIndexedIndirect(cmd, prepass_.commands(), ConformalPrepass::commandOffset(d, false),
+                                 1, sizeof(VkDrawIndexedIndirectCommand));
+      } else {
         vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+      }
     }
   };
   if (!request.conformal) {
