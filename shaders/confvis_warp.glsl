@@ -14,8 +14,8 @@
 //     (float32: half floats quantise directions to ~0.03 degrees), one mip level, layer i =
 //     toVulkanLayout(map.geom).faces[i] (confvis/base/cube_map.hpp converts the in-face
 //     orientation; confvis/backends/vulkan/warp_interface.hpp packs the upload data);
-//   - sampler: any filter (the lookup uses textureGather), VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-//     unnormalizedCoordinates = VK_FALSE.
+//   - sampler: VK_FILTER_LINEAR (min and mag; the format must support linear filtering),
+//     VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, unnormalizedCoordinates = VK_FALSE.
 // Define CONFVIS_WARP_SET and CONFVIS_WARP_BINDING before including this file to move the binding
 // (defaults: set 1, binding 0). The map is needed in every stage that calls these functions.
 //
@@ -41,9 +41,23 @@ float confvisAngle(vec3 a, vec3 b) { return atan(length(cross(a, b)), dot(a, b))
 // Cube-map lookup of T_geom for a non-zero virtual direction: xyz = unit physical direction,
 // w = validity (alpha, 1 inside the source field). Bilinear, except across the source's cut: the
 // map jumps there, and blending texels from both sides would land between them (in the middle of
-// a wall). Texels whose directions differ from the nearest texel's by more than eight
-// neighbour spacings are left out of the blend, so a point next to the cut keeps its own side.
+// a wall). Where the hardware's bilinear blend comes out shorter than unit directions about
+// eight neighbour spacings apart would give, the four texels are fetched and those whose
+// directions differ from the nearest texel's by more than that are left out of the blend, so a
+// point next to the cut keeps its own side.
+vec4 confvisSampleGeomAcrossCut(vec3 v);
+
 vec4 confvisSampleGeom(vec3 v) {
+  vec4 blended = textureLod(confvisGeomMap, v, 0.0);
+  float n = float(textureSize(confvisGeomMap, 0).x);
+  // |blend of unit vectors theta apart| >= cos(theta / 2) ~ 1 - theta^2 / 8, theta = 16 / n.
+  float shortest = 1.0 - 32.0 / (n * n);
+  float len = length(blended.xyz);
+  if (len >= shortest) return vec4(blended.xyz / len, blended.w);
+  return confvisSampleGeomAcrossCut(v);
+}
+
+vec4 confvisSampleGeomAcrossCut(vec3 v) {
   // Face and (s, t) exactly as the Vulkan spec's cube-map face selection table.
   vec3 a = abs(v);
   float sc, tc, ma;
@@ -94,21 +108,27 @@ vec4 confvisWarpRelative(vec3 relative) {
 // from c) of the bent edge: the warped midpoint's deviation from the chord shrinks with the square
 // of the segment count. maxSegmentAngle caps the angular length of a segment so that a long edge
 // whose bend happens to vanish at its midpoint is still subdivided. An edge across the source's
-// cut (the map jumps: its midpoint lands far off the chord, farther than any smooth bend of a
-// quarter of the edge's own angle) is cut into segments of about twice maxErrorAngle (a pixel at
-// the default half-pixel error), so that the triangles dropped along the cut
-// (confvisDropTriangle) leave gaps of about a pixel. Symmetric in (a, b), so the two triangles
-// sharing an edge agree and leave no cracks. In [1, 64]. warpedMidpoint receives the warp of the
-// edge's midpoint (relative to c), e.g. for culling the patch.
+// cut is cut into segments of about twice maxErrorAngle (a pixel at the default half-pixel
+// error), so that the triangles dropped along the cut leave gaps of about a pixel. It is told
+// from a smooth bend by its halves: where T_geom jumps, one warped half spans the jump and is
+// more than three times as long as the other (and longer than eight times maxErrorAngle), while
+// a smooth map stretches both halves of a short edge alike. Symmetric in (a, b), so the two triangles sharing an edge
+// agree and leave no cracks. In [1, 64]. warpedMidpoint receives the warp of the edge's midpoint
+// (relative to c), e.g. for culling the patch.
 float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
                           float maxSegmentAngle, out vec3 warpedMidpoint) {
   vec3 wm = confvisWarpRelative(0.5 * (a + b)).xyz;
   warpedMidpoint = wm;
-  float deviation = confvisAngle(wm, 0.5 * (wa + wb));
   float edge = confvisAngle(a, b);
-  float segments = deviation > 0.25 * edge + maxErrorAngle
-                       ? edge / (2.0 * maxErrorAngle)
-                       : max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
+  float halfA = confvisAngle(wa, wm), halfB = confvisAngle(wm, wb);
+  float longHalf = max(halfA, halfB);
+  float segments;
+  if (longHalf > max(3.0 * min(halfA, halfB), 8.0 * maxErrorAngle)) {
+    segments = edge / (2.0 * maxErrorAngle);
+  } else {
+    float deviation = confvisAngle(wm, 0.5 * (wa + wb));
+    segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
+  }
   return clamp(ceil(segments), 1.0, 64.0);
 }
 

@@ -87,7 +87,7 @@ std::vector<std::string> missingRequirements(const DeviceCapabilities& d) {
   if (d.maxTessellationGenerationLevel < kRequiredTessellationLevel)
     missing.push_back("maxTessellationGenerationLevel >= " +
                       std::to_string(kRequiredTessellationLevel));
-  if (!d.float32CubeSampling) missing.push_back("sampled float32 RGBA cube images");
+  if (!d.float32CubeSampling) missing.push_back("linearly filtered float32 RGBA cube images");
   if (!d.float32ColorAttachment) missing.push_back("float32 RGBA colour attachments");
   if (!d.depth32Attachment) missing.push_back("D32_SFLOAT depth attachments");
   return missing;

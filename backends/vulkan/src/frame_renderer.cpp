@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstring>
 #include <functional>
 #include <string_view>
@@ -234,6 +235,16 @@ std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
   return layers;
 }
 
+FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene) const {
+  PrepassCounts counts;
+  counts.seconds = prepassSeconds_;
+  for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+    counts.flat += prepass_.command(d, false).indexCount / 3;
+    counts.tessellated += prepass_.command(d, true).indexCount / 3;
+  }
+  return counts;
+}
+
 std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuScene& scene,
                                              const RetargetMap* map, bool multiview,
                                              Progress& progress) {
@@ -249,9 +260,11 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
                       std::min(thresholds.minGap, view.params.z)};
       else
         thresholds.minGap = std::min(thresholds.minGap, view.params.z);
+    const auto start = std::chrono::steady_clock::now();
     context_.submitAndWait([&](VkCommandBuffer cmd) {
       prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
     });
+    prepassSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());
   std::vector<WallImage> images;

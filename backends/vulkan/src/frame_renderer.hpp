@@ -27,6 +27,13 @@ class FrameRenderer {
   std::vector<WallImage> render(const FramePlan& plan, const GpuScene& scene,
                                 const RetargetMap* map, bool multiview, Progress& progress);
 
+  // Triangles the last conformal frame drew flat and through tessellation (the pre-pass's lists).
+  struct PrepassCounts {
+    std::size_t flat = 0, tessellated = 0;
+    double seconds = 0.0;  // wall-clock time of the pre-pass submission
+  };
+  PrepassCounts prepassCounts(const GpuScene& scene) const;
+
  private:
   struct Targets {
     Image color, depth;
@@ -60,6 +67,7 @@ class FrameRenderer {
   UniqueSampler warpSampler_;
   std::size_t mapHash_ = 0;
   ConformalPrepass prepass_;
+  double prepassSeconds_ = 0.0;
 };
 
 }  // namespace confvis::vulkan

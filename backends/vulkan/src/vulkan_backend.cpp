@@ -81,6 +81,10 @@ class VulkanBackend final : public RenderBackend {
     if (conformal) {
       result.stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
       result.stats["tessellation"] = options_.tessellate;
+      const auto counts = frames_.prepassCounts(*scene_);
+      result.stats["triangles_drawn_flat"] = counts.flat;
+      result.stats["triangles_tessellated"] = counts.tessellated;
+      result.stats["prepass_seconds"] = counts.seconds;
     }
     return result;
   }

@@ -40,8 +40,8 @@ VkDescriptorSetLayoutBinding warpLayoutBinding(VkShaderStageFlags stages) {
 
 VkSamplerCreateInfo warpSamplerInfo() {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = VK_FILTER_NEAREST;
-  info.minFilter = VK_FILTER_NEAREST;
+  info.magFilter = VK_FILTER_LINEAR;
+  info.minFilter = VK_FILTER_LINEAR;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;

@@ -23,6 +23,7 @@ constexpr int kMapResolution = 64;
 Scene checkerCube() {
   BuiltinSceneOptions options;
   options.subdivision = 1;
+  options.texelsPerSquare = 64;  // texture edges sharper than a pixel, even magnified
   return builtinScene("checker-sphere", options);
 }
 
@@ -127,6 +128,38 @@ TEST(VulkanConformal, AzimuthSqueezeMatchesTheClosedFormAndDropsTrianglesOnTheCu
     unambiguous += a.unambiguous;
   }
   EXPECT_GT(bad, unambiguous / 20) << "an untessellated warp should be visibly wrong";
+}
+
+TEST(VulkanConformal, ConformalZoomMatchesTheClosedForm) {
+  // A smooth conformal map (Moebius dilation, no cut) bends the cube's 90-degree edges into arcs:
+  // every pixel shows the cube's colour along T_ray of its direction, and skipping the
+  // tessellation fails visibly.
+  const DisplayConfig config = test::loadConfig("cave5");
+  const RetargetMap zoom = test::zoomMap(kMapResolution, 2.0);
+  const test::DirectionColor expected = [](glm::dvec3 d) -> std::optional<glm::vec3> {
+    return checkerSphereColor(test::scaleStereographic(glm::normalize(d), 2.0));
+  };
+  for (bool tessellate : {true, false}) {
+    VulkanOptions options;
+    options.tessellate = tessellate;
+    test::ValidatedBackend vk(options);
+    vk->setScene(checkerCube());
+    const RenderResult result =
+        vk->render(config, &zoom, settingsFor(config, RenderMode::Conformal));
+    std::size_t bad = 0, unambiguous = 0;
+    for (const WallImage& image : result.images) {
+      const test::AnalyticComparison a = compareAnalytic(image.image, config.wall(image.wall),
+                                                         glm::dvec3(0.0), expected, 0.02f);
+      bad += a.bad;
+      unambiguous += a.unambiguous;
+    }
+    EXPECT_GT(unambiguous, 5u * 64 * 64 * 6 / 10);
+    if (tessellate)
+      EXPECT_LE(bad, unambiguous / 100) << bad << " of " << unambiguous << " pixels off";
+    else
+      EXPECT_GT(bad, unambiguous / 20) << "an untessellated warp should be visibly wrong";
+    test::expectNoValidationMessages(vk);
+  }
 }
 
 TEST(VulkanConformal, HeavilyTessellatedDrawsStayCorrect) {

@@ -56,4 +56,26 @@ inline std::optional<glm::dvec3> squeezeToVirtual(const glm::dvec3& d) {
   return scaleAzimuth(d, 2.0);
 }
 
+// A conformal map of the whole sphere onto itself, smooth everywhere (no cut): in the
+// stereographic coordinate w = (x, y) / (1 - z) seen from the back pole +z, T_geom scales w by
+// 1 / zoom, pulling every direction towards the front pole -z (a Moebius dilation). Straight
+// edges bend into circular arcs, as under a baked conformal map away from its cut.
+inline glm::dvec3 scaleStereographic(const glm::dvec3& v, double factor) {
+  if (v.z >= 1.0) return v;  // the back pole stays put
+  const glm::dvec2 w = factor * glm::dvec2(v.x, v.y) / (1.0 - v.z);
+  const double w2 = glm::dot(w, w);
+  return glm::dvec3(2.0 * w.x, 2.0 * w.y, w2 - 1.0) / (w2 + 1.0);
+}
+
+inline RetargetMap zoomMap(int resolution, double zoom) {
+  RetargetMap map = RetargetMap::identity(resolution);
+  fillCubeMap(map.geom, [&](const Vec3d& v) {
+    return std::pair{toVec(scaleStereographic(toGlm(v), 1.0 / zoom)), true};
+  });
+  fillCubeMap(map.ray, [&](const Vec3d& d) {
+    return std::pair{toVec(scaleStereographic(toGlm(d), zoom)), true};
+  });
+  return map;
+}
+
 }  // namespace confvis::test

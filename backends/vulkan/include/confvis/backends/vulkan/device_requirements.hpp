@@ -23,7 +23,7 @@ struct DeviceCapabilities {
   bool multiviewGeometryShader = false;
   std::uint32_t maxMultiviewViewCount = 0;
   std::uint32_t maxTessellationGenerationLevel = 0;
-  bool float32CubeSampling = false;  // R32G32B32A32_SFLOAT cube images, sampled
+  bool float32CubeSampling = false;  // R32G32B32A32_SFLOAT cube images, sampled with linear filter
   bool float32ColorAttachment = false;
   bool depth32Attachment = false;
 };

@@ -29,7 +29,8 @@ std::vector<float> geomMapUploadData(const RetargetMap& map);
 // vertex, tessellation control and evaluation, geometry).
 VkDescriptorSetLayoutBinding warpLayoutBinding(VkShaderStageFlags stages);
 
-// Nearest filtering, clamp to edge, no mipmaps: the warp filters by itself (textureGather).
+// Linear filtering, clamp to edge, no mipmaps (the warp refines the blend by itself next to the
+// cut, where it fetches the four texels with textureGather).
 VkSamplerCreateInfo warpSamplerInfo();
 
 }  // namespace confvis::vulkan
