@@ -47,18 +47,8 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   const std::array<VkBuffer, 6> buffers = {scene.vertexBuffer(), scene.indexBuffer(),
                                            warped_.get(),        flat_.get(),
                                            tessellated_.get(),   commands_.get()};
-  std::array<VkDescriptorBufferInfo, 6> infos{};
-  std::array<VkWriteDescriptorSet, 6> writes{};
-  for (std::uint32_t i = 0; i < 6; ++i) {
-    infos[i] = {buffers[i], 0, VK_WHOLE_SIZE};
-    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    writes[i].dstSet = set_;
-    writes[i].dstBinding = i;
-    writes[i].descriptorCount = 1;
-    writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    writes[i].pBufferInfo = &infos[i];
-  }
-  vkUpdateDescriptorSets(device, 6, writes.data(), 0, nullptr);
+  for (std::uint32_t i = 0; i < buffers.size(); ++i)
+    writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   sceneId_ = scene.id();
 }
 

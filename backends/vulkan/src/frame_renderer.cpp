@@ -27,18 +27,6 @@ std::size_t hashMap(const RetargetMap& map, const std::vector<float>& data) {
   return hash;
 }
 
-void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
-                           VkDescriptorType type, const Buffer& buffer) {
-  const VkDescriptorBufferInfo info{buffer.get(), 0, VK_WHOLE_SIZE};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = type;
-  write.pBufferInfo = &info;
-  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
-}
-
 }  // namespace
 
 FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
@@ -67,7 +55,8 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
   frameSet_ = sets[0];
   warpSet_ = sets[1];
   frameBuffer_ = Buffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-  writeBufferDescriptor(device, frameSet_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frameBuffer_);
+  writeBufferDescriptor(device, frameSet_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                        frameBuffer_.get());
   const VkSamplerCreateInfo samplerInfo = warpSamplerInfo();
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");
@@ -115,7 +104,7 @@ void FrameRenderer::uploadFrame(const FramePlan& plan) {
   if (viewBuffer_.size() < bytes) {
     viewBuffer_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
     writeBufferDescriptor(context_.device(), frameSet_, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                          viewBuffer_);
+                          viewBuffer_.get());
   }
   std::memcpy(viewBuffer_.mapped(), plan.views.data(), bytes);
 }
@@ -133,15 +122,8 @@ void FrameRenderer::uploadMap(const RetargetMap& map) {
   spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   geomMap_ = Image(context_, spec);
   uploadFloatImage(context_, geomMap_, data.data());
-  const VkDescriptorImageInfo imageInfo{warpSampler_.get(), geomMap_.view(),
-                                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = warpSet_;
-  write.dstBinding = kWarpBinding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-  write.pImageInfo = &imageInfo;
-  vkUpdateDescriptorSets(context_.device(), 1, &write, 0, nullptr);
+  writeImageDescriptor(context_.device(), warpSet_, kWarpBinding, warpSampler_.get(),
+                       geomMap_.view());
   mapHash_ = hash;
 }
 

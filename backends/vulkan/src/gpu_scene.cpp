@@ -68,16 +68,8 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
   allocInfo.descriptorSetCount = setCount;
   allocInfo.pSetLayouts = layouts.data();
   check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
-  for (std::uint32_t i = 0; i < setCount; ++i) {
-    const VkDescriptorImageInfo imageInfo{sampler_.get(), textures_[i].view(),
-                                          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-    VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    write.dstSet = sets[i];
-    write.descriptorCount = 1;
-    write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    write.pImageInfo = &imageInfo;
-    vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
-  }
+  for (std::uint32_t i = 0; i < setCount; ++i)
+    writeImageDescriptor(device, sets[i], 0, sampler_.get(), textures_[i].view());
   const VkDescriptorSet whiteSet = sets.back();
 
   std::vector<Vertex> vertices;

@@ -123,6 +123,30 @@ void uploadFloatImage(VulkanContext& context, const Image& image, const float* r
   });
 }
 
+void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                           VkDescriptorType type, VkBuffer buffer) {
+  const VkDescriptorBufferInfo info{buffer, 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  write.pBufferInfo = &info;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                          VkSampler sampler, VkImageView view) {
+  const VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &info;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
 ImageRGBA layerToImage(const Buffer& readback, std::uint32_t width, std::uint32_t height,
                        std::uint32_t layer) {
   ImageRGBA image(static_cast<int>(width), static_cast<int>(height));

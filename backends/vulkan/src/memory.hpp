@@ -69,6 +69,13 @@ void transitionImage(VkCommandBuffer cmd, const Image& image, VkImageLayout from
 // from the top) and leaves it ready for sampling in fragment and pre-rasterization stages.
 void uploadFloatImage(VulkanContext& context, const Image& image, const float* rgba);
 
+// Points binding `binding` of `set` at the whole buffer / at the image view with a sampler
+// (shader-read-only layout).
+void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                           VkDescriptorType type, VkBuffer buffer);
+void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                          VkSampler sampler, VkImageView view);
+
 // Converts layer `layer` of readback data (tightly packed RGBA float, as copied by
 // vkCmdCopyImageToBuffer) into an image.
 ImageRGBA layerToImage(const Buffer& readback, std::uint32_t width, std::uint32_t height,

@@ -41,6 +41,18 @@ UniqueDescriptorSetLayout setLayout(VkDevice device,
   return UniqueDescriptorSetLayout(device, layout);
 }
 
+UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,
+                                    const VkPushConstantRange& push) {
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = static_cast<std::uint32_t>(sets.size());
+  info.pSetLayouts = sets.data();
+  info.pushConstantRangeCount = 1;
+  info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  check(vkCreatePipelineLayout(device, &info, nullptr, &layout), "vkCreatePipelineLayout");
+  return UniquePipelineLayout(device, layout);
+}
+
 namespace {
 
 constexpr VkShaderStageFlags kGeometryStages =
@@ -77,17 +89,9 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                            VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
   static_assert(kWarpDescriptorSet == 1, "set numbers of confvis_render_common.glsl");
-  const std::array<VkDescriptorSetLayout, 3> sets = {
-      frameSetLayout_.get(), warpSetLayout_.get(), materialSetLayout_.get()};
-  const VkPushConstantRange push{kAllStages, 0, sizeof(PushConstants)};
-  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  info.setLayoutCount = static_cast<std::uint32_t>(sets.size());
-  info.pSetLayouts = sets.data();
-  info.pushConstantRangeCount = 1;
-  info.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  check(vkCreatePipelineLayout(device, &info, nullptr, &layout), "vkCreatePipelineLayout");
-  layout_ = UniquePipelineLayout(device, layout);
+  layout_ = pipelineLayout(
+      device, {frameSetLayout_.get(), warpSetLayout_.get(), materialSetLayout_.get()},
+      {kAllStages, 0, sizeof(PushConstants)});
   createComputePipelines();
 }
 

@@ -64,6 +64,8 @@ UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t (&spirv)[N]
 }
 UniqueDescriptorSetLayout setLayout(VkDevice device,
                                     const std::vector<VkDescriptorSetLayoutBinding>& bindings);
+UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,
+                                    const VkPushConstantRange& push);
 
 class Pipelines {
  public:

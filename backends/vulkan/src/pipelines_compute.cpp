@@ -1,7 +1,5 @@
 // The conformal pre-pass compute pipelines (warp_vertices.comp, classify_triangles.comp) and
 // their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
-#include <array>
-
 #include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
 
 #include "pipelines.hpp"
@@ -36,17 +34,10 @@ void Pipelines::createComputePipelines() {
     buffers.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                        VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
   prepassSetLayout_ = setLayout(device, buffers);
-  const std::array<VkDescriptorSetLayout, 3> sets = {frameSetLayout_.get(), warpSetLayout_.get(),
-                                                     prepassSetLayout_.get()};
-  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PrepassConstants)};
-  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  info.setLayoutCount = static_cast<std::uint32_t>(sets.size());
-  info.pSetLayouts = sets.data();
-  info.pushConstantRangeCount = 1;
-  info.pPushConstantRanges = &push;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  check(vkCreatePipelineLayout(device, &info, nullptr, &layout), "vkCreatePipelineLayout");
-  computeLayout_ = UniquePipelineLayout(device, layout);
+  computeLayout_ = pipelineLayout(
+      device, {frameSetLayout_.get(), warpSetLayout_.get(), prepassSetLayout_.get()},
+      {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PrepassConstants)});
+  const VkPipelineLayout layout = computeLayout_.get();
   const UniqueShaderModule warp = shaderModule(device, kSpirv_warp_vertices_comp);
   const UniqueShaderModule classify = shaderModule(device, kSpirv_classify_triangles_comp);
   warpVertices_ = computePipeline(device, layout, warp);
