@@ -166,15 +166,34 @@ TEST(CliRender, ConformalModeReadsABakedMapDirectory) {
   EXPECT_EQ(lowerGreen, 0u);
 }
 
-TEST(CliRender, WithoutConfigRendersTheFiveSidedCave) {
+// The README's main job: no arguments bake the 5-sided CAVE's map (into the cache) and render
+// the checker-sphere through it; the missing ceiling's green must reach the front wall's top.
+TEST(CliRender, WithoutConfigRendersTheFiveSidedCaveConformally) {
   const fs::path out = scratch("default");
-  const CliRun run = runCli("render --mode plain -o " + out.string() + kSmall);
+  const fs::path cache = scratch("default-cache");
+  ::setenv("CONFVIS_CACHE_DIR", cache.c_str(), 1);
+  const CliRun run = runCli("render -o " + out.string() + kSmall);
+  ::unsetenv("CONFVIS_CACHE_DIR");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const nlohmann::json report = nlohmann::json::parse(confvis::readTextFile(out / "render.json"));
   EXPECT_EQ(report["display"]["name"], "cave5");
   EXPECT_EQ(report["scene"]["name"], "checker-sphere");
   EXPECT_FALSE(fs::exists(out / "ceiling.exr"));
   EXPECT_TRUE(fs::exists(out / "floor.exr"));
+  EXPECT_TRUE(fs::exists(out / "front.png"));
+  EXPECT_TRUE(fs::exists(out / "overview.png"));
+  EXPECT_FALSE(fs::is_empty(cache)) << "the bake was not cached";
+  const confvis::ImageRGBA front = confvis::readExr(out / "front.exr");
+  std::size_t topGreen = 0, lowerGreen = 0;
+  for (int y = 0; y < front.height; ++y)
+    for (int x = 0; x < front.width; ++x) {
+      const float* p = front.at(x, y);
+      const bool green = p[1] > 0.8f && p[0] < 0.2f && p[2] < 0.2f;
+      if (green && y < front.height / 4) ++topGreen;
+      if (green && y >= front.height / 2) ++lowerGreen;
+    }
+  EXPECT_GT(topGreen, static_cast<std::size_t>(front.width) * front.height / 40) << run.output;
+  EXPECT_EQ(lowerGreen, 0u);
 }
 
 void expectError(const std::string& args, const std::string& needle) {
@@ -195,7 +214,6 @@ TEST(CliRender, BadInputGivesOneClearErrorAndNonZeroExit) {
   confvis::writeTextAtomically(noTriangles, "v 0 0 0\nv 1 0 0\n");
   expectError(cave6 + " --scene " + noTriangles.string() + out, "empty.obj");
   expectError(cave6 + " --wall attic" + out, "attic");
-  expectError(config("cave5") + out, "no baked map");
   expectError(config("cave5") + " --map /nonexistent/map" + out, "/nonexistent/map");
   expectError(cave6 + " --camera 1,2" + out, "--camera");
   expectError(cave6 + " --camera 1,2,x" + out, "--camera");

@@ -4,17 +4,24 @@
 #include <utility>
 
 #include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/backends/vulkan_backend.hpp"
 #include "confvis/base/error.hpp"
 
 namespace confvis::cli {
 
 namespace {
 
-using Factory = std::function<std::unique_ptr<RenderBackend>()>;
+using Factory = std::function<std::unique_ptr<RenderBackend>(const BackendOptions&)>;
 
 const std::vector<std::pair<std::string, Factory>>& factories() {
   static const std::vector<std::pair<std::string, Factory>> table = {
-      {"embree", [] { return std::make_unique<EmbreeBackend>(); }},
+      {"embree", [](const BackendOptions&) { return std::make_unique<EmbreeBackend>(); }},
+      {"vulkan",
+       [](const BackendOptions& options) {
+         VulkanOptions vulkan;
+         vulkan.device = options.device;
+         return makeVulkanBackend(vulkan);
+       }},
   };
   return table;
 }
@@ -27,9 +34,10 @@ std::vector<std::string> backendNames() {
   return names;
 }
 
-std::unique_ptr<RenderBackend> makeBackend(const std::string& name) {
+std::unique_ptr<RenderBackend> makeBackend(const std::string& name,
+                                           const BackendOptions& options) {
   for (const auto& [known, factory] : factories())
-    if (known == name) return factory();
+    if (known == name) return factory(options);
   std::string list;
   for (const std::string& known : backendNames()) list += (list.empty() ? "" : ", ") + known;
   throw Error(ErrorCode::InvalidInput, "unknown backend '" + name + "' (known: " + list + ")");

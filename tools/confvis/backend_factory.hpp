@@ -9,7 +9,12 @@
 namespace confvis::cli {
 
 std::vector<std::string> backendNames();
+struct BackendOptions {
+  std::string device;  // Vulkan: "" / "auto", an index or part of a device name
+};
+
 // Throws Error(InvalidInput) listing the known names for an unknown one.
-std::unique_ptr<RenderBackend> makeBackend(const std::string& name);
+std::unique_ptr<RenderBackend> makeBackend(const std::string& name,
+                                           const BackendOptions& options = {});
 
 }  // namespace confvis::cli

@@ -23,6 +23,7 @@ namespace fs = std::filesystem;
 
 struct RenderArgs {
   std::string config, scene = "checker-sphere", backend = "embree", mode = "conformal";
+  std::string device;
   std::string eyes = "mono", stereoRays = "exact", camera, mapDirectory, output;
   std::vector<std::string> walls;
   int spp = 1;
@@ -101,9 +102,10 @@ int runRender(const RenderArgs& args) {
   settings.resolutionScale = args.scale;
   settings.showProgress = !args.quiet;
 
-  std::unique_ptr<RenderBackend> backend = makeBackend(args.backend);
+  std::unique_ptr<RenderBackend> backend = makeBackend(args.backend, {args.device});
   std::optional<MapSource> map;
-  if (settings.mode == RenderMode::Conformal) map = retargetMapFor(config, args.mapDirectory);
+  if (settings.mode == RenderMode::Conformal)
+    map = retargetMapFor(config, args.mapDirectory, !args.quiet);
   // Check walls, eyes and map before the (possibly slow) scene load.
   planRender(config, map ? &map->map : nullptr, settings);
   const double setupSeconds = secondsSince(start);
@@ -153,6 +155,9 @@ const RegisterCommand registration{Command{
       sub.add_option("--backend", args->backend, "Renderer")
           ->check(CLI::IsMember(backendNames()))
           ->capture_default_str();
+      sub.add_option("--device", args->device,
+                     "Vulkan device: auto (discrete GPU first, then lavapipe), an index or part "
+                     "of a name");
       sub.add_option("--mode", args->mode,
                      "conformal: through the display's conformal map; plain: ordinary off-axis")
           ->check(CLI::IsMember({"conformal", "plain"}))

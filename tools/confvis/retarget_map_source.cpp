@@ -2,10 +2,12 @@
 
 #include "confvis/backends/retarget_map_files.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_display.hpp"
 
 namespace confvis::cli {
 
-MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory) {
+MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
+                         bool showProgress) {
   if (!mapDirectory.empty())
     return {readRetargetMapDirectory(mapDirectory, config.reference), mapDirectory};
   if (displayCoversWholeSphere(config)) {
@@ -13,10 +15,15 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
     return {RetargetMap::identity(config.cubeResolution, c),
             "identity (the display covers the whole sphere)"};
   }
-  throw Error(ErrorCode::InvalidInput,
-              "no baked map for display '" + config.name +
-                  "': run confvis bake, then pass its output with --map DIR "
-                  "(or render with --mode plain)");
+  BakeDisplayOptions options;
+  options.showProgress = showProgress;
+  BakedDisplay baked = bakeDisplay(config, options);
+  std::string origin = baked.fromCache ? "baked (cache " + baked.cacheEntry.string() + ")"
+                                       : "baked now" + (baked.cacheEntry.empty()
+                                                            ? std::string()
+                                                            : " (cached in " +
+                                                                  baked.cacheEntry.string() + ")");
+  return {std::move(baked.map), std::move(origin)};
 }
 
 }  // namespace confvis::cli

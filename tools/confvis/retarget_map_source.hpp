@@ -14,7 +14,9 @@ struct MapSource {
 };
 
 // In order: --map DIR (a baked directory with ray.exr and geom.exr); the identity for a display
-// that covers the whole sphere; otherwise Error(InvalidInput) asking for a bake.
-MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory);
+// that covers the whole sphere; otherwise bakeDisplay (through the on-disk cache, so only the
+// first render of a display pays for the bake).
+MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
+                         bool showProgress);
 
 }  // namespace confvis::cli

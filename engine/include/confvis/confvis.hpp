@@ -40,3 +40,6 @@
 
 // Rendering through the map (backends: Embree, Vulkan).
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/backends/render_output.hpp"
+#include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/backends/vulkan_backend.hpp"

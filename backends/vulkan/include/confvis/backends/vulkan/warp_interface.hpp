@@ -1,0 +1,36 @@
+#pragma once
+// The conformal warp for applications' own Vulkan renderers (issue 6): the C++ half of
+// shaders/confvis_warp.glsl. Create a cube-compatible image with these settings, upload
+// geomMapUploadData() into its six layers, bind it with warpLayoutBinding() / warpSamplerInfo(),
+// and call the GLSL functions in the shaders. The confvis Vulkan backend itself does exactly this.
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "confvis/conformal/retarget_map.hpp"
+
+namespace confvis::vulkan {
+
+// Defaults of CONFVIS_WARP_SET / CONFVIS_WARP_BINDING in confvis_warp.glsl.
+inline constexpr std::uint32_t kWarpDescriptorSet = 1;
+inline constexpr std::uint32_t kWarpBinding = 0;
+// Float32: half floats quantise directions to ~0.03 degrees, close to a CAVE pixel.
+inline constexpr VkFormat kGeomMapFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
+// Texel data of the `geom` map's six Vulkan cube layers (faces +X, -X, +Y, -Y, +Z, -Z), each
+// N x N RGBA float32, rows in order, layers back to back: one vkCmdCopyBufferToImage with six
+// layers. The in-face orientation is converted (toVulkanLayout), so a samplerCube looking up a
+// virtual direction v returns what RetargetMap::geom stores for v. Throws Error(InvalidInput) for
+// a malformed map (wrong face sizes, non-finite texels).
+std::vector<float> geomMapUploadData(const RetargetMap& map);
+
+// A combined-image-sampler binding at kWarpBinding for the given stages (every stage that warps:
+// vertex, tessellation control and evaluation, geometry).
+VkDescriptorSetLayoutBinding warpLayoutBinding(VkShaderStageFlags stages);
+
+// Linear filtering, clamp to edge, no mipmaps (the warp refines the blend by itself next to the
+// cut, where it fetches the four texels with textureGather).
+VkSamplerCreateInfo warpSamplerInfo();
+
+}  // namespace confvis::vulkan

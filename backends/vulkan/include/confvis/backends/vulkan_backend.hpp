@@ -1,0 +1,65 @@
+#pragma once
+// The Vulkan rasterizer backend (design note §5, forward path): offscreen, headless, both
+// stereo eyes of a wall in one multiview pass; in conformal mode every scene vertex is moved by
+// the `geom` cube map after tessellation (shaders/confvis_warp.glsl). Runs on any Vulkan 1.1
+// device with tessellation and geometry shaders and multiview, lavapipe included.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "confvis/backends/render_backend.hpp"
+
+namespace confvis {
+
+// How the eyes of a wall are drawn in stereo.
+enum class StereoPasses {
+  // One multiview pass where the device draws it correctly (checked once at startup by
+  // rendering a clipped triangle into two views), else one pass per eye: Mesa's lavapipe 22.x
+  // rasterizes clipped primitives of view 1 into view 0.
+  Auto,
+  Multiview,  // always one pass with VK_KHR_multiview (Vulkan 1.1 multiview)
+  PerEye,     // always one pass per eye
+};
+
+struct VulkanOptions {
+  // Which device renders: "" or "auto" picks the best device that supports everything confvis
+  // needs (discrete GPU, then integrated, then virtual, then CPU such as lavapipe); a decimal
+  // number is an index into listVulkanDevices(); anything else is matched case-insensitively
+  // against the device names ("llvmpipe" is lavapipe). Error(DeviceUnsupported) when nothing
+  // matches or the chosen device lacks a required feature.
+  std::string device;
+  // Khronos validation layer (with synchronization validation) and a debug messenger that
+  // reports every warning and error; Error(DeviceUnsupported) if the layer is not installed.
+  bool validation = false;
+  // Receives each validation message; without one they go to stderr.
+  std::function<void(const std::string&)> onValidationMessage;
+  // Conformal mode: bent edges are subdivided until the drawn polyline is within this many
+  // pixels (angular size of the smallest pixel of the rendered walls, seen from the reference
+  // point) of the exact warped curve. Smaller is sharper and slower.
+  double tessellationErrorPixels = 0.5;
+  // Longest segment of a subdivided edge, degrees: long edges are subdivided even where the bend
+  // measured at their midpoint is small.
+  double maxSegmentDegrees = 20.0;
+  StereoPasses stereoPasses = StereoPasses::Auto;
+  // Conformal mode without any subdivision: a deliberately wrong render for tests and for the
+  // tessellation benchmark's baseline.
+  bool tessellate = true;
+};
+
+struct VulkanDeviceInfo {
+  int index = 0;       // what VulkanOptions::device accepts as a number
+  std::string name;    // e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::string type;    // "discrete", "integrated", "virtual", "cpu", "other"
+  std::string apiVersion;
+  std::vector<std::string> missing;  // required features it lacks; empty = usable
+};
+
+// Every Vulkan device the loader reports. Error(DeviceUnsupported) if no Vulkan driver is
+// installed at all.
+std::vector<VulkanDeviceInfo> listVulkanDevices();
+
+// Creates the instance and device at once (so a bad --device fails before any rendering).
+std::unique_ptr<RenderBackend> makeVulkanBackend(const VulkanOptions& options = {});
+
+}  // namespace confvis

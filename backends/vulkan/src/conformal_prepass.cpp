@@ -1,0 +1,113 @@
+#include "conformal_prepass.hpp"
+
+#include <array>
+#include <vector>
+
+#include "vk_check.hpp"
+
+namespace confvis::vulkan {
+
+ConformalPrepass::ConformalPrepass(VulkanContext& context, const Pipelines& pipelines)
+    : context_(context), pipelines_(pipelines) {}
+
+VkDeviceSize ConformalPrepass::commandOffset(std::size_t draw, bool tessellated) {
+  return (2 * draw + (tessellated ? 1 : 0)) * sizeof(VkDrawIndexedIndirectCommand);
+}
+
+void ConformalPrepass::prepare(const GpuScene& scene) {
+  if (scene.id() == sceneId_) return;
+  const std::size_t indexBytes = scene.triangleCount() * 3 * sizeof(std::uint32_t);
+  const VkBufferUsageFlags indexUsage =
+      VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  warped_ = Buffer(context_, scene.vertexCount() * sizeof(glm::vec4),
+                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+  flat_ = Buffer(context_, indexBytes, indexUsage, false);
+  tessellated_ = Buffer(context_, indexBytes, indexUsage, false);
+  // Host-visible: reset from the host before every frame.
+  commands_ = Buffer(context_, commandOffset(scene.draws().size(), false),
+                     VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                     true);
+
+  const VkDevice device = context_.device();
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &size;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  pool_ = UniqueDescriptorPool(device, pool);
+  const VkDescriptorSetLayout layout = pipelines_.prepassSetLayout();
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = pool;
+  allocInfo.descriptorSetCount = 1;
+  allocInfo.pSetLayouts = &layout;
+  check(vkAllocateDescriptorSets(device, &allocInfo, &set_), "vkAllocateDescriptorSets");
+  // Bindings of confvis_prepass_common.glsl, in order.
+  const std::array<VkBuffer, 6> buffers = {scene.vertexBuffer(), scene.indexBuffer(),
+                                           warped_.get(),        flat_.get(),
+                                           tessellated_.get(),   commands_.get()};
+  for (std::uint32_t i = 0; i < buffers.size(); ++i)
+    writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
+  sceneId_ = scene.id();
+}
+
+void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
+                              VkDescriptorSet frameSet, VkDescriptorSet warpSet,
+                              const PrepassThresholds& thresholds) {
+  prepare(scene);
+  // Empty lists, one instance, each mesh's own index range and vertex offset.
+  auto* commands = static_cast<VkDrawIndexedIndirectCommand*>(commands_.mapped());
+  for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+    const GpuScene::Draw& draw = scene.draws()[d];
+    commands[2 * d] = {0, 1, draw.firstIndex, draw.vertexOffset, 0};
+    commands[2 * d + 1] = commands[2 * d];
+  }
+
+  // The previous frame's draws read what this frame overwrites.
+  vkCmdPipelineBarrier(cmd,
+                       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0, nullptr, 0, nullptr);
+  const VkPipelineLayout layout = pipelines_.computeLayout();
+  const std::array<VkDescriptorSet, 3> sets = {frameSet, warpSet, set_};
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 3, sets.data(), 0,
+                          nullptr);
+  PrepassConstants push{};
+  push.maxErrorAngle = thresholds.maxErrorAngle;
+  push.maxSegmentAngle = thresholds.maxSegmentAngle;
+  push.minGap = thresholds.minGap;
+  constexpr std::uint32_t kGroup = 64;  // local_size_x of both shaders
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVertices());
+  push.count = static_cast<std::uint32_t>(scene.vertexCount());
+  vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+  vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
+
+  VkMemoryBarrier warpedReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  warpedReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  warpedReady.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &warpedReady, 0, nullptr, 0,
+                       nullptr);
+
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyTriangles());
+  for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+    const GpuScene::Draw& draw = scene.draws()[d];
+    push.count = draw.indexCount / 3;
+    push.mesh = static_cast<std::uint32_t>(d);
+    push.firstIndex = draw.firstIndex;
+    push.vertexOffset = draw.vertexOffset;
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+    vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
+  }
+
+  VkMemoryBarrier listsReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  listsReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  listsReady.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT |
+                             VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                           VK_PIPELINE_STAGE_HOST_BIT,
+                       0, 1, &listsReady, 0, nullptr, 0, nullptr);
+}
+
+}  // namespace confvis::vulkan

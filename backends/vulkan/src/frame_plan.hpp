@@ -1,0 +1,40 @@
+#pragma once
+// Everything a frame needs before any Vulkan call: which walls and eyes, output sizes, the
+// navigation transform, per wall-and-eye projection matrices, headlight positions and the
+// tessellation tolerances. Validates the request (Error(InvalidInput) naming the culprit).
+#include <cstdint>
+#include <vector>
+
+#include "confvis/backends/render_backend.hpp"
+#include "pipelines.hpp"
+
+namespace confvis::vulkan {
+
+struct TessellationOptions {
+  double errorPixels = 0.5;
+  double maxSegmentDegrees = 20.0;
+  bool enabled = true;
+};
+
+struct FramePlan {
+  std::vector<const Wall*> walls;          // in config order
+  std::vector<Eye> eyes;                   // multiview layer i = eyes[i]
+  std::vector<std::uint32_t> widths, heights;  // per wall
+  std::vector<double> pixelAngles;         // per wall: smallest pixel seen from c, radians
+  FrameUniforms frame{};
+  std::vector<ViewData> views;             // index wall * eyes.size() + eye
+  double near = 0.01, far = 100.0;
+};
+
+// `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.
+FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
+                    const RenderSettings& settings, const Bounds& sceneBounds,
+                    const TessellationOptions& tessellation, std::uint32_t maxViews);
+
+// Where the headlight of `eye` sits in the virtual world: the eye itself in plain mode; in
+// conformal mode the start of its virtual rays, c + |e - c| T_ray(dir(e - c)) (the eye itself
+// where the map has no display behind that direction).
+glm::dvec3 virtualEyePosition(const glm::dvec3& eye, const DisplayConfig& config,
+                              const RetargetMap* map, const RenderSettings& settings);
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,271 @@
+#include "frame_renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstring>
+#include <functional>
+#include <string_view>
+
+#include "confvis/backends/vulkan/warp_interface.hpp"
+#include "vk_check.hpp"
+
+namespace confvis::vulkan {
+namespace {
+
+// Patches per draw of the tessellation pipeline. Mesa's lavapipe 22.3 corrupts the output of a
+// tessellation + geometry shader draw past about 65536 generated triangles (a stray triangle
+// covering the wall); at the highest level (64) a patch makes 4096 triangles.
+constexpr std::uint32_t kMaxPatchesPerDraw = 16;
+
+std::size_t hashMap(const RetargetMap& map, const std::vector<float>& data) {
+  const std::string_view bytes(reinterpret_cast<const char*>(data.data()),
+                               data.size() * sizeof(float));
+  std::size_t hash = std::hash<std::string_view>{}(bytes);
+  for (double v : {map.reference.x, map.reference.y, map.reference.z})
+    hash = hash * 1099511628211ull ^ std::hash<double>{}(v);
+  return hash;
+}
+
+}  // namespace
+
+FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
+    : context_(context), pipelines_(pipelines), prepass_(context, pipelines) {
+  const VkDevice device = context.device();
+  const std::array<VkDescriptorPoolSize, 3> sizes = {{
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
+  }};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 2;
+  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  pool_ = UniqueDescriptorPool(device, pool);
+  const std::array<VkDescriptorSetLayout, 2> layouts = {pipelines.frameSetLayout(),
+                                                        pipelines.warpSetLayout()};
+  std::array<VkDescriptorSet, 2> sets{};
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = pool;
+  allocInfo.descriptorSetCount = 2;
+  allocInfo.pSetLayouts = layouts.data();
+  check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
+  frameSet_ = sets[0];
+  warpSet_ = sets[1];
+  frameBuffer_ = Buffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+  writeBufferDescriptor(device, frameSet_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                        frameBuffer_.get());
+  const VkSamplerCreateInfo samplerInfo = warpSamplerInfo();
+  VkSampler sampler = VK_NULL_HANDLE;
+  check(vkCreateSampler(device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");
+  warpSampler_ = UniqueSampler(device, sampler);
+}
+
+FrameRenderer::Targets& FrameRenderer::targets(std::uint32_t width, std::uint32_t height,
+                                               std::uint32_t views, VkRenderPass renderPass) {
+  const auto key = std::make_tuple(width, height, views);
+  auto found = targets_.find(key);
+  if (found != targets_.end()) return found->second;
+  Targets t;
+  ImageSpec color;
+  color.format = kColorFormat;
+  color.width = width;
+  color.height = height;
+  color.layers = views;
+  color.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  t.color = Image(context_, color);
+  ImageSpec depth = color;
+  depth.format = kDepthFormat;
+  depth.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  depth.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+  t.depth = Image(context_, depth);
+  const std::array<VkImageView, 2> attachments = {t.color.view(), t.depth.view()};
+  VkFramebufferCreateInfo info{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+  info.renderPass = renderPass;
+  info.attachmentCount = 2;
+  info.pAttachments = attachments.data();
+  info.width = width;
+  info.height = height;
+  info.layers = 1;  // multiview: the view mask picks the layers
+  VkFramebuffer framebuffer = VK_NULL_HANDLE;
+  check(vkCreateFramebuffer(context_.device(), &info, nullptr, &framebuffer),
+        "vkCreateFramebuffer");
+  t.framebuffer = UniqueFramebuffer(context_.device(), framebuffer);
+  t.readback = Buffer(context_, std::size_t{width} * height * views * 4 * sizeof(float),
+                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+  return targets_.emplace(key, std::move(t)).first->second;
+}
+
+void FrameRenderer::uploadFrame(const FramePlan& plan) {
+  std::memcpy(frameBuffer_.mapped(), &plan.frame, sizeof(FrameUniforms));
+  const std::size_t bytes = plan.views.size() * sizeof(ViewData);
+  if (viewBuffer_.size() < bytes) {
+    viewBuffer_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+    writeBufferDescriptor(context_.device(), frameSet_, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                          viewBuffer_.get());
+  }
+  std::memcpy(viewBuffer_.mapped(), plan.views.data(), bytes);
+}
+
+void FrameRenderer::uploadMap(const RetargetMap& map) {
+  const std::vector<float> data = geomMapUploadData(map);  // validates the map
+  const std::size_t hash = hashMap(map, data);
+  if (geomMap_.get() != VK_NULL_HANDLE && hash == mapHash_) return;
+  const auto n = static_cast<std::uint32_t>(map.geom.faceSize);
+  ImageSpec spec;
+  spec.format = kGeomMapFormat;
+  spec.width = spec.height = n;
+  spec.layers = 6;
+  spec.cube = true;
+  spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  geomMap_ = Image(context_, spec);
+  uploadFloatImage(context_, geomMap_, data.data());
+  writeImageDescriptor(context_.device(), warpSet_, kWarpBinding, warpSampler_.get(),
+                       geomMap_.view());
+  mapHash_ = hash;
+}
+
+void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
+                               const GpuScene& scene, const Targets& t) {
+  const std::uint32_t width = request.width, height = request.height, views = request.views;
+  const Pipelines::Pass& pass = pipelines_.pass(views);
+  std::array<VkClearValue, 2> clear{};
+  clear[0].color = {{0.0f, 0.0f, 0.0f, 0.0f}};  // alpha 0 where nothing is drawn
+  clear[1].depthStencil = {1.0f, 0};
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = pass.renderPass.get();
+  begin.framebuffer = t.framebuffer.get();
+  begin.renderArea = {{0, 0}, {width, height}};
+  begin.clearValueCount = 2;
+  begin.pClearValues = clear.data();
+  vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {width, height}};
+  vkCmdSetViewport(cmd, 0, 1, &viewport);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  recordDraws(cmd, pass, request, scene);
+  vkCmdEndRenderPass(cmd);
+  // The pass left the colour layers in TRANSFER_SRC_OPTIMAL; its dependency orders this copy.
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, views};
+  region.imageExtent = {width, height, 1};
+  vkCmdCopyImageToBuffer(cmd, t.color.get(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         t.readback.get(), 1, &region);
+  // Make the copy visible to the host reading the mapped buffer after the fence.
+  VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                       &toHost, 0, nullptr, 0, nullptr);
+}
+
+void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass,
+                                const PassRequest& request, const GpuScene& scene) {
+  const VkPipelineLayout layout = pipelines_.layout();
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &frameSet_, 0,
+                          nullptr);
+  if (request.conformal)
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kWarpDescriptorSet, 1,
+                            &warpSet_, 0, nullptr);
+  const std::array<VkBuffer, 2> vertexBuffers = {scene.vertexBuffer(), prepass_.warped()};
+  const std::array<VkDeviceSize, 2> offsets = {0, 0};
+  vkCmdBindVertexBuffers(cmd, 0, request.conformal ? 2 : 1, vertexBuffers.data(), offsets.data());
+  const auto drawAll = [&](VkPipeline pipeline, VkBuffer indices, bool tessellated) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+    for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+      const GpuScene::Draw& draw = scene.draws()[d];
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
+                              0, nullptr);
+      const PushConstants push{draw.baseColorFactor, request.viewBase,
+                               draw.hasNormals ? 1u : 0u, {0u, 0u}};
+      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+      if (request.conformal && tessellated) {
+        // The pre-pass has finished (the frame waited for it): split its list into draws of a
+        // bounded number of patches.
+        const VkDrawIndexedIndirectCommand c = prepass_.command(d, true);
+        constexpr std::uint32_t kChunk = 3 * kMaxPatchesPerDraw;
+        for (std::uint32_t first = 0; first < c.indexCount; first += kChunk)
+          vkCmdDrawIndexed(cmd, std::min(kChunk, c.indexCount - first), 1, c.firstIndex + first,
+                           c.vertexOffset, 0);
+      } else if (request.conformal) {  // the pre-pass's list and count
+        vkCmdDrawIndexedIndirect(cmd, prepass_.commands(), ConformalPrepass::commandOffset(d, false),
+                                 1, sizeof(VkDrawIndexedIndirectCommand));
+      } else {
+        vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
+      }
+    }
+  };
+  if (!request.conformal) {
+    drawAll(pass.plain.get(), scene.indexBuffer(), false);
+    return;
+  }
+  drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), false);
+  drawAll(pass.conformalTessellated.get(), prepass_.tessellatedIndices(), true);
+}
+
+std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
+                                                 const GpuScene& scene) {
+  const VkRenderPass renderPass = pipelines_.pass(request.views).renderPass.get();
+  const Targets& t = targets(request.width, request.height, request.views, renderPass);
+  context_.submitAndWait([&](VkCommandBuffer cmd) { recordPass(cmd, request, scene, t); });
+  std::vector<ImageRGBA> layers;
+  for (std::uint32_t layer = 0; layer < request.views; ++layer)
+    layers.push_back(layerToImage(t.readback, request.width, request.height, layer));
+  return layers;
+}
+
+FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene) const {
+  PrepassCounts counts;
+  counts.seconds = prepassSeconds_;
+  for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+    counts.flat += prepass_.command(d, false).indexCount / 3;
+    counts.tessellated += prepass_.command(d, true).indexCount / 3;
+  }
+  return counts;
+}
+
+std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuScene& scene,
+                                             const RetargetMap* map, bool multiview,
+                                             Progress& progress) {
+  const bool conformal = map != nullptr;
+  if (conformal) uploadMap(*map);
+  uploadFrame(plan);
+  if (conformal) {
+    // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
+    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f};
+    for (const ViewData& view : plan.views)
+      if (view.params.w != 0.0f)  // tessellation on
+        thresholds = {std::min(thresholds.maxErrorAngle, view.params.x), view.params.y,
+                      std::min(thresholds.minGap, view.params.z)};
+      else
+        thresholds.minGap = std::min(thresholds.minGap, view.params.z);
+    const auto start = std::chrono::steady_clock::now();
+    context_.submitAndWait([&](VkCommandBuffer cmd) {
+      prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
+    });
+    prepassSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());
+  std::vector<WallImage> images;
+  for (std::size_t wall = 0; wall < plan.walls.size(); ++wall) {
+    PassRequest request{plan.widths[wall], plan.heights[wall],
+                        static_cast<std::uint32_t>(wall) * eyes, eyes, conformal};
+    std::vector<ImageRGBA> layers;
+    if (multiview) {
+      layers = renderPass(request, scene);  // every eye in one multiview pass
+    } else {
+      request.views = 1;
+      for (std::uint32_t eye = 0; eye < eyes; ++eye, ++request.viewBase)
+        layers.push_back(std::move(renderPass(request, scene).front()));
+    }
+    for (std::uint32_t eye = 0; eye < eyes; ++eye)
+      images.push_back({plan.walls[wall]->name, plan.eyes[eye], std::move(layers[eye])});
+    progress.advance();
+  }
+  return images;
+}
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,73 @@
+#pragma once
+// Per-frame work: offscreen colour + depth targets per wall size (one layer per eye), the frame's
+// uniform and view buffers, the geom cube map, command recording (all eyes of a wall in one
+// multiview pass), submission and readback into images.
+#include <cstddef>
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "confvis/backends/render_backend.hpp"
+#include "confvis/base/progress.hpp"
+#include "conformal_prepass.hpp"
+#include "frame_plan.hpp"
+#include "gpu_scene.hpp"
+#include "memory.hpp"
+#include "pipelines.hpp"
+
+namespace confvis::vulkan {
+
+class FrameRenderer {
+ public:
+  FrameRenderer(VulkanContext& context, Pipelines& pipelines);
+
+  // Renders every wall of `plan` (conformal when `map` is non-null), returning images in wall
+  // order then eye order. multiview: all eyes of a wall in one pass (VK_KHR_multiview);
+  // otherwise one pass per eye (see multiview_probe.hpp for why that exists).
+  std::vector<WallImage> render(const FramePlan& plan, const GpuScene& scene,
+                                const RetargetMap* map, bool multiview, Progress& progress);
+
+  // Triangles the last conformal frame drew flat and through tessellation (the pre-pass's lists).
+  struct PrepassCounts {
+    std::size_t flat = 0, tessellated = 0;
+    double seconds = 0.0;  // wall-clock time of the pre-pass submission
+  };
+  PrepassCounts prepassCounts(const GpuScene& scene) const;
+
+ private:
+  struct Targets {
+    Image color, depth;
+    UniqueFramebuffer framebuffer;
+    Buffer readback;
+  };
+  Targets& targets(std::uint32_t width, std::uint32_t height, std::uint32_t views,
+                   VkRenderPass renderPass);
+  void uploadFrame(const FramePlan& plan);
+  void uploadMap(const RetargetMap& map);
+  struct PassRequest {
+    std::uint32_t width, height;
+    std::uint32_t viewBase;  // index into FramePlan::views of the pass's view 0
+    std::uint32_t views;     // multiview layers drawn in the pass
+    bool conformal;
+  };
+  // Draws one pass, reads it back; one image per view.
+  std::vector<ImageRGBA> renderPass(const PassRequest& request, const GpuScene& scene);
+  void recordPass(VkCommandBuffer cmd, const PassRequest& request, const GpuScene& scene,
+                  const Targets& targets);
+  void recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass, const PassRequest& request,
+                   const GpuScene& scene);
+
+  VulkanContext& context_;
+  Pipelines& pipelines_;
+  std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, Targets> targets_;
+  Buffer frameBuffer_, viewBuffer_;
+  UniqueDescriptorPool pool_;
+  VkDescriptorSet frameSet_ = VK_NULL_HANDLE, warpSet_ = VK_NULL_HANDLE;
+  Image geomMap_;
+  UniqueSampler warpSampler_;
+  std::size_t mapHash_ = 0;
+  ConformalPrepass prepass_;
+  double prepassSeconds_ = 0.0;
+};
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,110 @@
+#include "gpu_scene.hpp"
+
+#include <atomic>
+#include <limits>
+#include <string>
+
+#include "confvis/base/error.hpp"
+#include "vk_check.hpp"
+
+namespace confvis::vulkan {
+namespace {
+
+Image uploadTexture(VulkanContext& context, const Texture& texture) {
+  ImageSpec spec;
+  spec.width = static_cast<std::uint32_t>(texture.width);
+  spec.height = static_cast<std::uint32_t>(texture.height);
+  spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  Image image(context, spec);
+  uploadFloatImage(context, image, texture.rgba.data());
+  return image;
+}
+
+// Bilinear with repeat wrap and texel centres at (i + 0.5) / size: Texture::sample's filtering.
+UniqueSampler textureSampler(VkDevice device) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = VK_FILTER_LINEAR;
+  info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  VkSampler sampler = VK_NULL_HANDLE;
+  check(vkCreateSampler(device, &info, nullptr, &sampler), "vkCreateSampler");
+  return UniqueSampler(device, sampler);
+}
+
+}  // namespace
+
+GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Scene& scene) {
+  validateScene(scene);
+  const VkDevice device = context.device();
+  if (scene.vertexCount() > std::numeric_limits<std::int32_t>::max() ||
+      scene.triangleCount() * 3 > std::numeric_limits<std::uint32_t>::max())
+    throw Error(ErrorCode::InvalidInput,
+                "scene '" + scene.name + "' is too large for 32-bit vertex indices");
+
+  // Textures: the scene's, then white for untextured materials and meshes without uvs.
+  for (const Texture& texture : scene.textures) textures_.push_back(uploadTexture(context, texture));
+  Texture white;
+  white.width = white.height = 1;
+  white.rgba = {1.0f, 1.0f, 1.0f, 1.0f};
+  textures_.push_back(uploadTexture(context, white));
+  sampler_ = textureSampler(device);
+
+  const auto setCount = static_cast<std::uint32_t>(textures_.size());
+  const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, setCount};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = setCount;
+  poolInfo.poolSizeCount = 1;
+  poolInfo.pPoolSizes = &poolSize;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  pool_ = UniqueDescriptorPool(device, pool);
+  std::vector<VkDescriptorSetLayout> layouts(setCount, pipelines.materialSetLayout());
+  std::vector<VkDescriptorSet> sets(setCount);
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = pool;
+  allocInfo.descriptorSetCount = setCount;
+  allocInfo.pSetLayouts = layouts.data();
+  check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
+  for (std::uint32_t i = 0; i < setCount; ++i)
+    writeImageDescriptor(device, sets[i], 0, sampler_.get(), textures_[i].view());
+  const VkDescriptorSet whiteSet = sets.back();
+
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+  vertices.reserve(scene.vertexCount());
+  indices.reserve(scene.triangleCount() * 3);
+  for (const Mesh& mesh : scene.meshes) {
+    Draw draw;
+    draw.firstIndex = static_cast<std::uint32_t>(indices.size());
+    draw.indexCount = static_cast<std::uint32_t>(mesh.triangles.size() * 3);
+    draw.vertexOffset = static_cast<std::int32_t>(vertices.size());
+    draw.hasNormals = !mesh.normals.empty();
+    draw.material = whiteSet;
+    if (mesh.material >= 0) {
+      const Material& material = scene.materials[static_cast<std::size_t>(mesh.material)];
+      draw.baseColorFactor = material.baseColorFactor;
+      if (material.baseColorTexture >= 0 && !mesh.uvs.empty())
+        draw.material = sets[static_cast<std::size_t>(material.baseColorTexture)];
+    }
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+      vertices.push_back({mesh.positions[i], draw.hasNormals ? mesh.normals[i] : glm::vec3(0.0f),
+                          mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[i]});
+      bounds_.extend(mesh.positions[i]);
+    }
+    for (const glm::uvec3& t : mesh.triangles) indices.insert(indices.end(), {t.x, t.y, t.z});
+    if (draw.indexCount > 0) draws_.push_back(draw);
+  }
+  triangleCount_ = indices.size() / 3;
+  vertexCount_ = vertices.size();
+  static std::atomic<std::uint64_t> nextId{1};
+  id_ = nextId++;
+  vertices_ = uploadBuffer(context, vertices.data(), vertices.size() * sizeof(Vertex),
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  indices_ = uploadBuffer(context, indices.data(), indices.size() * sizeof(std::uint32_t),
+                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,50 @@
+#pragma once
+// A Scene on the device: one interleaved vertex buffer and one index buffer for all meshes (also
+// read as storage buffers by the conformal pre-pass), base-colour textures as float images, one
+// descriptor set per texture (plus a white one).
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "confvis/engine/scene.hpp"
+#include "context.hpp"
+#include "memory.hpp"
+#include "pipelines.hpp"
+
+namespace confvis::vulkan {
+
+class GpuScene {
+ public:
+  // Validates the scene (Error(InvalidInput) naming the culprit) and uploads it.
+  GpuScene(VulkanContext& context, const Pipelines& pipelines, const Scene& scene);
+
+  struct Draw {
+    std::uint32_t firstIndex = 0, indexCount = 0;
+    std::int32_t vertexOffset = 0;
+    glm::vec4 baseColorFactor{1.0f};
+    VkDescriptorSet material = VK_NULL_HANDLE;  // base-colour texture (white when none)
+    bool hasNormals = false;
+  };
+  const std::vector<Draw>& draws() const { return draws_; }
+  VkBuffer vertexBuffer() const { return vertices_.get(); }
+  VkBuffer indexBuffer() const { return indices_.get(); }
+  const Bounds& bounds() const { return bounds_; }
+  std::size_t triangleCount() const { return triangleCount_; }
+  std::size_t vertexCount() const { return vertexCount_; }
+  // Distinct for every GpuScene ever built, so that derived buffers know when to rebuild.
+  std::uint64_t id() const { return id_; }
+
+ private:
+  std::vector<Draw> draws_;
+  Buffer vertices_, indices_;
+  std::vector<Image> textures_;  // textures_.back() is the white 1x1 texture
+  UniqueSampler sampler_;
+  UniqueDescriptorPool pool_;
+  Bounds bounds_;
+  std::size_t triangleCount_ = 0;
+  std::size_t vertexCount_ = 0;
+  std::uint64_t id_ = 0;
+};
+
+}  // namespace confvis::vulkan

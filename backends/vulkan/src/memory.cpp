@@ -1,0 +1,159 @@
+#include "memory.hpp"
+
+#include <cstring>
+
+#include "vk_check.hpp"
+
+namespace confvis::vulkan {
+namespace {
+
+UniqueMemory allocate(VulkanContext& context, const VkMemoryRequirements& requirements,
+                      VkMemoryPropertyFlags flags) {
+  VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  info.allocationSize = requirements.size;
+  info.memoryTypeIndex = context.memoryType(requirements.memoryTypeBits, flags);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  check(vkAllocateMemory(context.device(), &info, nullptr, &memory), "vkAllocateMemory");
+  return UniqueMemory(context.device(), memory);
+}
+
+}  // namespace
+
+Buffer::Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
+               bool hostVisible)
+    : size_(size) {
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  check(vkCreateBuffer(context.device(), &info, nullptr, &buffer), "vkCreateBuffer");
+  buffer_ = UniqueBuffer(context.device(), buffer);
+  VkMemoryRequirements requirements;
+  vkGetBufferMemoryRequirements(context.device(), buffer, &requirements);
+  memory_ = allocate(context, requirements,
+                     hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
+                                       VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
+                                 : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  check(vkBindBufferMemory(context.device(), buffer, memory_.get(), 0), "vkBindBufferMemory");
+  if (hostVisible)
+    check(vkMapMemory(context.device(), memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped_),
+          "vkMapMemory");
+}
+
+Buffer uploadBuffer(VulkanContext& context, const void* data, std::size_t size,
+                    VkBufferUsageFlags usage) {
+  Buffer staging(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+  std::memcpy(staging.mapped(), data, size);
+  Buffer buffer(context, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    const VkBufferCopy region{0, 0, size};
+    vkCmdCopyBuffer(cmd, staging.get(), buffer.get(), 1, &region);
+  });
+  return buffer;
+}
+
+Image::Image(VulkanContext& context, const ImageSpec& spec) : spec_(spec) {
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.flags = spec.cube ? VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT : 0;
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = spec.format;
+  info.extent = {spec.width, spec.height, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = spec.layers;
+  info.samples = VK_SAMPLE_COUNT_1_BIT;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = spec.usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  VkImage image = VK_NULL_HANDLE;
+  check(vkCreateImage(context.device(), &info, nullptr, &image), "vkCreateImage");
+  image_ = UniqueImage(context.device(), image);
+  VkMemoryRequirements requirements;
+  vkGetImageMemoryRequirements(context.device(), image, &requirements);
+  memory_ = allocate(context, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  check(vkBindImageMemory(context.device(), image, memory_.get(), 0), "vkBindImageMemory");
+
+  VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  viewInfo.image = image;
+  viewInfo.viewType = spec.cube ? VK_IMAGE_VIEW_TYPE_CUBE
+                      : spec.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY
+                                        : VK_IMAGE_VIEW_TYPE_2D;
+  viewInfo.format = spec.format;
+  viewInfo.subresourceRange = {spec.aspect, 0, 1, 0, spec.layers};
+  VkImageView view = VK_NULL_HANDLE;
+  check(vkCreateImageView(context.device(), &viewInfo, nullptr, &view), "vkCreateImageView");
+  view_ = UniqueImageView(context.device(), view);
+}
+
+void transitionImage(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
+                     VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                     VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = srcAccess;
+  barrier.dstAccessMask = dstAccess;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image.get();
+  barrier.subresourceRange = {image.spec().aspect, 0, 1, 0, image.spec().layers};
+  vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
+void uploadFloatImage(VulkanContext& context, const Image& image, const float* rgba) {
+  const ImageSpec& spec = image.spec();
+  const std::size_t bytes =
+      std::size_t{spec.width} * spec.height * spec.layers * 4 * sizeof(float);
+  Buffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+  std::memcpy(staging.mapped(), rgba, bytes);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    transitionImage(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, spec.layers};
+    region.imageExtent = {spec.width, spec.height, 1};
+    vkCmdCopyBufferToImage(cmd, staging.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           1, &region);
+    transitionImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
+                    VK_ACCESS_SHADER_READ_BIT);
+  });
+}
+
+void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                           VkDescriptorType type, VkBuffer buffer) {
+  const VkDescriptorBufferInfo info{buffer, 0, VK_WHOLE_SIZE};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  write.pBufferInfo = &info;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                          VkSampler sampler, VkImageView view) {
+  const VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &info;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+ImageRGBA layerToImage(const Buffer& readback, std::uint32_t width, std::uint32_t height,
+                       std::uint32_t layer) {
+  ImageRGBA image(static_cast<int>(width), static_cast<int>(height));
+  const std::size_t floats = image.pixels.size();
+  const float* source = static_cast<const float*>(readback.mapped()) + floats * layer;
+  std::memcpy(image.pixels.data(), source, floats * sizeof(float));
+  return image;
+}
+
+}  // namespace confvis::vulkan

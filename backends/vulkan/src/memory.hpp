@@ -1,0 +1,84 @@
+#pragma once
+// Buffers and images with their memory: creation, uploads through a staging buffer, layout
+// transitions and readback of rendered layers.
+#include <cstddef>
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "confvis/base/image.hpp"
+#include "context.hpp"
+#include "handles.hpp"
+
+namespace confvis::vulkan {
+
+class Buffer {
+ public:
+  Buffer() = default;
+  // Host-visible memory (`hostVisible`) is mapped for the buffer's lifetime.
+  Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible);
+  Buffer(Buffer&&) noexcept = default;
+  Buffer& operator=(Buffer&&) noexcept = default;
+
+  VkBuffer get() const { return buffer_.get(); }
+  VkDeviceSize size() const { return size_; }
+  void* mapped() const { return mapped_; }
+
+ private:
+  // Declared so that the buffer goes before its memory (freeing memory also unmaps it).
+  UniqueMemory memory_;
+  UniqueBuffer buffer_;
+  VkDeviceSize size_ = 0;
+  void* mapped_ = nullptr;
+};
+
+// A device-local buffer holding `size` bytes of `data` (copied through a staging buffer).
+Buffer uploadBuffer(VulkanContext& context, const void* data, std::size_t size,
+                    VkBufferUsageFlags usage);
+
+struct ImageSpec {
+  VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  std::uint32_t width = 1, height = 1, layers = 1;
+  VkImageUsageFlags usage = 0;
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+  bool cube = false;  // six layers viewed as a samplerCube
+};
+
+class Image {
+ public:
+  Image() = default;
+  Image(VulkanContext& context, const ImageSpec& spec);
+
+  VkImage get() const { return image_.get(); }
+  VkImageView view() const { return view_.get(); }
+  const ImageSpec& spec() const { return spec_; }
+
+ private:
+  ImageSpec spec_;
+  UniqueMemory memory_;  // destroyed last
+  UniqueImage image_;
+  UniqueImageView view_;
+};
+
+// A barrier on every layer of `image`.
+void transitionImage(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
+                     VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                     VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
+// Fills an R32G32B32A32_SFLOAT image from tightly packed RGBA floats (layers back to back, rows
+// from the top) and leaves it ready for sampling in fragment and pre-rasterization stages.
+void uploadFloatImage(VulkanContext& context, const Image& image, const float* rgba);
+
+// Points binding `binding` of `set` at the whole buffer / at the image view with a sampler
+// (shader-read-only layout).
+void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                           VkDescriptorType type, VkBuffer buffer);
+void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                          VkSampler sampler, VkImageView view);
+
+// Converts layer `layer` of readback data (tightly packed RGBA float, as copied by
+// vkCmdCopyImageToBuffer) into an image.
+ImageRGBA layerToImage(const Buffer& readback, std::uint32_t width, std::uint32_t height,
+                       std::uint32_t layer);
+
+}  // namespace confvis::vulkan

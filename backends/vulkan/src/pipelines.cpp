@@ -1,0 +1,266 @@
+#include "pipelines.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
+
+#include "confvis/backends/vulkan/warp_interface.hpp"
+#include "vk_check.hpp"
+
+// SPIR-V compiled from shaders/ by glslangValidator at build time (see CMakeLists.txt).
+#include "confvis_spirv/scene_frag.h"
+#include "confvis_spirv/scene_vert.h"
+#include "confvis_spirv/warp_geom.h"
+#include "confvis_spirv/warp_tesc.h"
+#include "confvis_spirv/warp_tese.h"
+#include "confvis_spirv/warp_simple_vert.h"
+#include "confvis_spirv/warp_vert.h"
+
+namespace confvis::vulkan {
+
+UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = bytes;
+  info.pCode = code;
+  VkShaderModule module = VK_NULL_HANDLE;
+  check(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
+  return UniqueShaderModule(device, module);
+}
+
+UniqueDescriptorSetLayout setLayout(VkDevice device,
+                                    const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = static_cast<std::uint32_t>(bindings.size());
+  info.pBindings = bindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout),
+        "vkCreateDescriptorSetLayout");
+  return UniqueDescriptorSetLayout(device, layout);
+}
+
+UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,
+                                    const VkPushConstantRange& push) {
+  VkPipelineLayoutCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  info.setLayoutCount = static_cast<std::uint32_t>(sets.size());
+  info.pSetLayouts = sets.data();
+  info.pushConstantRangeCount = 1;
+  info.pPushConstantRanges = &push;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  check(vkCreatePipelineLayout(device, &info, nullptr, &layout), "vkCreatePipelineLayout");
+  return UniquePipelineLayout(device, layout);
+}
+
+namespace {
+
+constexpr VkShaderStageFlags kGeometryStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
+    VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_GEOMETRY_BIT;
+constexpr VkShaderStageFlags kAllStages = kGeometryStages | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits bit, const UniqueShaderModule& module) {
+  VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  info.stage = bit;
+  info.module = module.get();
+  info.pName = "main";
+  return info;
+}
+
+}  // namespace
+
+Pipelines::Pipelines(VulkanContext& context) : context_(context) {
+  const VkDevice device = context.device();
+  sceneVert_ = shaderModule(device, kSpirv_scene_vert);
+  sceneFrag_ = shaderModule(device, kSpirv_scene_frag);
+  warpSimpleVert_ = shaderModule(device, kSpirv_warp_simple_vert);
+  warpVert_ = shaderModule(device, kSpirv_warp_vert);
+  warpTesc_ = shaderModule(device, kSpirv_warp_tesc);
+  warpTese_ = shaderModule(device, kSpirv_warp_tese);
+  warpGeom_ = shaderModule(device, kSpirv_warp_geom);
+
+  frameSetLayout_ = setLayout(
+      device, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages | VK_SHADER_STAGE_COMPUTE_BIT,
+                nullptr},
+               {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr}});
+  warpSetLayout_ =
+      setLayout(device, {warpLayoutBinding(kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT)});
+  materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                           VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
+  static_assert(kWarpDescriptorSet == 1, "set numbers of confvis_render_common.glsl");
+  layout_ = pipelineLayout(
+      device, {frameSetLayout_.get(), warpSetLayout_.get(), materialSetLayout_.get()},
+      {kAllStages, 0, sizeof(PushConstants)});
+  createComputePipelines();
+}
+
+const Pipelines::Pass& Pipelines::pass(std::uint32_t viewCount) {
+  auto found = passes_.find(viewCount);
+  if (found != passes_.end()) return found->second;
+  Pass pass;
+  pass.renderPass = createRenderPass(viewCount);
+  pass.plain = createPipeline(pass.renderPass.get(), Kind::Plain);
+  pass.conformalFlat = createPipeline(pass.renderPass.get(), Kind::ConformalFlat);
+  pass.conformalTessellated = createPipeline(pass.renderPass.get(), Kind::ConformalTessellated);
+  return passes_.emplace(viewCount, std::move(pass)).first->second;
+}
+
+UniqueRenderPass Pipelines::createRenderPass(std::uint32_t viewCount) const {
+  std::array<VkAttachmentDescription, 2> attachments{};
+  attachments[0].format = kColorFormat;
+  attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+  attachments[1] = attachments[0];
+  attachments[1].format = kDepthFormat;
+  attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  const VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &color;
+  subpass.pDepthStencilAttachment = &depth;
+  // Targets are reused wall after wall: order this pass after the previous pass's attachment
+  // writes and readback copy, and the readback copy after this pass.
+  std::array<VkSubpassDependency, 2> dependencies{};
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT |
+                                 VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[0].srcAccessMask =
+      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+                                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
+                                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;
+  dependencies[0].dstAccessMask =
+      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
+  dependencies[1].srcSubpass = 0;
+  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[1].dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  // Every eye of the wall in one pass: view i renders into layer i.
+  const std::uint32_t viewMask = (1u << viewCount) - 1u;
+  VkRenderPassMultiviewCreateInfo multiview{VK_STRUCTURE_TYPE_RENDER_PASS_MULTIVIEW_CREATE_INFO};
+  multiview.subpassCount = 1;
+  multiview.pViewMasks = &viewMask;
+  multiview.correlationMaskCount = 1;
+  multiview.pCorrelationMasks = &viewMask;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.pNext = &multiview;
+  info.attachmentCount = static_cast<std::uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = static_cast<std::uint32_t>(dependencies.size());
+  info.pDependencies = dependencies.data();
+  VkRenderPass renderPass = VK_NULL_HANDLE;
+  check(vkCreateRenderPass(context_.device(), &info, nullptr, &renderPass), "vkCreateRenderPass");
+  return UniqueRenderPass(context_.device(), renderPass);
+}
+
+UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) const {
+  const bool tessellated = kind == Kind::ConformalTessellated;
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  switch (kind) {
+    case Kind::Plain:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, sceneVert_)};
+      break;
+    case Kind::ConformalFlat:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpSimpleVert_)};
+      break;
+    case Kind::ConformalTessellated:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
+                stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
+                stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpTese_),
+                stage(VK_SHADER_STAGE_GEOMETRY_BIT, warpGeom_)};
+      break;
+  }
+  stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_));
+  // Binding 0: the scene's vertices; binding 1 (conformal): their warps from the pre-pass.
+  const std::array<VkVertexInputBindingDescription, 2> bindings = {{
+      {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
+      {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
+  }};
+  const std::array<VkVertexInputAttributeDescription, 4> attributes = {{
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+      {3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
+  }};
+  const bool conformal = kind != Kind::Plain;
+  VkPipelineVertexInputStateCreateInfo vertexInput{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  vertexInput.vertexBindingDescriptionCount = conformal ? 2 : 1;
+  vertexInput.pVertexBindingDescriptions = bindings.data();
+  vertexInput.vertexAttributeDescriptionCount = conformal ? 4 : 3;
+  vertexInput.pVertexAttributeDescriptions = attributes.data();
+  VkPipelineInputAssemblyStateCreateInfo assembly{
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology =
+      tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineTessellationStateCreateInfo tessellation{
+      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+  tessellation.patchControlPoints = 3;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;  // two-sided: scenes are seen from inside and outside
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{
+      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = VK_TRUE;
+  depth.depthCompareOp = VK_COMPARE_OP_LESS;
+  VkPipelineColorBlendAttachmentState blendAttachment{};
+  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  VkPipelineColorBlendStateCreateInfo blend{
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = 1;
+  blend.pAttachments = &blendAttachment;
+  const std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                       VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamicStates.size());
+  dynamic.pDynamicStates = dynamicStates.data();
+
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = static_cast<std::uint32_t>(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &assembly;
+  info.pTessellationState = tessellated ? &tessellation : nullptr;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout_.get();
+  info.renderPass = renderPass;
+  info.subpass = 0;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  check(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateGraphicsPipelines");
+  return UniquePipeline(context_.device(), pipeline);
+}
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,111 @@
+#pragma once
+// Shader modules (SPIR-V embedded at build time), descriptor set and pipeline layouts, render
+// passes, graphics pipelines and the conformal pre-pass compute pipelines. Set 0: the frame
+// (uniforms, per wall-and-eye views); set 1: the warp's geom cube map (confvis_warp.glsl);
+// set 2: a material's base-colour texture (graphics) or the pre-pass buffers (compute).
+#include <cstdint>
+#include <map>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "context.hpp"
+#include "handles.hpp"
+
+namespace confvis::vulkan {
+
+inline constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+
+// std140 uniform block `Frame` of confvis_render_common.glsl.
+struct FrameUniforms {
+  glm::mat4 worldToPhysical;
+  glm::vec4 warpCentre;
+};
+
+// std430 element `View` of confvis_render_common.glsl.
+struct ViewData {
+  glm::mat4 viewProj;
+  glm::vec4 eyeVirtual;
+  glm::vec4 params;  // max bend error, max segment angle, min cut gap (radians), tessellate
+};
+
+// Push constant block `Push` of confvis_render_common.glsl.
+struct PushConstants {
+  glm::vec4 baseColorFactor;
+  std::uint32_t viewBase;
+  std::uint32_t hasNormals;
+  std::uint32_t padding[2];
+};
+
+// Push constant block `Prepass` of confvis_prepass_common.glsl.
+struct PrepassConstants {
+  std::uint32_t count;
+  std::uint32_t mesh;
+  std::uint32_t firstIndex;
+  std::int32_t vertexOffset;
+  float maxErrorAngle;
+  float maxSegmentAngle;
+  float minGap;
+  float padding;
+};
+
+// Interleaved vertex as uploaded by GpuScene.
+struct Vertex {
+  glm::vec3 position;
+  glm::vec3 normal;
+  glm::vec2 uv;
+};
+
+UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t* code, std::size_t bytes);
+template <std::size_t N>
+UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t (&spirv)[N]) {
+  return shaderModule(device, spirv, sizeof(spirv));
+}
+UniqueDescriptorSetLayout setLayout(VkDevice device,
+                                    const std::vector<VkDescriptorSetLayoutBinding>& bindings);
+UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,
+                                    const VkPushConstantRange& push);
+
+class Pipelines {
+ public:
+  explicit Pipelines(VulkanContext& context);
+
+  VkDescriptorSetLayout frameSetLayout() const { return frameSetLayout_.get(); }
+  VkDescriptorSetLayout warpSetLayout() const { return warpSetLayout_.get(); }
+  VkDescriptorSetLayout materialSetLayout() const { return materialSetLayout_.get(); }
+  VkDescriptorSetLayout prepassSetLayout() const { return prepassSetLayout_.get(); }
+  VkPipelineLayout layout() const { return layout_.get(); }
+  VkPipelineLayout computeLayout() const { return computeLayout_.get(); }
+  VkPipeline warpVertices() const { return warpVertices_.get(); }
+  VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
+
+  // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
+  // built on first use. Conformal mode draws with two: conformalFlat for the triangles the
+  // pre-pass found straight enough, conformalTessellated (tessellation + geometry shader) for
+  // the rest.
+  struct Pass {
+    UniqueRenderPass renderPass;
+    UniquePipeline plain;
+    UniquePipeline conformalFlat;
+    UniquePipeline conformalTessellated;
+  };
+  const Pass& pass(std::uint32_t viewCount);
+
+ private:
+  enum class Kind { Plain, ConformalFlat, ConformalTessellated };
+  UniqueRenderPass createRenderPass(std::uint32_t viewCount) const;
+  UniquePipeline createPipeline(VkRenderPass renderPass, Kind kind) const;
+  void createComputePipelines();  // pipelines_compute.cpp
+
+  VulkanContext& context_;
+  UniqueShaderModule sceneVert_, sceneFrag_, warpSimpleVert_, warpVert_, warpTesc_, warpTese_,
+      warpGeom_;
+  UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
+      prepassSetLayout_;
+  UniquePipelineLayout layout_, computeLayout_;
+  UniquePipeline warpVertices_, classifyTriangles_;
+  std::map<std::uint32_t, Pass> passes_;
+};
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,47 @@
+// The conformal pre-pass compute pipelines (warp_vertices.comp, classify_triangles.comp) and
+// their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
+#include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
+
+#include "pipelines.hpp"
+#include "vk_check.hpp"
+
+#include "confvis_spirv/classify_triangles_comp.h"
+#include "confvis_spirv/warp_vertices_comp.h"
+
+namespace confvis::vulkan {
+namespace {
+
+UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
+                               const UniqueShaderModule& module) {
+  VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+  info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  info.stage.module = module.get();
+  info.stage.pName = "main";
+  info.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  check(vkCreateComputePipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+        "vkCreateComputePipelines");
+  return UniquePipeline(device, pipeline);
+}
+
+}  // namespace
+
+void Pipelines::createComputePipelines() {
+  const VkDevice device = context_.device();
+  std::vector<VkDescriptorSetLayoutBinding> buffers;
+  for (std::uint32_t binding = 0; binding < 6; ++binding)
+    buffers.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                       VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  prepassSetLayout_ = setLayout(device, buffers);
+  computeLayout_ = pipelineLayout(
+      device, {frameSetLayout_.get(), warpSetLayout_.get(), prepassSetLayout_.get()},
+      {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PrepassConstants)});
+  const VkPipelineLayout layout = computeLayout_.get();
+  const UniqueShaderModule warp = shaderModule(device, kSpirv_warp_vertices_comp);
+  const UniqueShaderModule classify = shaderModule(device, kSpirv_classify_triangles_comp);
+  warpVertices_ = computePipeline(device, layout, warp);
+  classifyTriangles_ = computePipeline(device, layout, classify);
+}
+
+}  // namespace confvis::vulkan

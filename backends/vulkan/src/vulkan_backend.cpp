@@ -1,0 +1,125 @@
+#include "confvis/backends/vulkan_backend.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "confvis/base/error.hpp"
+#include "confvis/base/progress.hpp"
+#include "context.hpp"
+#include "frame_plan.hpp"
+#include "frame_renderer.hpp"
+#include "gpu_scene.hpp"
+#include "multiview_probe.hpp"
+#include "pipelines.hpp"
+
+namespace confvis {
+namespace {
+
+using vulkan::DeviceCapabilities;
+
+std::string versionString(std::uint32_t version) {
+  return std::to_string(VK_API_VERSION_MAJOR(version)) + "." +
+         std::to_string(VK_API_VERSION_MINOR(version)) + "." +
+         std::to_string(VK_API_VERSION_PATCH(version));
+}
+
+void checkOptions(const VulkanOptions& options) {
+  if (!(options.tessellationErrorPixels > 0.0) || !std::isfinite(options.tessellationErrorPixels))
+    throw Error(ErrorCode::InvalidInput, "Vulkan backend: tessellation error must be > 0 pixels");
+  if (!(options.maxSegmentDegrees > 0.0) || !(options.maxSegmentDegrees <= 180.0))
+    throw Error(ErrorCode::InvalidInput,
+                "Vulkan backend: the longest segment must be in (0, 180] degrees");
+}
+
+class VulkanBackend final : public RenderBackend {
+ public:
+  explicit VulkanBackend(const VulkanOptions& options)
+      : options_((checkOptions(options), options)),
+        context_({options.device, options.validation, options.onValidationMessage}),
+        pipelines_(context_),
+        frames_(context_, pipelines_),
+        multiview_(options.stereoPasses == StereoPasses::Multiview ||
+                   (options.stereoPasses == StereoPasses::Auto &&
+                    vulkan::multiviewKeepsClippedPrimitivesInTheirView(context_, pipelines_,
+                                                                       frames_))) {}
+
+  std::string name() const override { return "vulkan"; }
+
+  void setScene(const Scene& scene) override {
+    scene_.reset();  // free the old buffers first
+    scene_.emplace(context_, pipelines_, scene);
+  }
+
+  RenderResult render(const DisplayConfig& config, const RetargetMap* map,
+                      const RenderSettings& settings) override {
+    if (!scene_) throw Error(ErrorCode::InvalidInput, "Vulkan backend: render before setScene");
+    const auto start = std::chrono::steady_clock::now();
+    const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
+                                                   options_.maxSegmentDegrees, options_.tessellate};
+    const vulkan::FramePlan plan =
+        vulkan::planFrame(config, map, settings, scene_->bounds(), tessellation,
+                          context_.capabilities().maxMultiviewViewCount);
+    const bool conformal = settings.mode == RenderMode::Conformal;
+    Progress progress("vulkan " + std::string(conformal ? "conformal" : "plain"),
+                      plan.walls.size(), settings.showProgress);
+    RenderResult result;
+    const bool onePass = multiview_ || plan.eyes.size() == 1;
+    result.images =
+        frames_.render(plan, *scene_, conformal ? map : nullptr, multiview_, progress);
+    progress.finish();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.stats = {{"backend", "vulkan"},
+                    {"device", context_.capabilities().name},
+                    {"mode", conformal ? "conformal" : "plain"},
+                    {"walls", plan.walls.size()},
+                    {"views_per_pass", onePass ? plan.eyes.size() : 1},
+                    {"stereo_passes", multiview_ ? "multiview" : "per-eye"},
+                    {"triangles", scene_->triangleCount()},
+                    {"seconds", seconds}};
+    if (conformal) {
+      result.stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
+      result.stats["tessellation"] = options_.tessellate;
+      const auto counts = frames_.prepassCounts(*scene_);
+      result.stats["triangles_drawn_flat"] = counts.flat;
+      result.stats["triangles_tessellated"] = counts.tessellated;
+      result.stats["prepass_seconds"] = counts.seconds;
+    }
+    return result;
+  }
+
+ private:
+  VulkanOptions options_;
+  vulkan::VulkanContext context_;
+  vulkan::Pipelines pipelines_;
+  vulkan::FrameRenderer frames_;
+  bool multiview_;  // every eye of a wall in one pass
+  std::optional<vulkan::GpuScene> scene_;
+};
+
+}  // namespace
+
+std::vector<VulkanDeviceInfo> listVulkanDevices() {
+  const VkInstance instance = vulkan::createPlainInstance();
+  std::vector<DeviceCapabilities> devices;
+  try {
+    devices = vulkan::queryDevices(instance);
+  } catch (...) {
+    vkDestroyInstance(instance, nullptr);
+    throw;
+  }
+  vkDestroyInstance(instance, nullptr);
+  std::vector<VulkanDeviceInfo> infos;
+  for (std::size_t i = 0; i < devices.size(); ++i)
+    infos.push_back({static_cast<int>(i), devices[i].name, vulkan::toString(devices[i].kind),
+                     versionString(devices[i].apiVersion),
+                     vulkan::missingRequirements(devices[i])});
+  return infos;
+}
+
+std::unique_ptr<RenderBackend> makeVulkanBackend(const VulkanOptions& options) {
+  return std::make_unique<VulkanBackend>(options);
+}
+
+}  // namespace confvis

@@ -1,0 +1,30 @@
+// Resources shared by the confvis Vulkan backend's shaders (backends/vulkan/src/pipelines.cpp
+// creates the matching layouts). Not part of the public warp interface (confvis_warp.glsl).
+#ifndef CONFVIS_RENDER_COMMON_GLSL
+#define CONFVIS_RENDER_COMMON_GLSL
+
+#extension GL_EXT_multiview : require
+
+// Set 0: the frame.
+#include "confvis_frame.glsl"
+
+// One entry per (wall, eye), index wall * eyes + eye; a pass draws views viewBase + gl_ViewIndex.
+// params: x = largest bend error (radians), y = largest segment angle (radians),
+//         z = smallest cut gap (radians), w = 1 to tessellate, 0 to draw the warp unsubdivided.
+struct View {
+  mat4 viewProj;     // physical frame -> Vulkan clip space of the wall for this eye
+  vec4 eyeVirtual;   // xyz: where the headlight sits, in world coordinates
+  vec4 params;
+};
+layout(set = 0, binding = 1, std430) readonly buffer Views { View views[]; };
+
+layout(push_constant) uniform Push {
+  vec4 baseColorFactor;
+  uint viewBase;  // views[] index of this pass's view 0
+  uint hasNormals;
+} push;
+
+View currentView() { return views[push.viewBase + gl_ViewIndex]; }
+View wallView() { return views[push.viewBase]; }  // for the eye-independent params
+
+#endif

@@ -1,0 +1,148 @@
+// confvis conformal warp for Vulkan renderers (design note §5, forward path).
+//
+// A virtual scene point x, expressed in the physical frame (after the application's navigation
+// transform), is drawn at the physical point
+//     W^-1(x) = c + |x - c| * T_geom(dir(x - c)),
+// where c is the map's reference point and T_geom is the baked `geom` cube map of a
+// confvis::RetargetMap: indexed by the virtual direction, storing the physical direction in RGB and
+// the source-field validity in A. Distances to c are kept, so depth stays correct for every eye;
+// project the warped point with the wall's ordinary off-axis (generalized perspective) matrix.
+//
+// Descriptor layout (one binding):
+//   layout(set = CONFVIS_WARP_SET, binding = CONFVIS_WARP_BINDING) uniform samplerCube
+//   - image: VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT, 6 array layers, VK_FORMAT_R32G32B32A32_SFLOAT
+//     (float32: half floats quantise directions to ~0.03 degrees), one mip level, layer i =
+//     toVulkanLayout(map.geom).faces[i] (confvis/base/cube_map.hpp converts the in-face
+//     orientation; confvis/backends/vulkan/warp_interface.hpp packs the upload data);
+//   - sampler: VK_FILTER_LINEAR (min and mag; the format must support linear filtering),
+//     VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, unnormalizedCoordinates = VK_FALSE.
+// Define CONFVIS_WARP_SET and CONFVIS_WARP_BINDING before including this file to move the binding
+// (defaults: set 1, binding 0). The map is needed in every stage that calls these functions.
+//
+// Triangles must be subdivided before the per-vertex warp (edges bend): use
+// confvisEdgeSegments() for the tessellation levels, and drop triangles with
+// confvisDropTriangle() after tessellation (those straddling the source's cut, whose corners land
+// far apart, and those outside the source field) instead of smearing them across a wall.
+#ifndef CONFVIS_WARP_GLSL
+#define CONFVIS_WARP_GLSL
+
+#ifndef CONFVIS_WARP_SET
+#define CONFVIS_WARP_SET 1
+#endif
+#ifndef CONFVIS_WARP_BINDING
+#define CONFVIS_WARP_BINDING 0
+#endif
+
+layout(set = CONFVIS_WARP_SET, binding = CONFVIS_WARP_BINDING) uniform samplerCube confvisGeomMap;
+
+// Angle between two non-zero vectors in radians (atan keeps tiny angles accurate).
+float confvisAngle(vec3 a, vec3 b) { return atan(length(cross(a, b)), dot(a, b)); }
+
+// Cube-map lookup of T_geom for a non-zero virtual direction: xyz = unit physical direction,
+// w = validity (alpha, 1 inside the source field). Bilinear, except across the source's cut: the
+// map jumps there, and blending texels from both sides would land between them (in the middle of
+// a wall). Where the hardware's bilinear blend comes out shorter than unit directions about
+// eight neighbour spacings apart would give, the four texels are fetched and those whose
+// directions differ from the nearest texel's by more than that are left out of the blend, so a
+// point next to the cut keeps its own side.
+vec4 confvisSampleGeomAcrossCut(vec3 v);
+
+vec4 confvisSampleGeom(vec3 v) {
+  vec4 blended = textureLod(confvisGeomMap, v, 0.0);
+  float n = float(textureSize(confvisGeomMap, 0).x);
+  // |blend of unit vectors theta apart| >= cos(theta / 2) ~ 1 - theta^2 / 8, theta = 16 / n.
+  float shortest = 1.0 - 32.0 / (n * n);
+  float len = length(blended.xyz);
+  if (len >= shortest) return vec4(blended.xyz / len, blended.w);
+  return confvisSampleGeomAcrossCut(v);
+}
+
+vec4 confvisSampleGeomAcrossCut(vec3 v) {
+  // Face and (s, t) exactly as the Vulkan spec's cube-map face selection table.
+  vec3 a = abs(v);
+  float sc, tc, ma;
+  if (a.x >= a.y && a.x >= a.z) {
+    ma = a.x; sc = v.x > 0.0 ? -v.z : v.z; tc = -v.y;
+  } else if (a.y >= a.z) {
+    ma = a.y; sc = v.x; tc = v.y > 0.0 ? v.z : -v.z;
+  } else {
+    ma = a.z; sc = v.z > 0.0 ? v.x : -v.x; tc = -v.y;
+  }
+  float n = float(textureSize(confvisGeomMap, 0).x);
+  vec2 f = fract((0.5 * vec2(sc, tc) / ma + 0.5) * n - 0.5);
+  // textureGather order: (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+  vec4 gx = textureGather(confvisGeomMap, v, 0);
+  vec4 gy = textureGather(confvisGeomMap, v, 1);
+  vec4 gz = textureGather(confvisGeomMap, v, 2);
+  vec4 gw = textureGather(confvisGeomMap, v, 3);
+  vec4 weight = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+  int nearest = 0;
+  for (int i = 1; i < 4; ++i)
+    if (weight[i] > weight[nearest]) nearest = i;
+  vec3 anchor = normalize(vec3(gx[nearest], gy[nearest], gz[nearest]));
+  // Neighbouring texels are about 2/n radians apart where the map does not stretch.
+  float cosLimit = cos(min(16.0 / n, 1.5));
+  vec3 direction = vec3(0.0);
+  float validity = 0.0, total = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    vec3 d = vec3(gx[i], gy[i], gz[i]);
+    if (dot(normalize(d), anchor) >= cosLimit) {
+      direction += weight[i] * d;
+      validity += weight[i] * gw[i];
+      total += weight[i];
+    }
+  }
+  return vec4(normalize(direction), validity / total);
+}
+
+// Warps a point given relative to c: xyz = warped point relative to c, w = validity.
+vec4 confvisWarpRelative(vec3 relative) {
+  float r = length(relative);
+  if (r < 1e-9) return vec4(relative, 1.0);  // c itself stays put
+  vec4 g = confvisSampleGeom(relative / r);
+  return vec4(r * g.xyz, g.w);
+}
+
+// Segments for the edge a-b (virtual points relative to c; wa, wb their warps from
+// confvisWarpRelative) so that the drawn polyline stays within maxErrorAngle (radians, seen
+// from c) of the bent edge: the warped midpoint's deviation from the chord shrinks with the square
+// of the segment count. maxSegmentAngle caps the angular length of a segment so that a long edge
+// whose bend happens to vanish at its midpoint is still subdivided. An edge across the source's
+// cut is cut into segments of about twice maxErrorAngle (a pixel at the default half-pixel
+// error), so that the triangles dropped along the cut leave gaps of about a pixel. It is told
+// from a smooth bend by its halves: where T_geom jumps, one warped half spans the jump and is
+// more than three times as long as the other (and longer than eight times maxErrorAngle), while
+// a smooth map stretches both halves of a short edge alike. Symmetric in (a, b), so the two triangles sharing an edge
+// agree and leave no cracks. In [1, 64]. warpedMidpoint receives the warp of the edge's midpoint
+// (relative to c), e.g. for culling the patch.
+float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
+                          float maxSegmentAngle, out vec3 warpedMidpoint) {
+  vec3 wm = confvisWarpRelative(0.5 * (a + b)).xyz;
+  warpedMidpoint = wm;
+  float edge = confvisAngle(a, b);
+  float halfA = confvisAngle(wa, wm), halfB = confvisAngle(wm, wb);
+  float longHalf = max(halfA, halfB);
+  float segments;
+  if (longHalf > max(3.0 * min(halfA, halfB), 8.0 * maxErrorAngle)) {
+    segments = edge / (2.0 * maxErrorAngle);
+  } else {
+    float deviation = confvisAngle(wm, 0.5 * (wa + wb));
+    segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
+  }
+  return clamp(ceil(segments), 1.0, 64.0);
+}
+
+// True for a (small, tessellated) triangle that must not be drawn: a corner outside the source
+// field (validity below 0.5), or corners that the warp throws far apart, which happens only when
+// the triangle straddles the source's cut (T_geom jumps there): its warped angular size exceeds
+// four times its virtual one and minGap (radians; a few pixels, so that the tiny jumps near the
+// cut's ends, where both sides meet again, are not mistaken for cuts).
+bool confvisDropTriangle(vec3 a, vec3 b, vec3 c, vec4 wa, vec4 wb, vec4 wc, float minGap) {
+  if (min(wa.w, min(wb.w, wc.w)) < 0.5) return true;
+  float virtualSize = max(confvisAngle(a, b), max(confvisAngle(b, c), confvisAngle(c, a)));
+  float warpedSize =
+      max(confvisAngle(wa.xyz, wb.xyz), max(confvisAngle(wb.xyz, wc.xyz), confvisAngle(wc.xyz, wa.xyz)));
+  return warpedSize > max(4.0 * virtualSize, minGap);
+}
+
+#endif  // CONFVIS_WARP_GLSL

@@ -1,0 +1,75 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Conformal mode: subdivide each triangle by how much the warp bends its edges.
+#include "confvis_render_common.glsl"
+#include "confvis_warp.glsl"
+
+layout(vertices = 3) out;
+
+layout(location = 0) in vec3 inRelative[];
+layout(location = 1) in vec4 inWarped[];
+layout(location = 2) in vec3 inWorld[];
+layout(location = 3) in vec3 inNormal[];
+layout(location = 4) in vec2 inUv[];
+
+layout(location = 0) out vec3 outRelative[];
+layout(location = 1) out vec4 outWarped[];
+layout(location = 2) out vec3 outWorld[];
+layout(location = 3) out vec3 outNormal[];
+layout(location = 4) out vec2 outUv[];
+
+float segments(int i, int j, out vec3 warpedMidpoint) {
+  vec4 params = wallView().params;
+  float n = confvisEdgeSegments(inRelative[i], inRelative[j], inWarped[i].xyz, inWarped[j].xyz,
+                                params.x, params.y, warpedMidpoint);
+  return params.w == 0.0 ? 1.0 : n;
+}
+
+// Bits of the clip planes (x, y both sides, near) that a point relative to c lies outside of,
+// with a margin of a tenth of the view for the bulge of bent edges between the sampled points.
+uint outside(vec3 relative) {
+  vec4 p = currentView().viewProj * vec4(frame.warpCentre.xyz + relative, 1.0);
+  float w = 1.1 * p.w;
+  return (p.x < -w ? 1u : 0u) | (p.x > w ? 2u : 0u) | (p.y < -w ? 4u : 0u) | (p.y > w ? 8u : 0u) |
+         (p.z < 0.0 ? 16u : 0u);
+}
+
+void cull() {
+  gl_TessLevelOuter[0] = gl_TessLevelOuter[1] = gl_TessLevelOuter[2] = 0.0;
+  gl_TessLevelInner[0] = 0.0;
+}
+
+void main() {
+  outRelative[gl_InvocationID] = inRelative[gl_InvocationID];
+  outWarped[gl_InvocationID] = inWarped[gl_InvocationID];
+  outWorld[gl_InvocationID] = inWorld[gl_InvocationID];
+  outNormal[gl_InvocationID] = inNormal[gl_InvocationID];
+  outUv[gl_InvocationID] = inUv[gl_InvocationID];
+  if (gl_InvocationID != 0) return;
+  if (max(inWarped[0].w, max(inWarped[1].w, inWarped[2].w)) < 0.5) {
+    cull();  // entirely outside the source field: nothing of it is shown
+    return;
+  }
+  // Outer level k belongs to the edge opposite corner k.
+  vec3 m0, m1, m2;
+  float e0 = segments(1, 2, m0), e1 = segments(2, 0, m1), e2 = segments(0, 1, m2);
+  // Patches whose warped corners and edge midpoints all lie beyond one side of this view are
+  // not drawn, unless an edge bends so much (across the cut, for one) that the samples say
+  // little about the curve between them.
+  float bendLimit = 16.0 * wallView().params.x;
+  bool strongBend = false;
+  vec3 m[3] = vec3[3](m0, m1, m2);
+  for (int k = 0; k < 3; ++k) {
+    vec3 chordMid = 0.5 * (inWarped[(k + 1) % 3].xyz + inWarped[(k + 2) % 3].xyz);
+    strongBend = strongBend || confvisAngle(m[k], chordMid) > bendLimit;
+  }
+  if (!strongBend && (outside(inWarped[0].xyz) & outside(inWarped[1].xyz) &
+                      outside(inWarped[2].xyz) & outside(m0) & outside(m1) & outside(m2)) != 0u) {
+    cull();
+    return;
+  }
+  gl_TessLevelOuter[0] = e0;
+  gl_TessLevelOuter[1] = e1;
+  gl_TessLevelOuter[2] = e2;
+  gl_TessLevelInner[0] = max(e0, max(e1, e2));
+}

@@ -1,0 +1,204 @@
+// Vulkan backend benchmark (run by hand, never in CI): frame time of conformal rendering as a
+// multiple of plain rendering of the same scene, walls and resolution, measured in the same run
+// (goal <= 1.5), and how that ratio and the image move with the tessellation threshold. The
+// image error is measured against the closed form (checker colours along T_ray of each pixel's
+// direction), the role the Embree render will play once both backends are merged.
+// Maps (analytic until baked maps are available): the identity (no bend: the warp's fixed cost),
+// a Moebius zoom (a smooth conformal map: bends like a baked map away from its cut) and an
+// azimuth squeeze (a cut along a half-meridian and singular poles: a stress test).
+// Times are medians of wall-clock and of process CPU time (lavapipe renders on the CPU in this
+// process, so CPU time is the steadier measure on a shared machine).
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
+
+#include "confvis/backends/vulkan_backend.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/engine/builtin_scenes.hpp"
+#include "vulkan_image_checks.hpp"  // closed-form image comparison shared with the tests
+#include "vulkan_test_maps.hpp"     // analytic maps shared with the tests
+
+using namespace confvis;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double cpuSeconds() {
+  timespec t;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+struct Timing {
+  double seconds = 0, cpu = 0;  // medians per frame
+  RenderResult last;
+};
+
+Timing timeFrames(RenderBackend& backend, const DisplayConfig& config, const RetargetMap* map,
+                  const RenderSettings& settings, int repeats) {
+  backend.render(config, map, settings);  // warm-up: pipelines, map upload, targets
+  std::vector<double> wall, cpu;
+  Timing t;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = Clock::now();
+    const double cpuStart = cpuSeconds();
+    t.last = backend.render(config, map, settings);
+    cpu.push_back(cpuSeconds() - cpuStart);
+    wall.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  t.seconds = median(wall);
+  t.cpu = median(cpu);
+  return t;
+}
+
+// Fraction of the unambiguous pixels (away from colour edges) of the centre-eye render that are
+// off the closed form by more than 0.05: checker colour along T_ray(d), times Lambert.
+double closedFormError(const RenderResult& result, const DisplayConfig& config, bool flatShaded,
+                       double zoom) {
+  const test::DirectionColor expected = [&](glm::dvec3 d) -> std::optional<glm::vec3> {
+    const auto v = test::scaleStereographic(glm::normalize(d), zoom);
+    const glm::dvec3 a = glm::abs(v);
+    // Flat cube faces shade with the face normal; the sphere's normals point at the viewer.
+    return checkerSphereColor(v) * float(flatShaded ? std::max({a.x, a.y, a.z}) : 1.0);
+  };
+  std::size_t bad = 0, compared = 0;
+  for (const WallImage& image : result.images) {
+    const test::AnalyticComparison c = test::compareAnalytic(
+        image.image, config.wall(image.wall), config.reference, expected, 0.05f);
+    bad += c.bad;
+    compared += c.unambiguous;
+  }
+  return compared ? double(bad) / double(compared) : 1.0;
+}
+
+// The checker-sphere with about `triangles` triangles; sharp textures (64 texels a square) so
+// that texture filtering stays below a pixel in the closed-form comparison.
+Scene sphereWithTriangles(std::size_t triangles) {
+  BuiltinSceneOptions options;
+  options.subdivision = std::max(1, int(std::lround(std::sqrt(triangles / 12.0))));
+  options.texelsPerSquare = 64;
+  return builtinScene("checker-sphere", options);
+}
+
+// The checker-sphere's n x n grid per face put back onto the cube, without normals: planar faces
+// with exact checker uv and triangles of 90/n degrees that bend visibly under the squeeze.
+Scene checkerCube(int n) {
+  BuiltinSceneOptions options;
+  options.subdivision = n;
+  options.texelsPerSquare = 64;
+  Scene cube = builtinScene("checker-sphere", options);
+  for (Mesh& mesh : cube.meshes) {
+    for (glm::vec3& p : mesh.positions) {
+      const glm::vec3 a = glm::abs(p);
+      p *= 10.0f / std::max({a.x, a.y, a.z});
+    }
+    mesh.normals.clear();
+  }
+  return cube;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app("Vulkan backend: conformal/plain frame time and the tessellation threshold");
+  std::string device, configName = "cave5";
+  double scale = 0.25;
+  int repeats = 3;
+  bool skip1m = false;
+  app.add_option("--device", device, "Vulkan device (name part or index; default: auto)");
+  app.add_option("--config", configName, "display config in configs/ (name or path)");
+  app.add_option("--scale", scale, "resolution scale of the walls")->check(CLI::PositiveNumber);
+  app.add_option("--repeats", repeats, "timed frames per measurement (median)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--skip-1m", skip1m, "leave out the ~1M-triangle scene");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    const std::filesystem::path configPath =
+        std::filesystem::exists(configName)
+            ? std::filesystem::path(configName)
+            : std::filesystem::path(CONFVIS_SOURCE_DIR) / "configs" / (configName + ".json");
+    const DisplayConfig config = loadDisplayConfig(configPath);
+    VulkanOptions options;
+    options.device = device;
+    auto backend = makeVulkanBackend(options);
+    RenderSettings settings;
+    settings.resolutionScale = scale;
+    const RetargetMap identity = RetargetMap::identity(256);
+    const RetargetMap squeeze = test::azimuthSqueezeMap(256);
+    constexpr double kZoom = 2.0;
+    const RetargetMap zoom = test::zoomMap(256, kZoom);
+
+    std::vector<std::pair<std::string, std::size_t>> scenes = {{"sphere-20k", 20000}};
+    if (!skip1m) scenes.push_back({"sphere-1M", 1000000});
+    std::printf("config %s, %zu walls at scale %.3g (%d x %d px), median of %d frames\n",
+                config.name.c_str(), config.walls.size(), scale,
+                int(std::lround(config.walls[0].width * scale)),
+                int(std::lround(config.walls[0].height * scale)), repeats);
+    std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s\n", "scene", "triangles", "map",
+                "plain s", "conf s", "ratio", "plain cpu", "conf cpu", "ratio");
+    for (const auto& [name, triangles] : scenes) {
+      const Scene scene = sphereWithTriangles(triangles);
+      backend->setScene(scene);
+      settings.mode = RenderMode::Plain;
+      const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
+      device = plain.last.stats.value("device", "?");
+      settings.mode = RenderMode::Conformal;
+      for (const auto& [mapName, map] :
+           {std::pair<const char*, const RetargetMap*>{"identity", &identity},
+            {"zoom", &zoom},
+            {"squeeze", &squeeze}}) {
+        const Timing conformal = timeFrames(*backend, config, map, settings, repeats);
+        std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f\n", name.c_str(),
+                    scene.triangleCount(), mapName, plain.seconds, conformal.seconds,
+                    conformal.seconds / plain.seconds, plain.cpu, conformal.cpu,
+                    conformal.cpu / plain.cpu);
+        std::fflush(stdout);
+      }
+    }
+
+    // Threshold sweep under the smooth conformal map: frame time relative to plain, and the share
+    // of pixels off the closed form.
+    for (const auto& [sceneName, flat] :
+         {std::pair<const char*, bool>{"sphere-20k", false}, {"cube-4x4", true}}) {
+      const Scene scene = flat ? checkerCube(4) : sphereWithTriangles(20000);
+      std::printf("\n%s under the zoom map, by tessellation threshold\n%-10s %9s %7s %9s %7s "
+                  "%18s %12s\n",
+                  sceneName, "error px", "conf s", "ratio", "conf cpu", "ratio",
+                  "off closed form", "tessellated");
+      settings.mode = RenderMode::Plain;
+      backend->setScene(scene);
+      const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
+      settings.mode = RenderMode::Conformal;
+      for (double error : {0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 0.0}) {
+        VulkanOptions sweep = options;
+        sweep.tessellate = error > 0.0;
+        sweep.tessellationErrorPixels = error > 0.0 ? error : 1.0;
+        auto b = makeVulkanBackend(sweep);
+        b->setScene(scene);
+        const Timing t = timeFrames(*b, config, &zoom, settings, repeats);
+        std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %17.2f%% %12zu\n",
+                    error > 0 ? std::to_string(error).substr(0, 5).c_str() : "no tess",
+                    t.seconds, t.seconds / plain.seconds, t.cpu, t.cpu / plain.cpu,
+                    100.0 * closedFormError(t.last, config, flat, kZoom),
+                    t.last.stats.value("triangles_tessellated", std::size_t{0}));
+        std::fflush(stdout);
+      }
+    }
+    std::printf("\ndevice: %s\n", device.c_str());
+  } catch (const Error& e) {
+    std::fprintf(stderr, "confvis_bench_vulkan: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
