@@ -205,18 +205,26 @@ TEST(RicciFlow, DelaunayFlipsRescueAFlowThatDegeneratesWithoutThem) {
   expectConverged(tri, metric, target, report);
 }
 
-TEST(RicciFlow, SymbolicAnalysisIsReusedWithoutFlips) {
+TEST(RicciFlow, FrozenFactorIsReusedAndConvergenceStaysQuadratic) {
   TriMesh mesh = makeLopsidedDisk(12, 0.3, 2);
   auto tri = buildTriangulation(mesh);
   auto metric = initialMetric(tri, embeddedEdgeLengths(tri, mesh), Scheme::InversiveDistance,
                               Geometry::Euclidean);
   const auto report = runRicciFlow(tri, metric, roundBoundaryTarget(tri));
   EXPECT_EQ(report.symbolicAnalyses, 1);
-  EXPECT_EQ(report.factorizations, report.iterations);
-  // Newton: the error falls quadratically at the end.
+  // Between factorisations the Newton systems are solved by CG preconditioned with the frozen
+  // factor, so there are fewer factorisations than iterations.
+  EXPECT_LT(report.factorizations, report.iterations);
+  EXPECT_GT(report.cgIterations, 0);
+  // Inexact Newton with forcing min(0.1, error): the error still falls quadratically at the end
+  // (the last step only solves as accurately as the 1e-10 tolerance needs).
   const auto& h = report.errorHistory;
   ASSERT_GE(h.size(), 3u);
-  EXPECT_LT(h[h.size() - 1], 1e-10);
+  EXPECT_LT(h.back(), 1e-10);
+  for (std::size_t k = 0; k + 1 < h.size(); ++k)
+    if (h[k] < 1e-3 && h[k + 1] > 1e-10) {
+      EXPECT_LT(h[k + 1], 10 * h[k] * h[k]) << "step " << k;
+    }
 }
 
 }  // namespace

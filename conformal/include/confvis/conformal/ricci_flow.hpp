@@ -65,9 +65,19 @@ struct RicciFlowReport {
   double maxCurvatureError = 0;
   int flips = 0;
   int stepHalvings = 0;          // total line-search reductions
-  int factorizations = 0;
-  int symbolicAnalyses = 0;
+  int factorizations = 0;        // numeric LDLᵀ factorisations of the Hessian
+  int symbolicAnalyses = 0;      // symbolic analyses (the first also orders the unknowns)
+  int cgIterations = 0;          // conjugate-gradient steps preconditioned by a frozen factor
   std::vector<double> errorHistory;
+  // Where the time went, in seconds.
+  struct Seconds {
+    double evaluation = 0;     // lengths, angles and curvature (line-search trials included)
+    double assembly = 0;       // Hessian values
+    double analysis = 0;       // fill-reducing ordering and symbolic analysis
+    double factorization = 0;  // numeric factorisations
+    double solve = 0;          // triangular solves and conjugate gradients
+    double flips = 0;          // Delaunay edge flips and pattern updates
+  } seconds;
 };
 
 // Runs the flow in place: on return metric.u realises `target` to options.tolerance (and, with
