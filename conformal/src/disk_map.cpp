@@ -20,13 +20,22 @@ template <typename Blocked, typename EdgeAllowed>
 std::vector<double> dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengths,
                              const std::vector<int>& sources, std::vector<int>& parentEdge,
                              Blocked blocked, EdgeAllowed edgeAllowed) {
-  std::vector<std::vector<int>> incident(tri.vertexCount);
-  for (int e = 0; e < tri.edgeCount(); ++e)
-    for (int v : tri.edgeVertices[e]) incident[v].push_back(e);
+  // Incident edges per vertex, compressed (one allocation, not one per vertex).
+  std::vector<int> offset(tri.vertexCount + 1, 0), incident(2 * tri.edgeCount());
+  for (const auto& ev : tri.edgeVertices) ++offset[ev[0] + 1], ++offset[ev[1] + 1];
+  for (int v = 0; v < tri.vertexCount; ++v) offset[v + 1] += offset[v];
+  {
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for (int e = 0; e < tri.edgeCount(); ++e)
+      for (int v : tri.edgeVertices[e]) incident[fill[v]++] = e;
+  }
   std::vector<double> dist(tri.vertexCount, kInf);
   parentEdge.assign(tri.vertexCount, -1);
   using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  std::vector<Item> heap;
+  heap.reserve(tri.vertexCount);
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue(std::greater<>(),
+                                                                     std::move(heap));
   for (int s : sources) {
     dist[s] = 0;
     queue.push({0.0, s});
@@ -35,7 +44,8 @@ std::vector<double> dijkstra(const IntrinsicTriangulation& tri, const std::vecto
     auto [d, v] = queue.top();
     queue.pop();
     if (d > dist[v] || blocked(v)) continue;
-    for (int e : incident[v]) {
+    for (int k = offset[v]; k < offset[v + 1]; ++k) {
+      const int e = incident[k];
       if (!edgeAllowed(e)) continue;
       const int w = tri.edgeVertices[e][0] == v ? tri.edgeVertices[e][1] : tri.edgeVertices[e][0];
       if (d + lengths[e] < dist[w]) {
@@ -78,20 +88,21 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
                                            const std::vector<char>& edgeCut) {
   std::vector<std::array<Complex, 3>> corner(tri.faceCount());
   std::vector<char> placed(tri.faceCount(), 0);
-  auto angleAt = [&](int f, int c) {
-    const auto& fe = tri.faceEdges[f];
-    std::array<double, 3> angles;
-    if (!cornerAngles(Geometry::Euclidean, {lengths[fe[0]], lengths[fe[1]], lengths[fe[2]]}, angles))
-      throw Error(ErrorCode::Internal, "flat metric has a degenerate face " + std::to_string(f));
-    return angles[c];
-  };
-  // Third corner of face f given corners c1 = c0+1 and c2 = c0+2 already placed (CCW order).
+  // Third corner of face f given corners c1 = c0+1 and c2 = c0+2 already placed (CCW order):
+  // in a CCW triangle c0 lies to the right of the ray c2→c1, at distance x along it (cosine
+  // law) and height 2·area / |c1 c2| (Heron), so no trigonometry is needed.
   auto placeThird = [&](int f, int c0) {
     const int c1 = (c0 + 1) % 3, c2 = (c0 + 2) % 3;
-    // In a CCW triangle the ray c2→c0 is the ray c2→c1 turned clockwise by the angle at c2.
-    const Complex toC1 = (corner[f][c1] - corner[f][c2]) / std::abs(corner[f][c1] - corner[f][c2]);
-    const double len = lengths[tri.faceEdges[f][c1]];  // edge c2-c0 is opposite c1
-    corner[f][c0] = corner[f][c2] + len * toC1 * std::polar(1.0, -angleAt(f, c2));
+    const auto& fe = tri.faceEdges[f];
+    const double base = lengths[fe[c0]], toC2 = lengths[fe[c1]], toC1 = lengths[fe[c2]];
+    const double area4 = std::sqrt((base + toC2 + toC1) * (toC2 + toC1 - base) *
+                                   (base + toC1 - toC2) * (base + toC2 - toC1));
+    if (!(area4 > 0))
+      throw Error(ErrorCode::Internal, "flat metric has a degenerate face " + std::to_string(f));
+    const Complex direction = (corner[f][c1] - corner[f][c2]) / std::abs(corner[f][c1] - corner[f][c2]);
+    const double x = (toC2 * toC2 + base * base - toC1 * toC1) / (2 * base);
+    const double y = area4 / (2 * base);
+    corner[f][c0] = corner[f][c2] + direction * Complex(x, -y);
   };
   std::queue<int> queue;
   {
