@@ -67,12 +67,16 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
   if (!eval.valid())
     throw Error(ErrorCode::InvalidInput, "initial metric is invalid: " + describeInvalid(eval));
   std::vector<double> weights;  // per edge, for the Delaunay test
+  int flipsSinceOrdering = 0;
   auto flipToDelaunay = [&] {
     ScopedTimer timer(seconds.flips);
     const int flips = detail::restoreDelaunay(tri, metric, eval, weights);
     report.flips += flips;
+    flipsSinceOrdering += flips;
     return flips;
   };
+  // Euclidean curvature is invariant under u → u + c: pin one vertex to remove the null space.
+  const int pinned = metric.geometry == Geometry::Euclidean ? 0 : -1;
   if (options.delaunayFlips) {
     {
       ScopedTimer timer(seconds.flips);
@@ -80,14 +84,15 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
     }
     flipToDelaunay();
   }
-
-  // Euclidean curvature is invariant under u → u + c: pin one vertex to remove the null space.
-  const int pinned = metric.geometry == Geometry::Euclidean ? 0 : -1;
+  // Numbered after the initial flips: an ordering for the input's pattern can fill in ten
+  // times more on the Delaunay one (measured), so it is recomputed after many later flips too.
   std::optional<detail::NewtonSystem> system;
-  {
+  auto orderUnknowns = [&] {
     ScopedTimer timer(seconds.analysis);
     system.emplace(tri, pinned);
-  }
+    flipsSinceOrdering = 0;
+  };
+  orderUnknowns();
   detail::PreorderedLDLT factor;
   bool analyzed = false, factored = false, patternStale = false;
   // CG steps allowed per Newton system before a fresh factorisation is cheaper.
@@ -122,8 +127,11 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
       patternStale = true;
       assemble();
     }
-    for (int v = 0; v < tri.vertexCount; ++v)
-      if (int i = system->unknownOf(v); i >= 0) rhs[i] = target[v] - eval.curvature[v];
+    auto setRightHandSide = [&] {
+      for (int v = 0; v < tri.vertexCount; ++v)
+        if (int i = system->unknownOf(v); i >= 0) rhs[i] = target[v] - eval.curvature[v];
+    };
+    setRightHandSide();
 
     bool solved = false;
     // Inexact Newton: relative residual min(0.1, error) keeps the convergence quadratic; no
@@ -143,6 +151,13 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
       solved = cg.converged;
     }
     if (!solved) {
+      if (flipsSinceOrdering > tri.edgeCount() / 100) {
+        orderUnknowns();
+        patternStale = false;
+        analyzed = false;
+        assemble();
+        setRightHandSide();
+      }
       if (!analyzed) {
         ScopedTimer timer(seconds.analysis);
         factor.analyze(system->upper());
@@ -157,6 +172,7 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
         factor.factorizeValues(system->upper());
         ++report.factorizations;
         cgRate = 0;
+        factor.preparePreconditioner();
       }
       ScopedTimer timer(seconds.solve);
       factored = factor.info() == Eigen::Success;

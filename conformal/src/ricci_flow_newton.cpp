@@ -13,20 +13,49 @@ namespace {
 constexpr std::array<std::array<int, 2>, 6> kCornerPairs{
     {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {2, 0}}};
 
-// Symmetric pattern (both triangles and the diagonal) of the vertex adjacency, over unknowns.
-SparseMatrix symmetricPattern(const IntrinsicTriangulation& tri, const std::vector<int>& unknown,
-                              int n) {
-  std::vector<Eigen::Triplet<double, int>> entries;
-  entries.reserve(2 * tri.edgeCount() + n);
-  for (int i = 0; i < n; ++i) entries.emplace_back(i, i, 1.0);
+// Compressed columns of a pattern given as (row, column) pairs: sorted, duplicates merged.
+void compressPattern(int n, const std::vector<std::array<int, 2>>& entries, std::vector<int>& outer,
+                     std::vector<int>& inner) {
+  outer.assign(n + 1, 0);
+  for (const auto& rc : entries) ++outer[rc[1] + 1];
+  for (int k = 0; k < n; ++k) outer[k + 1] += outer[k];
+  inner.resize(entries.size());
+  std::vector<int> fill(outer.begin(), outer.end() - 1);
+  for (const auto& rc : entries) inner[fill[rc[1]]++] = rc[0];
+  int nonZeros = 0;
+  for (int k = 0; k < n; ++k) {
+    int* begin = inner.data() + outer[k];
+    int* end = inner.data() + outer[k + 1];
+    std::sort(begin, end);
+    end = std::unique(begin, end);  // intrinsic triangulations may have multi-edges
+    const int start = nonZeros;
+    for (int* it = begin; it != end; ++it) inner[nonZeros++] = *it;
+    outer[k] = start;
+  }
+  outer[n] = nonZeros;
+  inner.resize(nonZeros);
+}
+
+// Pattern of the Hessian over the unknowns: both triangles (`upperOnly` false) or the upper one,
+// with the diagonal, as a compressed column-major matrix of zeros.
+SparseMatrix hessianPattern(const IntrinsicTriangulation& tri, const std::vector<int>& unknown,
+                            int n, bool upperOnly) {
+  std::vector<std::array<int, 2>> entries;
+  entries.reserve(n + (upperOnly ? 1 : 2) * tri.edgeCount());
+  for (int k = 0; k < n; ++k) entries.push_back({k, k});
   for (const auto& ev : tri.edgeVertices) {
     const int a = unknown[ev[0]], b = unknown[ev[1]];
     if (a < 0 || b < 0 || a == b) continue;
-    entries.emplace_back(a, b, 1.0);
-    entries.emplace_back(b, a, 1.0);
+    entries.push_back({std::min(a, b), std::max(a, b)});
+    if (!upperOnly) entries.push_back({std::max(a, b), std::min(a, b)});
   }
+  std::vector<int> outer, inner;
+  compressPattern(n, entries, outer, inner);
   SparseMatrix pattern(n, n);
-  pattern.setFromTriplets(entries.begin(), entries.end());
+  pattern.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), pattern.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), pattern.innerIndexPtr());
+  std::fill(pattern.valuePtr(), pattern.valuePtr() + inner.size(), 0.0);
   return pattern;
 }
 
@@ -37,10 +66,14 @@ NewtonSystem::NewtonSystem(const IntrinsicTriangulation& tri, int pinnedVertex) 
   n_ = 0;
   for (int v = 0; v < tri.vertexCount; ++v)
     if (v != pinnedVertex) unknown_[v] = n_++;
-  // AMD returns the elimination order (position → unknown); number the unknowns by it.
+  // AMD (Eigen's, on the full symmetric pattern as its SimplicialLDLT would build it) returns
+  // the elimination order, position → unknown; number the unknowns by it.
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
-  Eigen::AMDOrdering<int>()(symmetricPattern(tri, unknown_, n_), order);
-  if (order.size() == n_) {
+  {
+    SparseMatrix symmetric = hessianPattern(tri, unknown_, n_, false);
+    Eigen::internal::minimum_degree_ordering(symmetric, order);
+  }
+  if (order.size() >= n_) {
     std::vector<int> position(n_);
     for (int k = 0; k < n_; ++k) position[order.indices()[k]] = k;
     for (int& u : unknown_)
@@ -50,39 +83,8 @@ NewtonSystem::NewtonSystem(const IntrinsicTriangulation& tri, int pinnedVertex) 
 }
 
 void NewtonSystem::rebuildPattern(const IntrinsicTriangulation& tri) {
-  // Upper triangle, column-major: entry (row, col) with row ≤ col, the diagonal always present.
-  // Counting sort of the edges by column, then sort and deduplicate each (short) column.
-  std::vector<int> outer(n_ + 1, 0);
-  for (int k = 0; k < n_; ++k) outer[k + 1] = 1;
-  for (const auto& ev : tri.edgeVertices) {
-    const int a = unknown_[ev[0]], b = unknown_[ev[1]];
-    if (a >= 0 && b >= 0 && a != b) ++outer[std::max(a, b) + 1];
-  }
-  for (int k = 0; k < n_; ++k) outer[k + 1] += outer[k];
-  std::vector<int> inner(outer[n_]);
-  std::vector<int> fill(outer.begin(), outer.end() - 1);
-  for (int k = 0; k < n_; ++k) inner[fill[k]++] = k;
-  for (const auto& ev : tri.edgeVertices) {
-    const int a = unknown_[ev[0]], b = unknown_[ev[1]];
-    if (a >= 0 && b >= 0 && a != b) inner[fill[std::max(a, b)]++] = std::min(a, b);
-  }
-  int nonZeros = 0;
-  for (int k = 0; k < n_; ++k) {
-    int* begin = inner.data() + outer[k];
-    int* end = inner.data() + outer[k + 1];
-    std::sort(begin, end);
-    end = std::unique(begin, end);  // intrinsic triangulations may have multi-edges
-    const int start = nonZeros;
-    for (int* it = begin; it != end; ++it) inner[nonZeros++] = *it;
-    outer[k] = start;
-  }
-  outer[n_] = nonZeros;
-  H_ = SparseMatrix(n_, n_);
-  H_.resizeNonZeros(nonZeros);
-  std::copy(outer.begin(), outer.end(), H_.outerIndexPtr());
-  std::copy(inner.begin(), inner.begin() + nonZeros, H_.innerIndexPtr());
-  std::fill(H_.valuePtr(), H_.valuePtr() + nonZeros, 0.0);
-
+  H_ = hessianPattern(tri, unknown_, n_, true);
+  const int* outer = H_.outerIndexPtr();
   const int* rows = H_.innerIndexPtr();
   auto slotOf = [&](int row, int col) {
     for (int p = outer[col]; p < outer[col + 1]; ++p)
@@ -153,6 +155,51 @@ double PreorderedLDLT::solveFlops() const {
   return 4 * nonZeros + static_cast<double>(m_nonZerosPerCol.size());
 }
 
+void PreorderedLDLT::preparePreconditioner() {
+  const int n = static_cast<int>(m_diag.size());
+  const int* outer = m_matrix.outerIndexPtr();
+  const int* inner = m_matrix.innerIndexPtr();
+  const double* values = m_matrix.valuePtr();
+  columnStart_.assign(n + 1, 0);
+  rows_.clear();
+  values_.clear();
+  rows_.reserve(m_matrix.nonZeros());
+  values_.reserve(m_matrix.nonZeros());
+  inverseDiagonal_.resize(n);
+  for (int j = 0; j < n; ++j) {
+    inverseDiagonal_[j] = 1 / m_diag[j];
+    for (int p = outer[j]; p < outer[j] + m_nonZerosPerCol[j]; ++p) {
+      rows_.push_back(inner[p]);
+      values_.push_back(static_cast<float>(values[p]));
+    }
+    columnStart_[j + 1] = static_cast<int>(rows_.size());
+  }
+}
+
+void PreorderedLDLT::applyPreconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+  const int n = static_cast<int>(inverseDiagonal_.size());
+  z = r;
+  double* x = z.data();
+  const int* start = columnStart_.data();
+  const int* rows = rows_.data();
+  const float* values = values_.data();
+  for (int j = 0; j < n; ++j) {  // L y = r, by columns
+    const double xj = x[j];
+    for (int p = start[j]; p < start[j + 1]; ++p) x[rows[p]] -= values[p] * xj;
+  }
+  for (int j = 0; j < n; ++j) x[j] *= inverseDiagonal_[j];
+  for (int j = n - 1; j >= 0; --j) {  // Lᵀ x = D⁻¹ y, by rows of Lᵀ
+    double s0 = 0, s1 = 0;
+    int p = start[j];
+    for (; p + 2 <= start[j + 1]; p += 2) {
+      s0 += values[p] * x[rows[p]];
+      s1 += values[p + 1] * x[rows[p + 1]];
+    }
+    if (p < start[j + 1]) s0 += values[p] * x[rows[p]];
+    x[j] -= s0 + s1;
+  }
+}
+
 CgResult preconditionedCg(const NewtonSystem& system, const PreorderedLDLT& factor,
                           const Eigen::VectorXd& b, double tolerance, int maxIterations,
                           Eigen::VectorXd& delta) {
@@ -164,7 +211,7 @@ CgResult preconditionedCg(const NewtonSystem& system, const PreorderedLDLT& fact
     return result;
   }
   Eigen::VectorXd r = b, z(b.size()), p, q(b.size());
-  z = factor.solve(r);
+  factor.applyPreconditioner(r, z);
   double rz = r.dot(z);
   if (!(rz > 0)) return result;
   p = z;
@@ -183,7 +230,7 @@ CgResult preconditionedCg(const NewtonSystem& system, const PreorderedLDLT& fact
       result.converged = true;
       return result;
     }
-    z = factor.solve(r);
+    factor.applyPreconditioner(r, z);
     const double rzNext = r.dot(z);
     if (!(rzNext > 0)) return result;  // the frozen factor is not positive definite
     p = z + (rzNext / rz) * p;
