@@ -135,20 +135,20 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
   return corner;
 }
 
-DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options,
-                   bool flips) {
+DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options) {
   DiskMap result;
   result.removedFace = removedFace;
-  result.usedFlips = flips;
   IntrinsicTriangulation tri = buildTriangulation(mesh, removedFace);
   CirclePackingMetric metric =
       initialMetric(tri, embeddedEdgeLengths(tri, mesh), options.scheme, Geometry::Euclidean);
   RicciFlowOptions flowOptions;
   flowOptions.tolerance = options.tolerance;
   flowOptions.maxIterations = options.maxIterations;
-  flowOptions.delaunayFlips = flips;
+  flowOptions.delaunayFlips = options.flips == FlipPolicy::On;
+  flowOptions.flipsWhenStuck = options.flips == FlipPolicy::Auto;
   flowOptions.onIteration = options.onIteration;
   result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
+  result.usedFlips = result.flow.flipsStartedAt >= 0;
   const std::vector<double> lengths = metricEdgeLengths(tri, metric);
 
   // Inner boundary = the removed face's corners.
@@ -225,14 +225,7 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   const int removed = options.removedFace >= 0 ? options.removedFace : faceFarthestFromBoundary(mesh);
   if (removed >= static_cast<int>(mesh.n_faces()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
-  if (options.flips != FlipPolicy::Auto)
-    return mapAnnulus(mesh, removed, options, options.flips == FlipPolicy::On);
-  try {
-    return mapAnnulus(mesh, removed, options, false);
-  } catch (const Error& e) {
-    if (e.code() != ErrorCode::Unreachable) throw;
-    return mapAnnulus(mesh, removed, options, true);
-  }
+  return mapAnnulus(mesh, removed, options);
 }
 
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {

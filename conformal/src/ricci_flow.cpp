@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <sstream>
 
@@ -39,6 +40,19 @@ double maxAbsDifference(const std::vector<double>& a, const std::vector<double>&
   double m = 0;
   for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
   return m;
+}
+
+// True if the target angle sum at some vertex (2π or π minus the target curvature) is out of
+// reach of the triangles around it (each angle below π): only flips can help there.
+bool needsMoreTriangles(const IntrinsicTriangulation& tri, const std::vector<double>& target) {
+  std::vector<int> faces(tri.vertexCount, 0);
+  for (const auto& fv : tri.faceVertices)
+    for (int v : fv) ++faces[v];
+  for (int v = 0; v < tri.vertexCount; ++v) {
+    const double angleSum = (tri.vertexOnBoundary[v] ? 1 : 2) * std::numbers::pi - target[v];
+    if (angleSum > faces[v] * std::numbers::pi - 1e-9) return true;
+  }
+  return false;
 }
 
 double residualNorm2(const std::vector<double>& target, const std::vector<double>& K) {
@@ -77,13 +91,19 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
   };
   // Euclidean curvature is invariant under u → u + c: pin one vertex to remove the null space.
   const int pinned = metric.geometry == Geometry::Euclidean ? 0 : -1;
-  if (options.delaunayFlips) {
+  bool flipping = options.delaunayFlips ||
+                  (options.flipsWhenStuck && needsMoreTriangles(tri, target));
+  bool started = false;  // inside the Newton loop
+  auto startFlipping = [&] {
+    flipping = true;
+    if (report.flipsStartedAt < 0) report.flipsStartedAt = started ? report.iterations + 1 : 0;
     {
       ScopedTimer timer(seconds.flips);
       detail::edgeWeights(tri, eval, weights);
     }
-    flipToDelaunay();
-  }
+    return flipToDelaunay();
+  };
+  if (flipping) startFlipping();
   // Numbered after the initial flips: an ordering for the input's pattern can fill in ten
   // times more on the Delaunay one (measured), so it is recomputed after many later flips too.
   std::optional<detail::NewtonSystem> system;
@@ -114,6 +134,7 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
   Eigen::VectorXd rhs(system->size()), delta(system->size());
   double error = maxAbsDifference(target, eval.curvature);
   report.errorHistory.push_back(error);
+  started = true;
   while (error > options.tolerance) {
     if (report.iterations >= options.maxIterations) {
       std::ostringstream s;
@@ -123,7 +144,7 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
       throw Error(ErrorCode::Unreachable, s.str());
     }
     assemble();
-    if (options.delaunayFlips && flipToDelaunay() > 0) {
+    if (flipping && flipToDelaunay() > 0) {
       patternStale = true;
       assemble();
     }
@@ -207,12 +228,11 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
         u.swap(uTrial);
         std::swap(eval, trial);
         remaining -= alpha;
-        if (!options.delaunayFlips || !degenerated || ++stage == 8 || remaining < 1e-3) break;
-        {
-          ScopedTimer timer(seconds.flips);
-          detail::edgeWeights(tri, eval, weights);
-        }
-        if (flipToDelaunay() == 0) break;
+        if (!degenerated || ++stage == 8 || remaining < 1e-3) break;
+        // Flips come on mid-flow only for steps cut to under a quarter: a mild cut is cheaper
+        // to live with than re-ordering and re-factorising a re-triangulated system.
+        if (!flipping && (!options.flipsWhenStuck || alpha >= 0.25)) break;
+        if (startFlipping() == 0) break;
         patternStale = true;
         reference = residualNorm2(target, eval.curvature);
         alpha = remaining;
@@ -235,12 +255,18 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
       }
       alpha *= 0.5;
     }
+    if (!accepted && !flipping && options.flipsWhenStuck) {
+      if (startFlipping() > 0) {
+        patternStale = true;
+        continue;  // a new Newton step on the flipped triangulation
+      }
+    }
     if (!accepted) {
       std::ostringstream s;
       s << "Ricci flow stalled at max curvature error " << error << " after " << report.iterations
         << " iterations: no step keeps every triangle valid ("
         << (trial.valid() ? "error would grow" : describeInvalid(trial)) << ")";
-      if (!options.delaunayFlips) s << "; enabling Delaunay edge flips may help";
+      if (!flipping) s << "; enabling Delaunay edge flips may help";
       s << ", or the target curvature is not reachable for this mesh";
       throw Error(ErrorCode::Unreachable, s.str());
     }

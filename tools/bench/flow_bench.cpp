@@ -4,7 +4,8 @@
 // cost as a multiple of that single solve is the headline figure.
 //
 //   confvis_bench_flow [--sizes 10k,100k,1m] [--schemes yamabe,inversive,...|all]
-//                      [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S] [--breakdown]
+//                      [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]
+//                      [--mesh lopsided|hemisphere|round] [--breakdown]
 #include <Eigen/SparseCholesky>
 
 #include <sys/resource.h>
@@ -99,9 +100,9 @@ std::vector<std::string> splitList(const std::string& s) {
   std::printf(
       "usage: confvis_bench_flow [--sizes 10k,100k,1m] [--schemes yamabe,inversive,...|all]\n"
       "                          [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]\n"
-      "                          [--breakdown]\n"
-      "Disk maps of lopsided disks of about the given vertex counts (default 10k,100k);\n"
-      "seconds are the best of N runs (default 3), interleaved with the baseline's;\n"
+      "                          [--mesh lopsided|hemisphere|round] [--breakdown]\n"
+      "Disk maps of disk meshes (default lopsided) of about the given vertex counts (default\n"
+      "10k,100k); seconds are the best of N runs (default 3), interleaved with the baseline's;\n"
       "--breakdown prints where the flow's time went and its error history to stderr.\n");
   std::exit(code);
 }
@@ -116,6 +117,7 @@ int main(int argc, char** argv) {
   double jitter = 0.2;
   std::uint64_t seed = 42;
   bool breakdown = false;
+  std::string shape = "lopsided";
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") usage(0);
@@ -137,6 +139,9 @@ int main(int argc, char** argv) {
       flips = value == "on" ? FlipPolicy::On : value == "off" ? FlipPolicy::Off : FlipPolicy::Auto;
     } else if (arg == "--repeat") {
       repeat = std::max(1, std::atoi(value.c_str()));
+    } else if (arg == "--mesh") {
+      shape = value;
+      if (shape != "lopsided" && shape != "hemisphere" && shape != "round") usage(2);
     } else if (arg == "--jitter") {
       jitter = std::stod(value);
     } else if (arg == "--seed") {
@@ -150,7 +155,9 @@ int main(int argc, char** argv) {
               "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int count : sizes) {
     const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(count))));
-    const TriMesh mesh = makeLopsidedDisk(side, jitter, seed);
+    const TriMesh mesh = shape == "hemisphere" ? makeHemisphere(side, jitter, seed)
+                         : shape == "round"    ? makeRoundDisk(side, jitter, seed)
+                                               : makeLopsidedDisk(side, jitter, seed);
     const auto laplacian = pinnedCotangentLaplacian(mesh);
     // Repeats interleave the baseline with the flows so both see the same machine load; each
     // figure is the best of its repeats.

@@ -12,7 +12,9 @@
 
 namespace confvis::conformal {
 
-enum class FlipPolicy { Off, On, Auto };  // Auto: retry with flips if the flow stalls
+// Auto: flips from the start where the target needs them (a boundary vertex in a single
+// triangle), else switched on mid-flow when a step degenerates a triangle (no restart).
+enum class FlipPolicy { Off, On, Auto };
 
 struct DiskMapOptions {
   Scheme scheme = Scheme::Yamabe;

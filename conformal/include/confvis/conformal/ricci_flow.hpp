@@ -56,6 +56,10 @@ struct RicciFlowOptions {
   double tolerance = 1e-10;      // on max |K̄ - K|
   int maxIterations = 100;
   bool delaunayFlips = false;    // keep the triangulation (power) Delaunay by edge flips
+  // Without delaunayFlips: switch them on (from the current metric, no restart) when a Newton
+  // step is cut short by a degenerating triangle or the flow would stall, and from the start
+  // when the target needs an angle no triangle can have (a vertex in too few triangles).
+  bool flipsWhenStuck = false;
   // Called after each Newton iteration with (iteration, max curvature error).
   std::function<void(int, double)> onIteration;
 };
@@ -64,6 +68,8 @@ struct RicciFlowReport {
   int iterations = 0;
   double maxCurvatureError = 0;
   int flips = 0;
+  int flipsStartedAt = -1;       // Newton step (1-based) in which flips came on; 0: from the
+                                 // start; -1: never
   int stepHalvings = 0;          // total line-search reductions
   int factorizations = 0;        // numeric LDLᵀ factorisations of the Hessian
   int symbolicAnalyses = 0;      // symbolic analyses (the first also orders the unknowns)
