@@ -58,9 +58,17 @@ void edgeWeights(const IntrinsicTriangulation& tri, const MetricEvaluation& eval
 
 // Flips interior edges of negative weight until none is left, updating `metric` (η of flipped
 // edges) and `eval` (lengths, angles, curvature). `weights` (from edgeWeights or the Hessian
-// assembly, at `eval`) says where to start; flips re-check only their neighbourhood. Returns
-// the number of flips.
+// assembly, at `eval`) says where to start; flips re-check only their neighbourhood. Edges
+// marked in `locked` (empty: none) are never flipped. Returns the number of flips.
 int restoreDelaunay(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
-                    MetricEvaluation& eval, const std::vector<double>& weights);
+                    MetricEvaluation& eval, const std::vector<double>& weights,
+                    const std::vector<char>& locked);
+
+// Where a target angle sum is out of reach of a vertex's triangles (each angle is below π, so
+// a boundary vertex in one triangle cannot open to π), flips the edge opposite the vertex to
+// give it one more, and locks that edge: the (power) Delaunay criterion need not agree (it
+// never does for tangential packings, whose incircle centres keep every edge "Delaunay").
+int widenFans(IntrinsicTriangulation& tri, CirclePackingMetric& metric, MetricEvaluation& eval,
+              const std::vector<double>& target, std::vector<char>& locked);
 
 }  // namespace confvis::conformal::detail

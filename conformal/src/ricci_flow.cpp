@@ -81,10 +81,11 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
   if (!eval.valid())
     throw Error(ErrorCode::InvalidInput, "initial metric is invalid: " + describeInvalid(eval));
   std::vector<double> weights;  // per edge, for the Delaunay test
+  std::vector<char> lockedEdges;  // flipped to widen a fan: not to be flipped back
   int flipsSinceOrdering = 0;
   auto flipToDelaunay = [&] {
     ScopedTimer timer(seconds.flips);
-    const int flips = detail::restoreDelaunay(tri, metric, eval, weights);
+    const int flips = detail::restoreDelaunay(tri, metric, eval, weights, lockedEdges);
     report.flips += flips;
     flipsSinceOrdering += flips;
     return flips;
@@ -103,6 +104,11 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
     }
     return flipToDelaunay();
   };
+  if (flipping) {
+    lockedEdges.assign(tri.edgeCount(), 0);
+    ScopedTimer timer(seconds.flips);
+    report.flips += detail::widenFans(tri, metric, eval, target, lockedEdges);
+  }
   if (flipping) startFlipping();
   // Numbered after the initial flips: an ordering for the input's pattern can fill in ten
   // times more on the Delaunay one (measured), so it is recomputed after many later flips too.
