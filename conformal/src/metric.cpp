@@ -22,7 +22,7 @@ bool euclideanAngles(const std::array<double, 3>& l, std::array<double, 3>& angl
   // law loses half the digits (acos near ±1); atan is also cheaper than acos.
   angles[0] = 2 * std::atan(pb * pc / area4);
   angles[1] = 2 * std::atan(pc * pa / area4);
-  angles[2] = 2 * std::atan(pa * pb / area4);
+  angles[2] = std::numbers::pi - angles[0] - angles[1];  // exact to rounding, one atan less
   return true;
 }
 
@@ -152,6 +152,28 @@ double degenerationStep(const IntrinsicTriangulation& tri, const MetricEvaluatio
     step = std::min(step, before / (before - after));
   }
   return step < 1 ? step : 0;
+}
+
+double faceAngleDerivative(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int f,
+                           int a, int b) {
+  if (eval.geometry != Geometry::Euclidean || a == b) {
+    std::array<std::array<double, 3>, 3> J;
+    faceAngleJacobian(tri, eval, f, J);
+    return J[a][b];
+  }
+  // u_b moves the two edges at corner b: the one opposite a and the one opposite c.
+  const int c = 3 - a - b;
+  const auto& fe = tri.faceEdges[f];
+  const double la = eval.edges[fe[a]].length, lb = eval.edges[fe[b]].length,
+               lc = eval.edges[fe[c]].length;
+  const double area4 =
+      std::sqrt((la + lb + lc) * (lb + lc - la) * (lc + la - lb) * (la + lb - lc));
+  auto dLength = [&](int edgeCorner) {  // ∂l/∂u_b of the edge opposite edgeCorner
+    const EdgeLength& el = eval.edges[fe[edgeCorner]];
+    return tri.edgeVertices[fe[edgeCorner]][0] == tri.faceVertices[f][b] ? el.dLength_dui
+                                                                          : el.dLength_duj;
+  };
+  return (2 * la * dLength(a) - (la * la + lc * lc - lb * lb) / lc * dLength(c)) / area4;
 }
 
 bool flippedEdgeLength(const IntrinsicTriangulation& tri, const MetricEvaluation& eval,

@@ -46,6 +46,10 @@ void faceAngleJacobian(const IntrinsicTriangulation& tri, const MetricEvaluation
 double degenerationStep(const IntrinsicTriangulation& tri, const MetricEvaluation& start,
                         const MetricEvaluation& trial);
 
+// J[a][b] of faceAngleJacobian alone (cheaper in Euclidean geometry).
+double faceAngleDerivative(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int f,
+                           int a, int b);
+
 // Length of the other diagonal of the two triangles at interior edge e, from the current metric
 // (cosine law with the summed angles at one endpoint). Returns false if the quad is not convex.
 bool flippedEdgeLength(const IntrinsicTriangulation& tri, const MetricEvaluation& eval,

@@ -21,6 +21,7 @@ namespace confvis::conformal {
 namespace {
 
 using detail::MetricEvaluation;
+using detail::SparseMatrix;
 using Clock = std::chrono::steady_clock;
 
 // Adds the lifetime of the scope to `total` (seconds).
@@ -82,12 +83,10 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
     throw Error(ErrorCode::InvalidInput, "initial metric is invalid: " + describeInvalid(eval));
   std::vector<double> weights;  // per edge, for the Delaunay test
   std::vector<char> lockedEdges;  // flipped to widen a fan: not to be flipped back
-  int flipsSinceOrdering = 0;
   auto flipToDelaunay = [&] {
     ScopedTimer timer(seconds.flips);
     const int flips = detail::restoreDelaunay(tri, metric, eval, weights, lockedEdges);
     report.flips += flips;
-    flipsSinceOrdering += flips;
     return flips;
   };
   // Euclidean curvature is invariant under u → u + c: pin one vertex to remove the null space.
@@ -111,23 +110,25 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
   }
   if (flipping) startFlipping();
   // Numbered after the initial flips: an ordering for the input's pattern can fill in ten
-  // times more on the Delaunay one (measured), so it is recomputed after many later flips too.
+  // times more on the Delaunay one (measured); later flips renumber when the fill grows.
   std::optional<detail::NewtonSystem> system;
+  double orderedFill = 0;  // nonzeros of L with the current numbering, before later flips
   auto orderUnknowns = [&] {
-    ScopedTimer timer(seconds.analysis);
     system.emplace(tri, pinned);
-    flipsSinceOrdering = 0;
+    orderedFill = 0;
   };
-  orderUnknowns();
+  {
+    ScopedTimer timer(seconds.analysis);
+    orderUnknowns();
+  }
   detail::PreorderedLDLT factor;
   bool analyzed = false, factored = false, patternStale = false;
   // CG steps allowed per Newton system before a fresh factorisation is cheaper.
   int cgBudget = 0;
   double cgRate = 0;  // residual reduction per CG step in the last solve
   auto assemble = [&] {
-    if (patternStale) {
-      ScopedTimer timer(seconds.flips);
-      system->rebuildPattern(tri);  // same numbering; a fresh factor needs a new analysis
+    if (patternStale) {  // same numbering; a fresh factor needs a new symbolic analysis
+      system->invalidatePattern();
       patternStale = false;
       analyzed = false;
     }
@@ -178,25 +179,35 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
       solved = cg.converged;
     }
     if (!solved) {
-      if (flipsSinceOrdering > tri.edgeCount() / 100) {
-        orderUnknowns();
-        patternStale = false;
-        analyzed = false;
-        assemble();
-        setRightHandSide();
+      const SparseMatrix* H;
+      {
+        ScopedTimer timer(seconds.assembly);
+        H = &system->upper(tri);
       }
       if (!analyzed) {
         ScopedTimer timer(seconds.analysis);
-        factor.analyze(system->upper());
+        factor.analyze(*H);
         ++report.symbolicAnalyses;
+        // After flips the old numbering may fill in far more (10x, measured, for an ordering
+        // made before the initial Delaunay flips): then number the unknowns afresh.
+        if (orderedFill > 0 && factor.factorNonZeros() > 1.2 * orderedFill) {
+          orderUnknowns();
+          assemble();
+          setRightHandSide();
+          H = &system->upper(tri);
+          factor.analyze(*H);
+          ++report.symbolicAnalyses;
+          orderedFill = 0;
+        }
+        if (orderedFill == 0) orderedFill = factor.factorNonZeros();
         analyzed = true;
-        const double cgStepFlops = factor.solveFlops() + 4.0 * system->upper().nonZeros();
+        const double cgStepFlops = factor.solveFlops() + 4.0 * H->nonZeros();
         cgBudget = std::clamp(static_cast<int>(0.5 * factor.factorizationFlops() / cgStepFlops),
                               4, 200);
       }
       {
         ScopedTimer timer(seconds.factorization);
-        factor.factorizeValues(system->upper());
+        factor.factorizeValues(*H);
         ++report.factorizations;
         cgRate = 0;
         factor.preparePreconditioner();

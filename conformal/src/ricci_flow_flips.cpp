@@ -13,11 +13,9 @@ namespace {
 // criterion — negative means the edge is not Delaunay.
 double edgeWeight(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int e) {
   double weight = 0;
-  std::array<std::array<double, 3>, 3> J;
   for (int f : tri.edgeFaces[e]) {
-    faceAngleJacobian(tri, eval, f, J);
     const int c = tri.cornerOpposite(f, e);
-    weight += J[(c + 1) % 3][(c + 2) % 3];
+    weight += faceAngleDerivative(tri, eval, f, (c + 1) % 3, (c + 2) % 3);
   }
   return weight;
 }
@@ -50,24 +48,26 @@ bool flipKeepingLengths(IntrinsicTriangulation& tri, CirclePackingMetric& metric
 int widenFans(IntrinsicTriangulation& tri, CirclePackingMetric& metric, MetricEvaluation& eval,
               const std::vector<double>& target, std::vector<char>& locked) {
   constexpr double pi = std::numbers::pi;
-  std::vector<std::vector<int>> fan(tri.vertexCount);
-  for (int f = 0; f < tri.faceCount(); ++f)
-    for (int v : tri.faceVertices[f]) fan[v].push_back(f);
+  std::vector<int> fanSize(tri.vertexCount, 0);
+  for (const auto& fv : tri.faceVertices)
+    for (int v : fv) ++fanSize[v];
+  std::vector<int> tooNarrow;
+  for (int v = 0; v < tri.vertexCount; ++v)
+    if ((tri.vertexOnBoundary[v] ? 1 : 2) * pi - target[v] > fanSize[v] * pi - 1e-9)
+      tooNarrow.push_back(v);
   int flips = 0;
-  for (int v = 0; v < tri.vertexCount; ++v) {
-    const double angleSum = (tri.vertexOnBoundary[v] ? 1 : 2) * pi - target[v];
-    if (angleSum <= static_cast<double>(fan[v].size()) * pi - 1e-9) continue;
-    // Flip the edge opposite v in one of its triangles: v gains a triangle.
-    for (int f : fan[v]) {
+  for (int v : tooNarrow)  // rare: a scan of the faces each is fine
+    for (int f = 0; f < tri.faceCount(); ++f) {
       int c = 0;
-      while (tri.faceVertices[f][c] != v) ++c;
+      while (c < 3 && tri.faceVertices[f][c] != v) ++c;
+      if (c == 3) continue;
+      // Flip the edge opposite v: v gains a triangle.
       const int e = tri.faceEdges[f][c];
       if (tri.edgeOnBoundary(e) || locked[e] || !flipKeepingLengths(tri, metric, eval, e)) continue;
       locked[e] = 1;
       ++flips;
       break;
     }
-  }
   if (flips > 0) refreshCurvature(tri, eval);
   return flips;
 }

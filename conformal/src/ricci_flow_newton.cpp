@@ -79,10 +79,9 @@ NewtonSystem::NewtonSystem(const IntrinsicTriangulation& tri, int pinnedVertex) 
     for (int& u : unknown_)
       if (u >= 0) u = position[u];
   }
-  rebuildPattern(tri);
 }
 
-void NewtonSystem::rebuildPattern(const IntrinsicTriangulation& tri) {
+void NewtonSystem::buildPattern(const IntrinsicTriangulation& tri) {
   H_ = hessianPattern(tri, unknown_, n_, true);
   const int* outer = H_.outerIndexPtr();
   const int* rows = H_.innerIndexPtr();
@@ -98,46 +97,65 @@ void NewtonSystem::rebuildPattern(const IntrinsicTriangulation& tri) {
       const int rb = unknown_[tri.faceVertices[f][kCornerPairs[p][1]]];
       slots_[f][p] = (ra < 0 || rb < 0) ? -1 : slotOf(std::min(ra, rb), std::max(ra, rb));
     }
+  patternValid_ = true;
 }
 
 void NewtonSystem::assemble(const IntrinsicTriangulation& tri, const MetricEvaluation& eval,
                             std::vector<double>& weights) {
-  double* values = H_.valuePtr();
-  std::fill(values, values + H_.nonZeros(), 0.0);
+  const int faces = tri.faceCount();
+  faceUnknowns_.resize(faces);
+  blocks_.resize(faces);
   weights.assign(tri.edgeCount(), 0.0);
   std::array<std::array<double, 3>, 3> J;
-  for (int f = 0; f < tri.faceCount(); ++f) {
+  for (int f = 0; f < faces; ++f) {
     faceAngleJacobian(tri, eval, f, J);
     const auto& fv = tri.faceVertices[f];
     const auto& fe = tri.faceEdges[f];
-    for (int c = 0; c < 3; ++c) weights[fe[c]] += J[(c + 1) % 3][(c + 2) % 3];
-    for (int p = 0; p < 6; ++p) {
-      const int slot = slots_[f][p];
-      if (slot < 0) continue;
+    for (int c = 0; c < 3; ++c) {
+      weights[fe[c]] += J[(c + 1) % 3][(c + 2) % 3];
+      const int k = unknown_[fv[c]];
+      faceUnknowns_[f][c] = k < 0 ? n_ : k;
+    }
+    for (int p = 0; p < 6; ++p) {  // K = 2π - Σθ
       const int a = kCornerPairs[p][0], b = kCornerPairs[p][1];
-      // K = 2π - Σθ. An off-diagonal pair whose corners are the same vertex (possible in an
-      // intrinsic triangulation) lands on the diagonal from both sides.
-      const double weight = (a != b && fv[a] == fv[b]) ? 1.0 : 0.5;
-      values[slot] -= weight * (J[a][b] + J[b][a]);
+      blocks_[f][p] = -0.5 * (J[a][b] + J[b][a]);
     }
   }
 }
 
 void NewtonSystem::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
-  y.setZero(n_);
-  const int* outer = H_.outerIndexPtr();
-  const int* inner = H_.innerIndexPtr();
-  const double* values = H_.valuePtr();
-  for (int col = 0; col < n_; ++col) {
-    double sum = 0;
-    const double xc = x[col];
-    for (int p = outer[col]; p < outer[col + 1]; ++p) {
-      const int row = inner[p];
-      sum += values[p] * x[row];
-      if (row != col) y[row] += values[p] * xc;
-    }
-    y[col] += sum;
+  xPadded_.resize(n_ + 1);
+  xPadded_.head(n_) = x;
+  xPadded_[n_] = 0;
+  yPadded_.setZero(n_ + 1);
+  const double* in = xPadded_.data();
+  double* out = yPadded_.data();
+  for (std::size_t f = 0; f < blocks_.size(); ++f) {
+    const auto& k = faceUnknowns_[f];
+    const auto& h = blocks_[f];
+    const double x0 = in[k[0]], x1 = in[k[1]], x2 = in[k[2]];
+    out[k[0]] += h[0] * x0 + h[3] * x1 + h[5] * x2;
+    out[k[1]] += h[3] * x0 + h[1] * x1 + h[4] * x2;
+    out[k[2]] += h[5] * x0 + h[4] * x1 + h[2] * x2;
   }
+  y = yPadded_.head(n_);
+}
+
+const SparseMatrix& NewtonSystem::upper(const IntrinsicTriangulation& tri) {
+  if (!patternValid_) buildPattern(tri);
+  double* values = H_.valuePtr();
+  std::fill(values, values + H_.nonZeros(), 0.0);
+  for (std::size_t f = 0; f < blocks_.size(); ++f)
+    for (int p = 0; p < 6; ++p) {
+      const int slot = slots_[f][p];
+      if (slot < 0) continue;
+      // An off-diagonal pair whose corners are the same vertex (possible in an intrinsic
+      // triangulation) lands on the diagonal from both sides.
+      const int a = kCornerPairs[p][0], b = kCornerPairs[p][1];
+      const bool folded = a != b && tri.faceVertices[f][a] == tri.faceVertices[f][b];
+      values[slot] += folded ? 2 * blocks_[f][p] : blocks_[f][p];
+    }
+  return H_;
 }
 
 double PreorderedLDLT::factorizationFlops() const {
@@ -149,10 +167,14 @@ double PreorderedLDLT::factorizationFlops() const {
   return flops;
 }
 
-double PreorderedLDLT::solveFlops() const {
+double PreorderedLDLT::factorNonZeros() const {
   double nonZeros = 0;
   for (Eigen::Index k = 0; k < m_nonZerosPerCol.size(); ++k) nonZeros += m_nonZerosPerCol[k];
-  return 4 * nonZeros + static_cast<double>(m_nonZerosPerCol.size());
+  return nonZeros;
+}
+
+double PreorderedLDLT::solveFlops() const {
+  return 4 * factorNonZeros() + static_cast<double>(m_nonZerosPerCol.size());
 }
 
 void PreorderedLDLT::preparePreconditioner() {

@@ -22,24 +22,33 @@ class NewtonSystem {
   // Numbers the vertices other than `pinnedVertex` (-1: none) by AMD on the current pattern.
   NewtonSystem(const IntrinsicTriangulation& tri, int pinnedVertex);
 
-  // New pattern after edge flips; the numbering stays.
-  void rebuildPattern(const IntrinsicTriangulation& tri);
-
-  // H = ∂K/∂u at `eval` (upper triangle stored, column-major, in elimination order), and per
-  // edge the Delaunay weight (see edgeWeights) as a by-product.
+  // H = ∂K/∂u at `eval` as one symmetric 3×3 block per face, for any connectivity (edge flips
+  // need no new pattern), and per edge the Delaunay weight (see edgeWeights) as a by-product.
   void assemble(const IntrinsicTriangulation& tri, const MetricEvaluation& eval,
                 std::vector<double>& weights);
-  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;  // y = H x
+  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;  // y = H x, from the blocks
 
-  const SparseMatrix& upper() const { return H_; }
+  // The assembled H as an upper-triangular, column-major matrix in elimination order, for a
+  // factorisation. Its pattern is rebuilt after invalidatePattern() (edges flipped).
+  const SparseMatrix& upper(const IntrinsicTriangulation& tri);
+  void invalidatePattern() { patternValid_ = false; }
+
   int unknownOf(int v) const { return unknown_[v]; }
   int size() const { return n_; }
 
  private:
+  void buildPattern(const IntrinsicTriangulation& tri);
+
   std::vector<int> unknown_;
   int n_ = 0;
+  // Per face: the corners' unknowns (n_ for the pinned vertex) and the block entries
+  // (0,0) (1,1) (2,2) (0,1) (1,2) (2,0).
+  std::vector<std::array<int, 3>> faceUnknowns_;
+  std::vector<std::array<double, 6>> blocks_;
   SparseMatrix H_;
-  std::vector<std::array<int, 6>> slots_;  // per face: (0,0) (1,1) (2,2) (0,1) (1,2) (2,0)
+  std::vector<std::array<int, 6>> slots_;  // per face block entry, its place in H_ (-1: none)
+  bool patternValid_ = false;
+  mutable Eigen::VectorXd xPadded_, yPadded_;  // x and y with a zero slot for the pinned vertex
 };
 
 // Eigen's simplicial LDLᵀ fed a matrix already in elimination order: no ordering, no copy.
@@ -52,6 +61,7 @@ class PreorderedLDLT
   // counts of L: used to weigh conjugate-gradient steps against a fresh factorisation.
   double factorizationFlops() const;
   double solveFlops() const;
+  double factorNonZeros() const;  // of L, after analyze()
 
   // z = (L D Lᵀ)⁻¹ r with a single-precision copy of L: the triangular solves are bound by
   // memory traffic, and CG needs no more accuracy from a preconditioner (27% faster than
