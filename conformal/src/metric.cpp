@@ -8,6 +8,7 @@
 
 #include "confvis/base/error.hpp"
 #include "metric_evaluation.hpp"
+#include "ricci_flow_parallel.hpp"
 
 namespace confvis::conformal {
 namespace detail {
@@ -29,43 +30,64 @@ bool euclideanAngles(const std::array<double, 3>& l, std::array<double, 3>& angl
 void evaluateMetric(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
                     const std::vector<double>& u, MetricEvaluation& out) {
   out.geometry = metric.geometry;
-  out.invalidEdge = out.invalidFace = -1;
   const int edgeCount = tri.edgeCount(), faceCount = tri.faceCount();
   out.edges.resize(edgeCount);
+  // First invalid edge / face per part of the parallel loops; the smallest index wins.
+  std::array<int, 8> firstInvalid;
+  auto smallestInvalid = [&](int parts) {
+    int first = -1;
+    for (int p = 0; p < parts; ++p)
+      if (firstInvalid[p] >= 0 && (first < 0 || firstInvalid[p] < first)) first = firstInvalid[p];
+    return first;
+  };
+  firstInvalid.fill(-1);
+  int parts;
   if (metric.geometry == Geometry::Euclidean) {
     // (4.1.2) in E²: l² = 2η x_i x_j + ε_i x_i² + ε_j x_j² with x = e^u, one exp per vertex.
     out.scale.resize(u.size());
-    for (std::size_t v = 0; v < u.size(); ++v) out.scale[v] = std::exp(u[v]);
+    parallelFor(static_cast<int>(u.size()), [&](int begin, int end, int) {
+      for (int v = begin; v < end; ++v) out.scale[v] = std::exp(u[v]);
+    });
     const double* x = out.scale.data();
     const int* eps = metric.epsilon.data();
-    for (int e = 0; e < edgeCount; ++e) {
-      const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
-      const double cross = metric.eta[e] * x[a] * x[b];
-      const double sa = eps[a] * x[a] * x[a], sb = eps[b] * x[b] * x[b];
-      const double l2 = 2 * cross + sa + sb;
-      EdgeLength& el = out.edges[e];
-      el.valid = l2 > 0 && std::isfinite(l2);
-      if (!el.valid) {
-        if (out.invalidEdge < 0) out.invalidEdge = e;
-        continue;
+    parts = parallelFor(edgeCount, [&](int begin, int end, int part) {
+      for (int e = begin; e < end; ++e) {
+        const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+        const double cross = metric.eta[e] * x[a] * x[b];
+        const double sa = eps[a] * x[a] * x[a], sb = eps[b] * x[b] * x[b];
+        const double l2 = 2 * cross + sa + sb;
+        EdgeLength& el = out.edges[e];
+        el.valid = l2 > 0 && std::isfinite(l2);
+        if (!el.valid) {
+          if (firstInvalid[part] < 0) firstInvalid[part] = e;
+          continue;
+        }
+        el.length = std::sqrt(l2);
+        const double inverse = 1 / el.length;
+        el.dLength_dui = (cross + sa) * inverse;
+        el.dLength_duj = (cross + sb) * inverse;
       }
-      el.length = std::sqrt(l2);
-      const double inverse = 1 / el.length;
-      el.dLength_dui = (cross + sa) * inverse;
-      el.dLength_duj = (cross + sb) * inverse;
-    }
+    });
   } else {
-    for (int e = 0; e < edgeCount; ++e) {
-      const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
-      out.edges[e] = edgeLength(metric.geometry, u[a], u[b], metric.eta[e], metric.epsilon[a],
-                                metric.epsilon[b]);
-      if (!out.edges[e].valid && out.invalidEdge < 0) out.invalidEdge = e;
-    }
+    parts = parallelFor(edgeCount, [&](int begin, int end, int part) {
+      for (int e = begin; e < end; ++e) {
+        const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+        out.edges[e] = edgeLength(metric.geometry, u[a], u[b], metric.eta[e],
+                                  metric.epsilon[a], metric.epsilon[b]);
+        if (!out.edges[e].valid && firstInvalid[part] < 0) firstInvalid[part] = e;
+      }
+    });
   }
+  out.invalidEdge = smallestInvalid(parts);
+  out.invalidFace = -1;
   if (out.invalidEdge >= 0) return;
   out.angles.resize(faceCount);
-  for (int f = 0; f < faceCount; ++f)
-    if (!faceAngles(tri, out, f) && out.invalidFace < 0) out.invalidFace = f;
+  firstInvalid.fill(-1);
+  parts = parallelFor(faceCount, [&](int begin, int end, int part) {
+    for (int f = begin; f < end; ++f)
+      if (!faceAngles(tri, out, f) && firstInvalid[part] < 0) firstInvalid[part] = f;
+  });
+  out.invalidFace = smallestInvalid(parts);
   if (out.invalidFace < 0) refreshCurvature(tri, out);
 }
 
@@ -327,13 +349,16 @@ CirclePackingMetric initialMetric(const IntrinsicTriangulation& tri,
 
 std::vector<double> metricEdgeLengths(const IntrinsicTriangulation& tri,
                                       const CirclePackingMetric& metric) {
-  detail::MetricEvaluation eval;
-  detail::evaluateMetric(tri, metric, metric.u, eval);
-  if (eval.invalidEdge >= 0)
-    throw Error(ErrorCode::InvalidInput,
-                "edge " + std::to_string(eval.invalidEdge) + " has no valid length in this metric");
   std::vector<double> lengths(tri.edgeCount());
-  for (int e = 0; e < tri.edgeCount(); ++e) lengths[e] = eval.edges[e].length;
+  for (int e = 0; e < tri.edgeCount(); ++e) {
+    const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+    const EdgeLength l = edgeLength(metric.geometry, metric.u[a], metric.u[b], metric.eta[e],
+                                    metric.epsilon[a], metric.epsilon[b]);
+    if (!l.valid)
+      throw Error(ErrorCode::InvalidInput,
+                  "edge " + std::to_string(e) + " has no valid length in this metric");
+    lengths[e] = l.length;
+  }
   return lengths;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "confvis/base/error.hpp"
+#include "ricci_flow_parallel.hpp"
 
 namespace confvis::conformal::detail {
 namespace {
@@ -105,22 +106,31 @@ void NewtonSystem::assemble(const IntrinsicTriangulation& tri, const MetricEvalu
   const int faces = tri.faceCount();
   faceUnknowns_.resize(faces);
   blocks_.resize(faces);
-  weights.assign(tri.edgeCount(), 0.0);
-  std::array<std::array<double, 3>, 3> J;
-  for (int f = 0; f < faces; ++f) {
-    faceAngleJacobian(tri, eval, f, J);
-    const auto& fv = tri.faceVertices[f];
-    const auto& fe = tri.faceEdges[f];
-    for (int c = 0; c < 3; ++c) {
-      weights[fe[c]] += J[(c + 1) % 3][(c + 2) % 3];
-      const int k = unknown_[fv[c]];
-      faceUnknowns_[f][c] = k < 0 ? n_ : k;
+  parallelFor(faces, [&](int begin, int end, int) {
+    std::array<std::array<double, 3>, 3> J;
+    for (int f = begin; f < end; ++f) {
+      faceAngleJacobian(tri, eval, f, J);
+      const auto& fv = tri.faceVertices[f];
+      for (int c = 0; c < 3; ++c) {
+        const int k = unknown_[fv[c]];
+        faceUnknowns_[f][c] = k < 0 ? n_ : k;
+      }
+      for (int p = 0; p < 6; ++p) {  // K = 2π - Σθ
+        const int a = kCornerPairs[p][0], b = kCornerPairs[p][1];
+        blocks_[f][p] = -0.5 * (J[a][b] + J[b][a]);
+      }
     }
-    for (int p = 0; p < 6; ++p) {  // K = 2π - Σθ
-      const int a = kCornerPairs[p][0], b = kCornerPairs[p][1];
-      blocks_[f][p] = -0.5 * (J[a][b] + J[b][a]);
+  });
+  // Edge weights from the blocks: the pair opposite corner c is entry 3 + (c + 1) % 3.
+  weights.resize(tri.edgeCount());
+  parallelFor(tri.edgeCount(), [&](int begin, int end, int) {
+    for (int e = begin; e < end; ++e) {
+      double weight = 0;
+      for (int f : tri.edgeFaces[e])
+        if (f >= 0) weight -= blocks_[f][3 + (tri.cornerOpposite(f, e) + 1) % 3];
+      weights[e] = weight;
     }
-  }
+  });
 }
 
 void NewtonSystem::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
