@@ -227,7 +227,16 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   const int removed = options.removedFace >= 0 ? options.removedFace : faceFarthestFromBoundary(mesh);
   if (removed >= static_cast<int>(mesh.n_faces()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
-  return mapAnnulus(mesh, removed, options);
+  if (options.flips != FlipPolicy::Auto) return mapAnnulus(mesh, removed, options);
+  try {
+    return mapAnnulus(mesh, removed, options);
+  } catch (const Error& e) {
+    // Last resort: a flow that failed without (or with late) flips, tried with flips throughout.
+    if (e.code() != ErrorCode::Unreachable) throw;
+    DiskMapOptions withFlips = options;
+    withFlips.flips = FlipPolicy::On;
+    return mapAnnulus(mesh, removed, withFlips);
+  }
 }
 
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {

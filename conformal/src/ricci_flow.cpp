@@ -142,6 +142,7 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
   double error = maxAbsDifference(target, eval.curvature);
   report.errorHistory.push_back(error);
   started = true;
+  int degeneratedSteps = 0;  // Newton steps cut short by a degenerating triangle
   while (error > options.tolerance) {
     if (report.iterations >= options.maxIterations) {
       std::ostringstream s;
@@ -246,9 +247,12 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
         std::swap(eval, trial);
         remaining -= alpha;
         if (!degenerated || ++stage == 8 || remaining < 1e-3) break;
-        // Flips come on mid-flow only for steps cut to under a quarter: a mild cut is cheaper
-        // to live with than re-ordering and re-factorising a re-triangulated system.
-        if (!flipping && (!options.flipsWhenStuck || alpha >= 0.25)) break;
+        // Flips come on mid-flow only for a step cut to under a quarter, or for the third step
+        // in a row cut short: a mild cut is cheaper to live with than re-ordering and
+        // re-factorising a re-triangulated system.
+        if (stage == 1) ++degeneratedSteps;
+        if (!flipping && (!options.flipsWhenStuck || (alpha >= 0.25 && degeneratedSteps < 3)))
+          break;
         if (startFlipping() == 0) break;
         patternStale = true;
         reference = residualNorm2(target, eval.curvature);

@@ -98,7 +98,7 @@ std::vector<std::string> splitList(const std::string& s) {
 
 [[noreturn]] void usage(int code) {
   std::printf(
-      "usage: confvis_bench_flow [--sizes 10k,100k,1m] [--schemes yamabe,inversive,...|all]\n"
+      "usage: confvis_bench_flow [--sizes 10k,100k,1m | --with-1m] [--schemes yamabe,...|all]\n"
       "                          [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]\n"
       "                          [--mesh lopsided|hemisphere|round] [--breakdown]\n"
       "Disk maps of disk meshes (default lopsided) of about the given vertex counts (default\n"
@@ -123,6 +123,10 @@ int main(int argc, char** argv) {
     if (arg == "--help" || arg == "-h") usage(0);
     if (arg == "--breakdown") {
       breakdown = true;
+      continue;
+    }
+    if (arg == "--with-1m") {  // the older spelling of --sizes 10k,100k,1m
+      sizes = {10000, 100000, 1000000};
       continue;
     }
     if (i + 1 >= argc) usage(2);

@@ -13,7 +13,8 @@
 namespace confvis::conformal {
 
 // Auto: flips from the start where the target needs them (a boundary vertex in a single
-// triangle), else switched on mid-flow when a step degenerates a triangle (no restart).
+// triangle), else switched on mid-flow when steps degenerate triangles (no restart); only if
+// the flow still fails, a second run with flips throughout.
 enum class FlipPolicy { Off, On, Auto };
 
 struct DiskMapOptions {
