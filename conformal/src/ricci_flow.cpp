@@ -166,11 +166,11 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
     bool solved = false;
     // Inexact Newton: relative residual min(0.1, error) keeps the convergence quadratic; no
     // tighter than needed for the linear residual to sit well below the flow's tolerance. After
-    // a step cut below half, ten times tighter: a rough direction can keep running into the
+    // a step cut below a quarter, ten times tighter: a rough direction can keep running into the
     // same degenerating triangle (an inversive-distance flow crawled at error 1.2 that way).
     const double cgTolerance =
         std::min(0.1, std::max(error, 0.1 * options.tolerance / rhs.norm())) *
-        (lastStep < 0.5 ? 0.1 : 1.0);
+        (lastStep < 0.25 ? 0.1 : 1.0);
     // The last solve's convergence rate predicts this one's cost: refactorise straight away
     // when CG would not make it within budget.
     if (factored && cgRate < 1 && std::log(cgTolerance) / std::log(cgRate) > cgBudget)
