@@ -264,9 +264,10 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
         degenerated = false;
         continue;
       }
-      // Past the first stage only the whole rest of the step is tried: a new Newton direction
-      // is cheaper than backtracking along an old one.
-      if (stage > 0) break;
+      // Past the first stage only the whole rest of the step is tried, and once more up to where
+      // a triangle would degenerate; no halving: a new Newton direction is cheaper than
+      // backtracking along an old one (100k: 9 -> 7 Newton steps, 48 -> 38 CG steps).
+      if (stage > 0 && (trial.valid() || degenerated)) break;
       ++report.stepHalvings;
       if (!trial.valid() && !degenerated) {
         // Go most of the way to where the first triangle degenerates (flips there may remove
