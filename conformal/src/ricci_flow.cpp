@@ -67,245 +67,296 @@ std::string describeInvalid(const MetricEvaluation& eval) {
                                : "face " + std::to_string(eval.invalidFace) + " degenerates";
 }
 
+// One run of the flow: the Newton loop's state and its steps.
+class NewtonFlow {
+ public:
+  NewtonFlow(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
+             const std::vector<double>& target, const RicciFlowOptions& options)
+      : tri_(tri), metric_(metric), target_(target), options_(options) {}
+
+  RicciFlowReport run();
+
+ private:
+  void prepare();                     // initial evaluation, flips and numbering
+  void orderUnknowns();               // AMD numbering of the current triangulation
+  int startFlipping();                // flips on from here: Delaunay restored now
+  int flipToDelaunay();
+  void assemble();
+  void setRightHandSide();
+  void solveNewtonSystem();           // delta_ from the frozen factor (CG) or a fresh one
+  void factorise();
+  bool lineSearch(double& stepTaken);  // false if no step is acceptable
+  [[noreturn]] void stall() const;
+
+  IntrinsicTriangulation& tri_;
+  CirclePackingMetric& metric_;
+  const std::vector<double>& target_;
+  const RicciFlowOptions& options_;
+  RicciFlowReport report_;
+  RicciFlowReport::Seconds& seconds_ = report_.seconds;
+
+  MetricEvaluation eval_, trial_;
+  double error_ = 0;
+  std::vector<double> weights_;      // per edge, for the Delaunay test
+  std::vector<char> lockedEdges_;    // flipped to widen a fan: not to be flipped back
+  bool flipping_ = false;
+  bool started_ = false;             // inside the Newton loop
+
+  std::optional<detail::NewtonSystem> system_;
+  detail::PreorderedLDLT factor_;
+  double orderedFill_ = 0;           // nonzeros of L with the current numbering, before flips
+  bool analyzed_ = false, factored_ = false, patternStale_ = false;
+  int cgBudget_ = 0;                 // CG steps per system before a factorisation is cheaper
+  double cgRate_ = 0;                // residual reduction per CG step in the last solve
+  Eigen::VectorXd rhs_, delta_;
+  std::vector<double> uTrial_;
+  double lastStep_ = 1;              // fraction of the last Newton step taken
+  int degeneratedSteps_ = 0;         // Newton steps cut short by a degenerating triangle
+};
+
+RicciFlowReport NewtonFlow::run() {
+  prepare();
+  started_ = true;
+  while (error_ > options_.tolerance) {
+    if (report_.iterations >= options_.maxIterations) {
+      std::ostringstream s;
+      s << "Ricci flow did not converge in " << options_.maxIterations
+        << " iterations (max curvature error " << error_ << ", tolerance "
+        << options_.tolerance << ")";
+      throw Error(ErrorCode::Unreachable, s.str());
+    }
+    assemble();
+    if (flipping_ && flipToDelaunay() > 0) {
+      patternStale_ = true;
+      assemble();
+    }
+    setRightHandSide();
+    solveNewtonSystem();
+    double stepTaken = 0;
+    if (!lineSearch(stepTaken)) {
+      if (flipping_ || !options_.flipsWhenStuck || startFlipping() == 0) stall();
+      patternStale_ = true;
+      continue;  // a new Newton step on the flipped triangulation
+    }
+    lastStep_ = stepTaken;
+    ++report_.iterations;
+    error_ = maxAbsDifference(target_, eval_.curvature);
+    report_.errorHistory.push_back(error_);
+    if (options_.onIteration) options_.onIteration(report_.iterations, error_);
+  }
+  for (double x : metric_.u)
+    if (!std::isfinite(x))
+      throw Error(ErrorCode::Internal, "Ricci flow produced a non-finite factor");
+  report_.maxCurvatureError = error_;
+  return report_;
+}
+
+void NewtonFlow::prepare() {
+  checkTargetCurvature(tri_, metric_.geometry, target_);
+  {
+    ScopedTimer timer(seconds_.evaluation);
+    detail::evaluateMetric(tri_, metric_, metric_.u, eval_);
+  }
+  if (!eval_.valid())
+    throw Error(ErrorCode::InvalidInput, "initial metric is invalid: " + describeInvalid(eval_));
+  if (options_.delaunayFlips || (options_.flipsWhenStuck && needsMoreTriangles(tri_, target_))) {
+    lockedEdges_.assign(tri_.edgeCount(), 0);
+    {
+      ScopedTimer timer(seconds_.flips);
+      report_.flips += detail::widenFans(tri_, metric_, eval_, target_, lockedEdges_);
+    }
+    startFlipping();
+  }
+  // Numbered after the initial flips: an ordering for the input's pattern can fill in ten
+  // times more on the Delaunay one (measured); later flips renumber when the fill grows.
+  {
+    ScopedTimer timer(seconds_.analysis);
+    orderUnknowns();
+  }
+  rhs_.resize(system_->size());
+  delta_.resize(system_->size());
+  uTrial_.resize(metric_.u.size());
+  error_ = maxAbsDifference(target_, eval_.curvature);
+  report_.errorHistory.push_back(error_);
+}
+
+void NewtonFlow::orderUnknowns() {
+  // Euclidean curvature is invariant under u → u + c: pin one vertex to remove the null space.
+  system_.emplace(tri_, metric_.geometry == Geometry::Euclidean ? 0 : -1);
+  orderedFill_ = 0;
+}
+
+int NewtonFlow::startFlipping() {
+  flipping_ = true;
+  if (report_.flipsStartedAt < 0) report_.flipsStartedAt = started_ ? report_.iterations + 1 : 0;
+  {
+    ScopedTimer timer(seconds_.flips);
+    detail::edgeWeights(tri_, eval_, weights_);
+  }
+  return flipToDelaunay();
+}
+
+int NewtonFlow::flipToDelaunay() {
+  ScopedTimer timer(seconds_.flips);
+  const int flips = detail::restoreDelaunay(tri_, metric_, eval_, weights_, lockedEdges_);
+  report_.flips += flips;
+  return flips;
+}
+
+void NewtonFlow::assemble() {
+  if (patternStale_) {  // same numbering; a fresh factor needs a new symbolic analysis
+    system_->invalidatePattern();
+    patternStale_ = false;
+    analyzed_ = false;
+  }
+  ScopedTimer timer(seconds_.assembly);
+  system_->assemble(tri_, eval_, weights_);
+}
+
+void NewtonFlow::setRightHandSide() {
+  for (int v = 0; v < tri_.vertexCount; ++v)
+    if (int i = system_->unknownOf(v); i >= 0) rhs_[i] = target_[v] - eval_.curvature[v];
+}
+
+void NewtonFlow::solveNewtonSystem() {
+  // Inexact Newton: relative residual min(0.1, error) keeps the convergence quadratic; no
+  // tighter than needed for the linear residual to sit well below the flow's tolerance. After
+  // a step cut below a quarter, ten times tighter: a rough direction can keep running into the
+  // same degenerating triangle (an inversive-distance flow crawled at error 1.2 that way).
+  const double cgTolerance =
+      std::min(0.1, std::max(error_, 0.1 * options_.tolerance / rhs_.norm())) *
+      (lastStep_ < 0.25 ? 0.1 : 1.0);
+  // The last solve's convergence rate predicts this one's cost: refactorise straight away
+  // when CG would not make it within budget.
+  if (factored_ && cgRate_ < 1 && std::log(cgTolerance) / std::log(cgRate_) > cgBudget_)
+    factored_ = false;
+  if (factored_) {
+    ScopedTimer timer(seconds_.solve);
+    const auto cg =
+        detail::preconditionedCg(*system_, factor_, rhs_, cgTolerance, cgBudget_, delta_);
+    report_.cgIterations += cg.iterations;
+    cgRate_ = cg.iterations > 0 ? std::pow(cg.reduction, 1.0 / cg.iterations) : 0;
+    if (cg.converged) return;
+  }
+  factorise();
+  ScopedTimer timer(seconds_.solve);
+  factored_ = factor_.info() == Eigen::Success;
+  if (factored_) {
+    delta_ = factor_.solve(rhs_);
+    factored_ = delta_.allFinite();
+  }
+  // Without a usable Newton step (the spherical energy is not convex) fall back to the flow
+  // direction du = K̄ - K itself.
+  if (!factored_) delta_ = rhs_;
+}
+
+void NewtonFlow::factorise() {
+  const SparseMatrix* H;
+  {
+    ScopedTimer timer(seconds_.assembly);
+    H = &system_->upper(tri_);
+  }
+  if (!analyzed_) {
+    ScopedTimer timer(seconds_.analysis);
+    factor_.analyze(*H);
+    ++report_.symbolicAnalyses;
+    // After flips the old numbering may fill in far more (10x, measured, for an ordering made
+    // before the initial Delaunay flips): then number the unknowns afresh.
+    if (orderedFill_ > 0 && factor_.factorNonZeros() > 1.2 * orderedFill_) {
+      orderUnknowns();
+      assemble();
+      setRightHandSide();
+      H = &system_->upper(tri_);
+      factor_.analyze(*H);
+      ++report_.symbolicAnalyses;
+    }
+    if (orderedFill_ == 0) orderedFill_ = factor_.factorNonZeros();
+    analyzed_ = true;
+    const double cgStepFlops = factor_.solveFlops() + 4.0 * H->nonZeros();
+    cgBudget_ =
+        std::clamp(static_cast<int>(0.5 * factor_.factorizationFlops() / cgStepFlops), 4, 200);
+  }
+  ScopedTimer timer(seconds_.factorization);
+  factor_.factorizeValues(*H);
+  ++report_.factorizations;
+  cgRate_ = 0;
+  factor_.preparePreconditioner();
+}
+
+// Backtracking: a step must keep every triangle valid and reduce |K̄ - K|². With flips, a step
+// cut short because a triangle would degenerate is taken, the triangulation made Delaunay
+// there, and the rest of the Newton step tried from that point ("stages").
+bool NewtonFlow::lineSearch(double& stepTaken) {
+  std::vector<double>& u = metric_.u;
+  double reference = residualNorm2(target_, eval_.curvature);
+  double remaining = 1.0, alpha = 1.0;
+  bool accepted = false, degenerated = false;
+  int stage = 0;
+  for (int halving = 0; halving < 60; ++halving) {
+    {
+      ScopedTimer timer(seconds_.evaluation);
+      for (int v = 0; v < tri_.vertexCount; ++v) {
+        const int i = system_->unknownOf(v);
+        uTrial_[v] = i >= 0 ? u[v] + alpha * delta_[i] : u[v];
+      }
+      detail::evaluateMetric(tri_, metric_, uTrial_, trial_);
+    }
+    if (trial_.valid() &&
+        residualNorm2(target_, trial_.curvature) < (1 - 1e-4 * alpha / remaining) * reference) {
+      accepted = true;
+      u.swap(uTrial_);
+      std::swap(eval_, trial_);
+      remaining -= alpha;
+      if (!degenerated || ++stage == 8 || remaining < 1e-3) break;
+      // Flips come on mid-flow only for a step cut to under a quarter, or for the third step in
+      // a row cut short: a mild cut is cheaper to live with than re-ordering and
+      // re-factorising a re-triangulated system.
+      if (stage == 1) ++degeneratedSteps_;
+      if (!flipping_ && (!options_.flipsWhenStuck || (alpha >= 0.25 && degeneratedSteps_ < 3)))
+        break;
+      if (startFlipping() == 0) break;
+      patternStale_ = true;
+      reference = residualNorm2(target_, eval_.curvature);
+      alpha = remaining;
+      degenerated = false;
+      continue;
+    }
+    // Past the first stage only the whole rest of the step is tried, and once more up to where
+    // a triangle would degenerate; no halving: a new Newton direction is cheaper than
+    // backtracking along an old one (100k: 9 -> 7 Newton steps, 48 -> 38 CG steps).
+    if (stage > 0 && (trial_.valid() || degenerated)) break;
+    ++report_.stepHalvings;
+    if (!trial_.valid() && !degenerated) {
+      // Go most of the way to where the first triangle degenerates (flips there may remove
+      // it), rather than halving blindly.
+      degenerated = true;
+      const double fraction = detail::degenerationStep(tri_, eval_, trial_);
+      if (fraction > 0.05) {
+        alpha *= 0.9 * fraction;
+        continue;
+      }
+    }
+    alpha *= 0.5;
+  }
+  stepTaken = 1 - remaining;
+  return accepted;
+}
+
+void NewtonFlow::stall() const {
+  std::ostringstream s;
+  s << "Ricci flow stalled at max curvature error " << error_ << " after "
+    << report_.iterations << " iterations: no step keeps every triangle valid ("
+    << (trial_.valid() ? "error would grow" : describeInvalid(trial_)) << ")";
+  if (!flipping_) s << "; enabling Delaunay edge flips may help";
+  s << ", or the target curvature is not reachable for this mesh";
+  throw Error(ErrorCode::Unreachable, s.str());
+}
+
 }  // namespace
 
 RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
                              const std::vector<double>& target, const RicciFlowOptions& options) {
-  checkTargetCurvature(tri, metric.geometry, target);
-  RicciFlowReport report;
-  auto& seconds = report.seconds;
-  MetricEvaluation eval, trial;
-  {
-    ScopedTimer timer(seconds.evaluation);
-    detail::evaluateMetric(tri, metric, metric.u, eval);
-  }
-  if (!eval.valid())
-    throw Error(ErrorCode::InvalidInput, "initial metric is invalid: " + describeInvalid(eval));
-  std::vector<double> weights;  // per edge, for the Delaunay test
-  std::vector<char> lockedEdges;  // flipped to widen a fan: not to be flipped back
-  auto flipToDelaunay = [&] {
-    ScopedTimer timer(seconds.flips);
-    const int flips = detail::restoreDelaunay(tri, metric, eval, weights, lockedEdges);
-    report.flips += flips;
-    return flips;
-  };
-  // Euclidean curvature is invariant under u → u + c: pin one vertex to remove the null space.
-  const int pinned = metric.geometry == Geometry::Euclidean ? 0 : -1;
-  bool flipping = options.delaunayFlips ||
-                  (options.flipsWhenStuck && needsMoreTriangles(tri, target));
-  bool started = false;  // inside the Newton loop
-  auto startFlipping = [&] {
-    flipping = true;
-    if (report.flipsStartedAt < 0) report.flipsStartedAt = started ? report.iterations + 1 : 0;
-    {
-      ScopedTimer timer(seconds.flips);
-      detail::edgeWeights(tri, eval, weights);
-    }
-    return flipToDelaunay();
-  };
-  if (flipping) {
-    lockedEdges.assign(tri.edgeCount(), 0);
-    ScopedTimer timer(seconds.flips);
-    report.flips += detail::widenFans(tri, metric, eval, target, lockedEdges);
-  }
-  if (flipping) startFlipping();
-  // Numbered after the initial flips: an ordering for the input's pattern can fill in ten
-  // times more on the Delaunay one (measured); later flips renumber when the fill grows.
-  std::optional<detail::NewtonSystem> system;
-  double orderedFill = 0;  // nonzeros of L with the current numbering, before later flips
-  auto orderUnknowns = [&] {
-    system.emplace(tri, pinned);
-    orderedFill = 0;
-  };
-  {
-    ScopedTimer timer(seconds.analysis);
-    orderUnknowns();
-  }
-  detail::PreorderedLDLT factor;
-  bool analyzed = false, factored = false, patternStale = false;
-  // CG steps allowed per Newton system before a fresh factorisation is cheaper.
-  int cgBudget = 0;
-  double cgRate = 0;  // residual reduction per CG step in the last solve
-  auto assemble = [&] {
-    if (patternStale) {  // same numbering; a fresh factor needs a new symbolic analysis
-      system->invalidatePattern();
-      patternStale = false;
-      analyzed = false;
-    }
-    ScopedTimer timer(seconds.assembly);
-    system->assemble(tri, eval, weights);
-  };
-
-  std::vector<double>& u = metric.u;
-  std::vector<double> uTrial(u.size());
-  Eigen::VectorXd rhs(system->size()), delta(system->size());
-  double error = maxAbsDifference(target, eval.curvature);
-  report.errorHistory.push_back(error);
-  started = true;
-  int degeneratedSteps = 0;  // Newton steps cut short by a degenerating triangle
-  double lastStep = 1;       // fraction of the last Newton step taken
-  while (error > options.tolerance) {
-    if (report.iterations >= options.maxIterations) {
-      std::ostringstream s;
-      s << "Ricci flow did not converge in " << options.maxIterations
-        << " iterations (max curvature error " << error << ", tolerance " << options.tolerance
-        << ")";
-      throw Error(ErrorCode::Unreachable, s.str());
-    }
-    assemble();
-    if (flipping && flipToDelaunay() > 0) {
-      patternStale = true;
-      assemble();
-    }
-    auto setRightHandSide = [&] {
-      for (int v = 0; v < tri.vertexCount; ++v)
-        if (int i = system->unknownOf(v); i >= 0) rhs[i] = target[v] - eval.curvature[v];
-    };
-    setRightHandSide();
-
-    bool solved = false;
-    // Inexact Newton: relative residual min(0.1, error) keeps the convergence quadratic; no
-    // tighter than needed for the linear residual to sit well below the flow's tolerance. After
-    // a step cut below a quarter, ten times tighter: a rough direction can keep running into the
-    // same degenerating triangle (an inversive-distance flow crawled at error 1.2 that way).
-    const double cgTolerance =
-        std::min(0.1, std::max(error, 0.1 * options.tolerance / rhs.norm())) *
-        (lastStep < 0.25 ? 0.1 : 1.0);
-    // The last solve's convergence rate predicts this one's cost: refactorise straight away
-    // when CG would not make it within budget.
-    if (factored && cgRate < 1 && std::log(cgTolerance) / std::log(cgRate) > cgBudget)
-      factored = false;
-    if (factored) {
-      ScopedTimer timer(seconds.solve);
-      const auto cg =
-          detail::preconditionedCg(*system, factor, rhs, cgTolerance, cgBudget, delta);
-      report.cgIterations += cg.iterations;
-      cgRate = cg.iterations > 0 ? std::pow(cg.reduction, 1.0 / cg.iterations) : 0;
-      solved = cg.converged;
-    }
-    if (!solved) {
-      const SparseMatrix* H;
-      {
-        ScopedTimer timer(seconds.assembly);
-        H = &system->upper(tri);
-      }
-      if (!analyzed) {
-        ScopedTimer timer(seconds.analysis);
-        factor.analyze(*H);
-        ++report.symbolicAnalyses;
-        // After flips the old numbering may fill in far more (10x, measured, for an ordering
-        // made before the initial Delaunay flips): then number the unknowns afresh.
-        if (orderedFill > 0 && factor.factorNonZeros() > 1.2 * orderedFill) {
-          orderUnknowns();
-          assemble();
-          setRightHandSide();
-          H = &system->upper(tri);
-          factor.analyze(*H);
-          ++report.symbolicAnalyses;
-          orderedFill = 0;
-        }
-        if (orderedFill == 0) orderedFill = factor.factorNonZeros();
-        analyzed = true;
-        const double cgStepFlops = factor.solveFlops() + 4.0 * H->nonZeros();
-        cgBudget = std::clamp(static_cast<int>(0.5 * factor.factorizationFlops() / cgStepFlops),
-                              4, 200);
-      }
-      {
-        ScopedTimer timer(seconds.factorization);
-        factor.factorizeValues(*H);
-        ++report.factorizations;
-        cgRate = 0;
-        factor.preparePreconditioner();
-      }
-      ScopedTimer timer(seconds.solve);
-      factored = factor.info() == Eigen::Success;
-      if (factored) {
-        delta = factor.solve(rhs);
-        factored = delta.allFinite();
-      }
-      // Without a usable Newton step (the spherical energy is not convex) fall back to the flow
-      // direction du = K̄ - K itself.
-      if (!factored) delta = rhs;
-    }
-
-    // Backtracking: a step must keep every triangle valid and reduce |K̄ - K|². With flips, a
-    // step cut short because a triangle would degenerate is taken, the triangulation made
-    // Delaunay there, and the rest of the Newton step tried from that point.
-    double reference = residualNorm2(target, eval.curvature);
-    double remaining = 1.0, alpha = 1.0;
-    bool accepted = false, degenerated = false;
-    int stage = 0;
-    for (int halving = 0; halving < 60; ++halving) {
-      {
-        ScopedTimer timer(seconds.evaluation);
-        for (int v = 0; v < tri.vertexCount; ++v) {
-          const int i = system->unknownOf(v);
-          uTrial[v] = i >= 0 ? u[v] + alpha * delta[i] : u[v];
-        }
-        detail::evaluateMetric(tri, metric, uTrial, trial);
-      }
-      const double r = trial.valid() ? residualNorm2(target, trial.curvature) : 0;
-      if (trial.valid() && r < (1 - 1e-4 * alpha / remaining) * reference) {
-        accepted = true;
-        u.swap(uTrial);
-        std::swap(eval, trial);
-        remaining -= alpha;
-        if (!degenerated || ++stage == 8 || remaining < 1e-3) break;
-        // Flips come on mid-flow only for a step cut to under a quarter, or for the third step
-        // in a row cut short: a mild cut is cheaper to live with than re-ordering and
-        // re-factorising a re-triangulated system.
-        if (stage == 1) ++degeneratedSteps;
-        if (!flipping && (!options.flipsWhenStuck || (alpha >= 0.25 && degeneratedSteps < 3)))
-          break;
-        if (startFlipping() == 0) break;
-        patternStale = true;
-        reference = residualNorm2(target, eval.curvature);
-        alpha = remaining;
-        degenerated = false;
-        continue;
-      }
-      // Past the first stage only the whole rest of the step is tried, and once more up to where
-      // a triangle would degenerate; no halving: a new Newton direction is cheaper than
-      // backtracking along an old one (100k: 9 -> 7 Newton steps, 48 -> 38 CG steps).
-      if (stage > 0 && (trial.valid() || degenerated)) break;
-      ++report.stepHalvings;
-      if (!trial.valid() && !degenerated) {
-        // Go most of the way to where the first triangle degenerates (flips there may remove
-        // it), rather than halving blindly.
-        degenerated = true;
-        const double fraction = detail::degenerationStep(tri, eval, trial);
-        if (fraction > 0.05) {
-          alpha *= 0.9 * fraction;
-          continue;
-        }
-      }
-      alpha *= 0.5;
-    }
-    if (!accepted && !flipping && options.flipsWhenStuck) {
-      if (startFlipping() > 0) {
-        patternStale = true;
-        continue;  // a new Newton step on the flipped triangulation
-      }
-    }
-    if (!accepted) {
-      std::ostringstream s;
-      s << "Ricci flow stalled at max curvature error " << error << " after " << report.iterations
-        << " iterations: no step keeps every triangle valid ("
-        << (trial.valid() ? "error would grow" : describeInvalid(trial)) << ")";
-      if (!flipping) s << "; enabling Delaunay edge flips may help";
-      s << ", or the target curvature is not reachable for this mesh";
-      throw Error(ErrorCode::Unreachable, s.str());
-    }
-    lastStep = 1 - remaining;
-    ++report.iterations;
-    error = maxAbsDifference(target, eval.curvature);
-    report.errorHistory.push_back(error);
-    if (options.onIteration) options.onIteration(report.iterations, error);
-  }
-  for (double x : metric.u)
-    if (!std::isfinite(x)) throw Error(ErrorCode::Internal, "Ricci flow produced a non-finite factor");
-  report.maxCurvatureError = error;
-  return report;
+  return NewtonFlow(tri, metric, target, options).run();
 }
 
 }  // namespace confvis::conformal
