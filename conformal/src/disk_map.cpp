@@ -15,18 +15,29 @@ using Complex = std::complex<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Shortest distances along edges from a set of source vertices. `blocked(v)` vertices are
-// never expanded (they may still be reached); `edgeAllowed(e)` filters edges.
-template <typename Blocked, typename EdgeAllowed>
-std::vector<double> dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengths,
-                             const std::vector<int>& sources, std::vector<int>& parentEdge,
-                             Blocked blocked, EdgeAllowed edgeAllowed) {
-  std::vector<std::vector<int>> incident(tri.vertexCount);
-  for (int e = 0; e < tri.edgeCount(); ++e)
-    for (int v : tri.edgeVertices[e]) incident[v].push_back(e);
-  std::vector<double> dist(tri.vertexCount, kInf);
+// never expanded (they may still be reached); `edgeAllowed(e)` filters edges. Stops when a
+// vertex with `stop(v)` is settled (pass `stop` false everywhere for all distances); returns
+// that vertex, or -1.
+template <typename Blocked, typename EdgeAllowed, typename Stop>
+int dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengths,
+             const std::vector<int>& sources, std::vector<double>& dist,
+             std::vector<int>& parentEdge, Blocked blocked, EdgeAllowed edgeAllowed, Stop stop) {
+  // Incident edges per vertex, compressed (one allocation, not one per vertex).
+  std::vector<int> offset(tri.vertexCount + 1, 0), incident(2 * tri.edgeCount());
+  for (const auto& ev : tri.edgeVertices) ++offset[ev[0] + 1], ++offset[ev[1] + 1];
+  for (int v = 0; v < tri.vertexCount; ++v) offset[v + 1] += offset[v];
+  {
+    std::vector<int> fill(offset.begin(), offset.end() - 1);
+    for (int e = 0; e < tri.edgeCount(); ++e)
+      for (int v : tri.edgeVertices[e]) incident[fill[v]++] = e;
+  }
+  dist.assign(tri.vertexCount, kInf);
   parentEdge.assign(tri.vertexCount, -1);
   using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  std::vector<Item> heap;
+  heap.reserve(tri.vertexCount);
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue(std::greater<>(),
+                                                                     std::move(heap));
   for (int s : sources) {
     dist[s] = 0;
     queue.push({0.0, s});
@@ -34,8 +45,11 @@ std::vector<double> dijkstra(const IntrinsicTriangulation& tri, const std::vecto
   while (!queue.empty()) {
     auto [d, v] = queue.top();
     queue.pop();
-    if (d > dist[v] || blocked(v)) continue;
-    for (int e : incident[v]) {
+    if (d > dist[v]) continue;
+    if (stop(v)) return v;
+    if (blocked(v)) continue;
+    for (int k = offset[v]; k < offset[v + 1]; ++k) {
+      const int e = incident[k];
       if (!edgeAllowed(e)) continue;
       const int w = tri.edgeVertices[e][0] == v ? tri.edgeVertices[e][1] : tri.edgeVertices[e][0];
       if (d + lengths[e] < dist[w]) {
@@ -45,17 +59,18 @@ std::vector<double> dijkstra(const IntrinsicTriangulation& tri, const std::vecto
       }
     }
   }
-  return dist;
+  return -1;
 }
 
 int faceFarthestFromBoundary(const TriMesh& mesh) {
   const auto tri = buildTriangulation(mesh);
   const auto lengths = embeddedEdgeLengths(tri, mesh);
   std::vector<int> boundary, parent;
+  std::vector<double> dist;
   for (int v = 0; v < tri.vertexCount; ++v)
     if (tri.vertexOnBoundary[v]) boundary.push_back(v);
-  const auto dist = dijkstra(tri, lengths, boundary, parent, [](int) { return false; },
-                             [](int) { return true; });
+  dijkstra(tri, lengths, boundary, dist, parent, [](int) { return false; },
+           [](int) { return true; }, [](int) { return false; });
   int best = -1;
   double bestScore = 0;
   for (int f = 0; f < tri.faceCount(); ++f) {
@@ -78,33 +93,35 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
                                            const std::vector<char>& edgeCut) {
   std::vector<std::array<Complex, 3>> corner(tri.faceCount());
   std::vector<char> placed(tri.faceCount(), 0);
-  auto angleAt = [&](int f, int c) {
-    const auto& fe = tri.faceEdges[f];
-    std::array<double, 3> angles;
-    if (!cornerAngles(Geometry::Euclidean, {lengths[fe[0]], lengths[fe[1]], lengths[fe[2]]}, angles))
-      throw Error(ErrorCode::Internal, "flat metric has a degenerate face " + std::to_string(f));
-    return angles[c];
-  };
-  // Third corner of face f given corners c1 = c0+1 and c2 = c0+2 already placed (CCW order).
+  // Third corner of face f given corners c1 = c0+1 and c2 = c0+2 already placed (CCW order):
+  // in a CCW triangle c0 lies to the right of the ray c2→c1, at distance x along it (cosine
+  // law) and height 2·area / |c1 c2| (Heron), so no trigonometry is needed.
   auto placeThird = [&](int f, int c0) {
     const int c1 = (c0 + 1) % 3, c2 = (c0 + 2) % 3;
-    // In a CCW triangle the ray c2→c0 is the ray c2→c1 turned clockwise by the angle at c2.
-    const Complex toC1 = (corner[f][c1] - corner[f][c2]) / std::abs(corner[f][c1] - corner[f][c2]);
-    const double len = lengths[tri.faceEdges[f][c1]];  // edge c2-c0 is opposite c1
-    corner[f][c0] = corner[f][c2] + len * toC1 * std::polar(1.0, -angleAt(f, c2));
+    const auto& fe = tri.faceEdges[f];
+    const double base = lengths[fe[c0]], toC2 = lengths[fe[c1]], toC1 = lengths[fe[c2]];
+    const double area4 = std::sqrt((base + toC2 + toC1) * (toC2 + toC1 - base) *
+                                   (base + toC1 - toC2) * (base + toC2 - toC1));
+    if (!(area4 > 0))
+      throw Error(ErrorCode::Internal, "flat metric has a degenerate face " + std::to_string(f));
+    const Complex side = corner[f][c1] - corner[f][c2];
+    const Complex direction = side / std::sqrt(std::norm(side));  // not abs: hypot is slow
+    const double x = (toC2 * toC2 + base * base - toC1 * toC1) / (2 * base);
+    const double y = area4 / (2 * base);
+    corner[f][c0] = corner[f][c2] + direction * Complex(x, -y);
   };
-  std::queue<int> queue;
+  std::vector<int> queue;  // breadth first: a plain array, faces are queued once
+  queue.reserve(tri.faceCount());
   {
     const int f = 0;
     corner[f][0] = 0;
     corner[f][1] = lengths[tri.faceEdges[f][2]];  // edge 0-1 is opposite corner 2
     placeThird(f, 2);
     placed[f] = 1;
-    queue.push(f);
+    queue.push_back(f);
   }
-  while (!queue.empty()) {
-    const int f = queue.front();
-    queue.pop();
+  for (std::size_t next = 0; next < queue.size(); ++next) {
+    const int f = queue[next];
     for (int c = 0; c < 3; ++c) {
       const int e = tri.faceEdges[f][c];
       if (edgeCut[e] || tri.edgeOnBoundary(e)) continue;
@@ -116,7 +133,7 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
       corner[g][(cg + 2) % 3] = corner[f][(c + 1) % 3];
       placeThird(g, cg);
       placed[g] = 1;
-      queue.push(g);
+      queue.push_back(g);
     }
   }
   for (char p : placed)
@@ -124,20 +141,20 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
   return corner;
 }
 
-DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options,
-                   bool flips) {
+DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options) {
   DiskMap result;
   result.removedFace = removedFace;
-  result.usedFlips = flips;
   IntrinsicTriangulation tri = buildTriangulation(mesh, removedFace);
   CirclePackingMetric metric =
       initialMetric(tri, embeddedEdgeLengths(tri, mesh), options.scheme, Geometry::Euclidean);
   RicciFlowOptions flowOptions;
   flowOptions.tolerance = options.tolerance;
   flowOptions.maxIterations = options.maxIterations;
-  flowOptions.delaunayFlips = flips;
+  flowOptions.delaunayFlips = options.flips == FlipPolicy::On;
+  flowOptions.flipsWhenStuck = options.flips == FlipPolicy::Auto;
   flowOptions.onIteration = options.onIteration;
   result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
+  result.usedFlips = result.flow.flipsStartedAt >= 0;
   const std::vector<double> lengths = metricEdgeLengths(tri, metric);
 
   // Inner boundary = the removed face's corners.
@@ -147,17 +164,13 @@ DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& o
     inner[v.idx()] = 1;
     innerVertices.push_back(v.idx());
   }
-  // Shortest interior edge path from the inner to the outer boundary.
+  // Shortest interior edge path from the inner to the outer boundary: the first outer vertex
+  // Dijkstra settles.
   std::vector<int> parent;
-  const auto dist = dijkstra(
-      tri, lengths, innerVertices, parent,
-      [&](int v) { return tri.vertexOnBoundary[v] && !inner[v]; },
-      [&](int e) { return !tri.edgeOnBoundary(e); });
-  int outerEnd = -1;
-  for (int v = 0; v < tri.vertexCount; ++v)
-    if (tri.vertexOnBoundary[v] && !inner[v] && dist[v] < kInf &&
-        (outerEnd < 0 || dist[v] < dist[outerEnd]))
-      outerEnd = v;
+  std::vector<double> dist;
+  auto outer = [&](int v) { return tri.vertexOnBoundary[v] && !inner[v]; };
+  const int outerEnd = dijkstra(tri, lengths, innerVertices, dist, parent, outer,
+                                [&](int e) { return !tri.edgeOnBoundary(e); }, outer);
   if (outerEnd < 0) throw Error(ErrorCode::Internal, "no cut path from inner to outer boundary");
   std::vector<char> edgeCut(tri.edgeCount(), 0);
   int firstCutEdge = -1;
@@ -214,13 +227,15 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   const int removed = options.removedFace >= 0 ? options.removedFace : faceFarthestFromBoundary(mesh);
   if (removed >= static_cast<int>(mesh.n_faces()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
-  if (options.flips != FlipPolicy::Auto)
-    return mapAnnulus(mesh, removed, options, options.flips == FlipPolicy::On);
+  if (options.flips != FlipPolicy::Auto) return mapAnnulus(mesh, removed, options);
   try {
-    return mapAnnulus(mesh, removed, options, false);
+    return mapAnnulus(mesh, removed, options);
   } catch (const Error& e) {
+    // Last resort: a flow that failed without (or with late) flips, tried with flips throughout.
     if (e.code() != ErrorCode::Unreachable) throw;
-    return mapAnnulus(mesh, removed, options, true);
+    DiskMapOptions withFlips = options;
+    withFlips.flips = FlipPolicy::On;
+    return mapAnnulus(mesh, removed, withFlips);
   }
 }
 

@@ -1,6 +1,6 @@
 #include "confvis/conformal/intrinsic_triangulation.hpp"
 
-#include <unordered_map>
+#include <array>
 
 #include "confvis/base/error.hpp"
 
@@ -39,37 +39,40 @@ void IntrinsicTriangulation::flip(int e) {
 IntrinsicTriangulation buildTriangulation(const TriMesh& mesh, int skipFace) {
   IntrinsicTriangulation t;
   t.vertexCount = static_cast<int>(mesh.n_vertices());
-  t.faceVertices.reserve(mesh.n_faces());
-  for (auto f : mesh.faces()) {
-    if (f.idx() == skipFace) continue;
-    std::array<int, 3> fv{};
-    int c = 0;
-    for (auto v : f.vertices()) {
-      if (c == 3) throw Error(ErrorCode::InvalidInput, "mesh has a non-triangular face");
-      fv[c++] = v.idx();
-    }
-    t.faceVertices.push_back(fv);
-  }
-  std::unordered_map<long long, int> edgeIndex;
-  edgeIndex.reserve(t.faceVertices.size() * 2);
-  t.faceEdges.resize(t.faceVertices.size());
-  for (int f = 0; f < t.faceCount(); ++f) {
+  const int faces = static_cast<int>(mesh.n_faces()) - (skipFace >= 0 && skipFace < static_cast<int>(mesh.n_faces()));
+  t.faceVertices.resize(faces);
+  t.faceEdges.resize(faces);
+  t.edgeVertices.reserve(mesh.n_edges());
+  t.edgeFaces.reserve(mesh.n_edges());
+  // OpenMesh's own edge indices identify the edges (no hashing); ours are numbered in order of
+  // first appearance, so edges that only the skipped face had are left out.
+  std::vector<int> edgeIndex(mesh.n_edges(), -1);
+  int f = 0;
+  // Plain handles, not OpenMesh's smart ranges: those validate every step out of line.
+  for (int meshFace = 0; meshFace < static_cast<int>(mesh.n_faces()); ++meshFace) {
+    if (meshFace == skipFace) continue;
+    // Corner c is the target of the c-th half-edge; the edge opposite corner c is the
+    // half-edge two further on.
+    std::array<TriMesh::HalfedgeHandle, 3> h;
+    h[0] = mesh.halfedge_handle(TriMesh::FaceHandle(meshFace));
+    h[1] = mesh.next_halfedge_handle(h[0]);
+    h[2] = mesh.next_halfedge_handle(h[1]);
+    if (mesh.next_halfedge_handle(h[2]) != h[0])
+      throw Error(ErrorCode::InvalidInput, "mesh has a non-triangular face");
+    for (int c = 0; c < 3; ++c) t.faceVertices[f][c] = mesh.to_vertex_handle(h[c]).idx();
     for (int c = 0; c < 3; ++c) {
-      const int a = t.faceVertices[f][(c + 1) % 3], b = t.faceVertices[f][(c + 2) % 3];
-      const long long key = static_cast<long long>(std::min(a, b)) * t.vertexCount + std::max(a, b);
-      auto [it, inserted] = edgeIndex.try_emplace(key, t.edgeCount());
-      if (inserted) {
-        t.edgeVertices.push_back({a, b});
+      const int meshEdge = mesh.edge_handle(h[(c + 2) % 3]).idx();
+      int& e = edgeIndex[meshEdge];
+      if (e < 0) {
+        e = t.edgeCount();
+        t.edgeVertices.push_back({t.faceVertices[f][(c + 1) % 3], t.faceVertices[f][(c + 2) % 3]});
         t.edgeFaces.push_back({f, -1});
       } else {
-        auto& ef = t.edgeFaces[it->second];
-        if (ef[1] >= 0)
-          throw Error(ErrorCode::InvalidInput, "non-manifold edge between vertices " +
-                                                   std::to_string(a) + " and " + std::to_string(b));
-        ef[1] = f;
+        t.edgeFaces[e][1] = f;
       }
-      t.faceEdges[f][c] = it->second;
+      t.faceEdges[f][c] = e;
     }
+    ++f;
   }
   t.vertexOnBoundary.assign(t.vertexCount, 0);
   for (int e = 0; e < t.edgeCount(); ++e)

@@ -8,30 +8,95 @@
 
 #include "confvis/base/error.hpp"
 #include "metric_evaluation.hpp"
+#include "ricci_flow_parallel.hpp"
 
 namespace confvis::conformal {
 namespace detail {
 
+bool euclideanAngles(const std::array<double, 3>& l, std::array<double, 3>& angles) {
+  const double a = l[0], b = l[1], c = l[2];
+  const double pa = b + c - a, pb = c + a - b, pc = a + b - c;
+  if (!(pa > 0 && pb > 0 && pc > 0)) return false;  // also rejects NaN
+  const double area4 = std::sqrt((a + b + c) * pa * pb * pc);  // 4 × area (Heron)
+  if (!(area4 > 0) || !std::isfinite(area4)) return false;
+  // Half-angle tangents: tan(θ_a/2) = pb·pc / 4A. Accurate for slivers too, where the cosine
+  // law loses half the digits (acos near ±1); atan is also cheaper than acos.
+  angles[0] = 2 * std::atan(pb * pc / area4);
+  angles[1] = 2 * std::atan(pc * pa / area4);
+  angles[2] = std::numbers::pi - angles[0] - angles[1];  // exact to rounding, one atan less
+  return true;
+}
+
 void evaluateMetric(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
                     const std::vector<double>& u, MetricEvaluation& out) {
   out.geometry = metric.geometry;
-  out.invalidEdge = out.invalidFace = -1;
-  out.edges.resize(tri.edgeCount());
-  for (int e = 0; e < tri.edgeCount(); ++e) {
-    const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
-    out.edges[e] = edgeLength(metric.geometry, u[a], u[b], metric.eta[e], metric.epsilon[a],
-                              metric.epsilon[b]);
-    if (!out.edges[e].valid && out.invalidEdge < 0) out.invalidEdge = e;
+  const int edgeCount = tri.edgeCount(), faceCount = tri.faceCount();
+  out.edges.resize(edgeCount);
+  // First invalid edge / face per part of the parallel loops; the smallest index wins.
+  std::array<int, 8> firstInvalid;
+  auto smallestInvalid = [&](int parts) {
+    int first = -1;
+    for (int p = 0; p < parts; ++p)
+      if (firstInvalid[p] >= 0 && (first < 0 || firstInvalid[p] < first)) first = firstInvalid[p];
+    return first;
+  };
+  firstInvalid.fill(-1);
+  int parts;
+  if (metric.geometry == Geometry::Euclidean) {
+    // (4.1.2) in E²: l² = 2η x_i x_j + ε_i x_i² + ε_j x_j² with x = e^u, one exp per vertex.
+    out.scale.resize(u.size());
+    parallelFor(static_cast<int>(u.size()), [&](int begin, int end, int) {
+      for (int v = begin; v < end; ++v) out.scale[v] = std::exp(u[v]);
+    });
+    const double* x = out.scale.data();
+    const int* eps = metric.epsilon.data();
+    parts = parallelFor(edgeCount, [&](int begin, int end, int part) {
+      for (int e = begin; e < end; ++e) {
+        const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+        const double cross = metric.eta[e] * x[a] * x[b];
+        const double sa = eps[a] * x[a] * x[a], sb = eps[b] * x[b] * x[b];
+        const double l2 = 2 * cross + sa + sb;
+        EdgeLength& el = out.edges[e];
+        el.valid = l2 > 0 && std::isfinite(l2);
+        if (!el.valid) {
+          if (firstInvalid[part] < 0) firstInvalid[part] = e;
+          continue;
+        }
+        el.length = std::sqrt(l2);
+        const double inverse = 1 / el.length;
+        el.dLength_dui = (cross + sa) * inverse;
+        el.dLength_duj = (cross + sb) * inverse;
+      }
+    });
+  } else {
+    parts = parallelFor(edgeCount, [&](int begin, int end, int part) {
+      for (int e = begin; e < end; ++e) {
+        const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+        out.edges[e] = edgeLength(metric.geometry, u[a], u[b], metric.eta[e],
+                                  metric.epsilon[a], metric.epsilon[b]);
+        if (!out.edges[e].valid && firstInvalid[part] < 0) firstInvalid[part] = e;
+      }
+    });
   }
+  out.invalidEdge = smallestInvalid(parts);
+  out.invalidFace = -1;
   if (out.invalidEdge >= 0) return;
-  out.angles.resize(tri.faceCount());
-  for (int f = 0; f < tri.faceCount(); ++f) {
-    const auto& fe = tri.faceEdges[f];
-    const std::array<double, 3> l{out.edges[fe[0]].length, out.edges[fe[1]].length,
-                                  out.edges[fe[2]].length};
-    if (!cornerAngles(metric.geometry, l, out.angles[f]) && out.invalidFace < 0) out.invalidFace = f;
-  }
+  out.angles.resize(faceCount);
+  firstInvalid.fill(-1);
+  parts = parallelFor(faceCount, [&](int begin, int end, int part) {
+    for (int f = begin; f < end; ++f)
+      if (!faceAngles(tri, out, f) && firstInvalid[part] < 0) firstInvalid[part] = f;
+  });
+  out.invalidFace = smallestInvalid(parts);
   if (out.invalidFace < 0) refreshCurvature(tri, out);
+}
+
+bool faceAngles(const IntrinsicTriangulation& tri, MetricEvaluation& eval, int f) {
+  const auto& fe = tri.faceEdges[f];
+  const std::array<double, 3> l{eval.edges[fe[0]].length, eval.edges[fe[1]].length,
+                                eval.edges[fe[2]].length};
+  return eval.geometry == Geometry::Euclidean ? euclideanAngles(l, eval.angles[f])
+                                              : cornerAngles(eval.geometry, l, eval.angles[f]);
 }
 
 void refreshCurvature(const IntrinsicTriangulation& tri, MetricEvaluation& eval) {
@@ -48,13 +113,8 @@ bool updateAroundEdge(const IntrinsicTriangulation& tri, const CirclePackingMetr
   eval.edges[e] = edgeLength(metric.geometry, metric.u[a], metric.u[b], metric.eta[e],
                              metric.epsilon[a], metric.epsilon[b]);
   if (!eval.edges[e].valid) return false;
-  for (int f : tri.edgeFaces[e]) {
-    if (f < 0) continue;
-    const auto& fe = tri.faceEdges[f];
-    const std::array<double, 3> l{eval.edges[fe[0]].length, eval.edges[fe[1]].length,
-                                  eval.edges[fe[2]].length};
-    if (!cornerAngles(metric.geometry, l, eval.angles[f])) return false;
-  }
+  for (int f : tri.edgeFaces[e])
+    if (f >= 0 && !faceAngles(tri, eval, f)) return false;
   return true;
 }
 
@@ -65,7 +125,21 @@ void faceAngleJacobian(const IntrinsicTriangulation& tri, const MetricEvaluation
   const std::array<double, 3> l{eval.edges[fe[0]].length, eval.edges[fe[1]].length,
                                 eval.edges[fe[2]].length};
   std::array<std::array<double, 3>, 3> dThetaDl;
-  angleLengthDerivatives(eval.geometry, l, eval.angles[f], dThetaDl);
+  if (eval.geometry == Geometry::Euclidean) {
+    // Derivative cosine law without trigonometry: with 4A = 4 × area,
+    // ∂θ_i/∂l_i = 2 l_i / 4A and ∂θ_i/∂l_j = -(l_i² + l_j² - l_k²) / (l_j · 4A).
+    const double pa = l[1] + l[2] - l[0], pb = l[2] + l[0] - l[1], pc = l[0] + l[1] - l[2];
+    const double inverseArea4 = 1 / std::sqrt((l[0] + l[1] + l[2]) * pa * pb * pc);
+    const std::array<double, 3> sq{l[0] * l[0], l[1] * l[1], l[2] * l[2]};
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      dThetaDl[i][i] = 2 * l[i] * inverseArea4;
+      dThetaDl[i][j] = -(sq[i] + sq[j] - sq[k]) / l[j] * inverseArea4;
+      dThetaDl[i][k] = -(sq[i] + sq[k] - sq[j]) / l[k] * inverseArea4;
+    }
+  } else {
+    angleLengthDerivatives(eval.geometry, l, eval.angles[f], dThetaDl);
+  }
   // dLdu[c][b]: derivative of the length opposite corner c w.r.t. u at corner b.
   std::array<std::array<double, 3>, 3> dLdu{};
   for (int c = 0; c < 3; ++c) {
@@ -81,6 +155,47 @@ void faceAngleJacobian(const IntrinsicTriangulation& tri, const MetricEvaluation
       for (int c = 0; c < 3; ++c) s += dThetaDl[a][c] * dLdu[c][b];
       J[a][b] = s;
     }
+}
+
+double degenerationStep(const IntrinsicTriangulation& tri, const MetricEvaluation& start,
+                        const MetricEvaluation& trial) {
+  if (trial.invalidEdge >= 0 || !start.valid()) return 0;
+  auto margin = [&](const MetricEvaluation& eval, int f) {
+    const auto& fe = tri.faceEdges[f];
+    const double a = eval.edges[fe[0]].length, b = eval.edges[fe[1]].length,
+                 c = eval.edges[fe[2]].length;
+    return std::min({b + c - a, c + a - b, a + b - c}) / (a + b + c);
+  };
+  double step = 1;
+  for (int f = 0; f < tri.faceCount(); ++f) {
+    const double after = margin(trial, f);
+    if (after > 0) continue;
+    const double before = margin(start, f);
+    step = std::min(step, before / (before - after));
+  }
+  return step < 1 ? step : 0;
+}
+
+double faceAngleDerivative(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int f,
+                           int a, int b) {
+  if (eval.geometry != Geometry::Euclidean || a == b) {
+    std::array<std::array<double, 3>, 3> J;
+    faceAngleJacobian(tri, eval, f, J);
+    return J[a][b];
+  }
+  // u_b moves the two edges at corner b: the one opposite a and the one opposite c.
+  const int c = 3 - a - b;
+  const auto& fe = tri.faceEdges[f];
+  const double la = eval.edges[fe[a]].length, lb = eval.edges[fe[b]].length,
+               lc = eval.edges[fe[c]].length;
+  const double area4 =
+      std::sqrt((la + lb + lc) * (lb + lc - la) * (lc + la - lb) * (la + lb - lc));
+  auto dLength = [&](int edgeCorner) {  // ∂l/∂u_b of the edge opposite edgeCorner
+    const EdgeLength& el = eval.edges[fe[edgeCorner]];
+    return tri.edgeVertices[fe[edgeCorner]][0] == tri.faceVertices[f][b] ? el.dLength_dui
+                                                                          : el.dLength_duj;
+  };
+  return (2 * la * dLength(a) - (la * la + lc * lc - lb * lb) / lc * dLength(c)) / area4;
 }
 
 bool flippedEdgeLength(const IntrinsicTriangulation& tri, const MetricEvaluation& eval,
@@ -234,13 +349,16 @@ CirclePackingMetric initialMetric(const IntrinsicTriangulation& tri,
 
 std::vector<double> metricEdgeLengths(const IntrinsicTriangulation& tri,
                                       const CirclePackingMetric& metric) {
-  detail::MetricEvaluation eval;
-  detail::evaluateMetric(tri, metric, metric.u, eval);
-  if (eval.invalidEdge >= 0)
-    throw Error(ErrorCode::InvalidInput,
-                "edge " + std::to_string(eval.invalidEdge) + " has no valid length in this metric");
   std::vector<double> lengths(tri.edgeCount());
-  for (int e = 0; e < tri.edgeCount(); ++e) lengths[e] = eval.edges[e].length;
+  for (int e = 0; e < tri.edgeCount(); ++e) {
+    const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+    const EdgeLength l = edgeLength(metric.geometry, metric.u[a], metric.u[b], metric.eta[e],
+                                    metric.epsilon[a], metric.epsilon[b]);
+    if (!l.valid)
+      throw Error(ErrorCode::InvalidInput,
+                  "edge " + std::to_string(e) + " has no valid length in this metric");
+    lengths[e] = l.length;
+  }
   return lengths;
 }
 

@@ -109,6 +109,29 @@ TEST(DiskMap, IrregularMeshesNeverFlipFacesForAnyRobustScheme) {
   }
 }
 
+TEST(DiskMap, SliversAndSharpCornersConvergeWithoutFlippedFaces) {
+  // Meshes that made the flow stall or crawl: slivers at the rim of a jittered round disk
+  // (inversive distance), single-triangle corners of lopsided disks (tangential and Thurston:
+  // power-Delaunay flips never open such a corner for them).
+  struct Case {
+    TriMesh mesh;
+    Scheme scheme;
+  };
+  const Case cases[] = {{makeRoundDisk(39, 0.2, 42), Scheme::InversiveDistance},
+                        {makeLopsidedDisk(39, 0.2, 1), Scheme::Tangential},
+                        {makeLopsidedDisk(39, 0.2, 1), Scheme::Thurston},
+                        {makeLopsidedDisk(39, 0.2, 3), Scheme::Thurston}};
+  for (const Case& c : cases) {
+    DiskMapOptions options;
+    options.scheme = c.scheme;
+    const DiskMap map = computeDiskMap(c.mesh, options);
+    EXPECT_LE(map.flow.maxCurvatureError, 1e-10) << toString(c.scheme);
+    const DistortionStats stats = measureDistortion(c.mesh, map.uv);
+    EXPECT_EQ(stats.flippedFaces, 0) << toString(c.scheme);
+    EXPECT_LT(stats.boundaryRoundness, 1e-8) << toString(c.scheme);
+  }
+}
+
 TEST(DiskMap, NonDiskInputIsRejectedWithItsTopology) {
   try {
     computeDiskMap(makeIcosphere(1));

@@ -1,13 +1,24 @@
 // Ricci flow benchmark (run by hand, never in CI): Riemann disk maps of asymmetric disk meshes
-// for every scheme, against one sparse Cholesky factorisation of the same mesh's cotangent
-// Laplacian measured in the same run — the flow's cost as a multiple of that single solve.
+// for every scheme, against one sparse Cholesky factorisation (symbolic analysis + numeric
+// factorisation) of the same mesh's cotangent Laplacian measured in the same run — the flow's
+// cost as a multiple of that single solve is the headline figure.
+//
+//   confvis_bench_flow [--sizes 10k,100k,1m] [--schemes yamabe,inversive,...|all]
+//                      [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]
+//                      [--mesh lopsided|hemisphere|round] [--breakdown]
 #include <Eigen/SparseCholesky>
 
+#include <sys/resource.h>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/distortion.hpp"
@@ -22,17 +33,20 @@ double secondsSince(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Peak resident memory since the last reset, in MiB (Linux: VmHWM, reset via clear_refs).
+// Peak resident memory in MiB: getrusage's lifetime maximum, and VmHWM, which Linux lets us
+// reset (clear_refs) so that each run gets its own peak.
 void resetPeakMemory() { std::ofstream("/proc/self/clear_refs") << "5"; }
 double peakMemoryMiB() {
   std::ifstream status("/proc/self/status");
   for (std::string line; std::getline(status, line);)
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
-  return 0;
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
 }
 
-// One LDLᵀ (symbolic + numeric) of the cotangent Laplacian, pinned like the flow's system.
-double choleskySeconds(const TriMesh& mesh) {
+// The cotangent Laplacian of the mesh with vertex 0 pinned, as the flow's system is.
+Eigen::SparseMatrix<double> pinnedCotangentLaplacian(const TriMesh& mesh) {
   const auto tri = buildTriangulation(mesh);
   std::vector<Eigen::Triplet<double>> t;
   for (int f = 0; f < tri.faceCount(); ++f) {
@@ -51,46 +65,164 @@ double choleskySeconds(const TriMesh& mesh) {
   }
   Eigen::SparseMatrix<double> L(tri.vertexCount - 1, tri.vertexCount - 1);
   L.setFromTriplets(t.begin(), t.end());
-  double best = 1e30;
-  for (int rep = 0; rep < 3; ++rep) {
-    const auto start = Clock::now();
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver(L);
-    best = std::min(best, secondsSince(start));
-    if (solver.info() != Eigen::Success) std::fprintf(stderr, "baseline factorisation failed\n");
-  }
-  return best;
+  return L;
+}
+
+// One sparse Cholesky: Eigen's simplicial LDLᵀ, symbolic analysis (AMD ordering) + numeric
+// factorisation — the same factorisation the flow uses.
+double choleskySeconds(const Eigen::SparseMatrix<double>& L) {
+  const auto start = Clock::now();
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
+  solver.analyzePattern(L);
+  solver.factorize(L);
+  const double seconds = secondsSince(start);
+  if (solver.info() != Eigen::Success) std::fprintf(stderr, "baseline factorisation failed\n");
+  return seconds;
+}
+
+// "10k" → 10000, "1m" → 1000000, "1500" → 1500.
+int parseCount(std::string s) {
+  double scale = 1;
+  if (!s.empty() && (s.back() == 'k' || s.back() == 'K')) scale = 1e3, s.pop_back();
+  else if (!s.empty() && (s.back() == 'm' || s.back() == 'M')) scale = 1e6, s.pop_back();
+  return static_cast<int>(std::stod(s) * scale);
+}
+
+std::vector<std::string> splitList(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+[[noreturn]] void usage(int code) {
+  std::printf(
+      "usage: confvis_bench_flow [--sizes 10k,100k,1m | --with-1m] [--schemes yamabe,...|all]\n"
+      "                          [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]\n"
+      "                          [--mesh lopsided|hemisphere|round] [--breakdown]\n"
+      "Disk maps of disk meshes (default lopsided) of about the given vertex counts (default\n"
+      "10k,100k); seconds are the best of N runs (default 3), interleaved with the baseline's;\n"
+      "--breakdown prints where the flow's time went and its error history to stderr.\n");
+  std::exit(code);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<int> sides{100, 316};  // ≈10k and ≈100k vertices
-  if (argc > 1 && std::string(argv[1]) == "--with-1m") sides.push_back(1000);
-  std::printf("| vertices | scheme | iterations | flips | seconds | x Cholesky | peak MiB | max |K̄-K| | "
-              "σ-ratio p50 | p99 | flipped |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (int side : sides) {
-    const TriMesh mesh = makeLopsidedDisk(side, 0.2, 42);
-    const double cholesky = choleskySeconds(mesh);
-    std::printf("| %zu | *one cotangent-Laplacian LDLT* | | | %.3f | 1.0 | | | | | |\n",
-                mesh.n_vertices(), cholesky);
-    for (Scheme scheme : kAllSchemes) {
-      DiskMapOptions options;
-      options.scheme = scheme;
-      resetPeakMemory();
-      const auto start = Clock::now();
-      try {
-        const DiskMap map = computeDiskMap(mesh, options);
-        const double seconds = secondsSince(start);
-        const double peak = peakMemoryMiB();
-        const auto stats = measureDistortion(mesh, map.uv);
-        std::printf("| %zu | %s | %d | %d | %.3f | %.1f | %.0f | %.1e | %.4f | %.4f | %d |\n",
-                    mesh.n_vertices(), toString(scheme), map.flow.iterations, map.flow.flips,
-                    seconds, seconds / cholesky, peak, map.flow.maxCurvatureError, stats.ratioP50,
-                    stats.ratioP99, stats.flippedFaces);
-      } catch (const std::exception& e) {
-        std::printf("| %zu | %s | failed: %s |\n", mesh.n_vertices(), toString(scheme), e.what());
-      }
-      std::fflush(stdout);
+  std::vector<int> sizes{10000, 100000};
+  std::vector<Scheme> schemes(kAllSchemes.begin(), kAllSchemes.end());
+  FlipPolicy flips = FlipPolicy::Auto;
+  int repeat = 3;
+  double jitter = 0.2;
+  std::uint64_t seed = 42;
+  bool breakdown = false;
+  std::string shape = "lopsided";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") usage(0);
+    if (arg == "--breakdown") {
+      breakdown = true;
+      continue;
     }
+    if (arg == "--with-1m") {  // the older spelling of --sizes 10k,100k,1m
+      sizes = {10000, 100000, 1000000};
+      continue;
+    }
+    if (i + 1 >= argc) usage(2);
+    const std::string value = argv[++i];
+    if (arg == "--sizes") {
+      sizes.clear();
+      for (const auto& s : splitList(value)) sizes.push_back(parseCount(s));
+    } else if (arg == "--schemes") {
+      if (value != "all") {
+        schemes.clear();
+        for (const auto& s : splitList(value)) schemes.push_back(parseScheme(s));
+      }
+    } else if (arg == "--flips") {
+      flips = value == "on" ? FlipPolicy::On : value == "off" ? FlipPolicy::Off : FlipPolicy::Auto;
+    } else if (arg == "--repeat") {
+      repeat = std::max(1, std::atoi(value.c_str()));
+    } else if (arg == "--mesh") {
+      shape = value;
+      if (shape != "lopsided" && shape != "hemisphere" && shape != "round") usage(2);
+    } else if (arg == "--jitter") {
+      jitter = std::stod(value);
+    } else if (arg == "--seed") {
+      seed = std::strtoull(value.c_str(), nullptr, 10);
+    } else {
+      usage(2);
+    }
+  }
+  std::printf("| vertices | scheme | iterations | factorisations | flips | seconds | x Cholesky | "
+              "peak MiB | max abs(K̄-K) | σ-ratio p50 | p99 | flipped |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (int count : sizes) {
+    const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(count))));
+    const TriMesh mesh = shape == "hemisphere" ? makeHemisphere(side, jitter, seed)
+                         : shape == "round"    ? makeRoundDisk(side, jitter, seed)
+                                               : makeLopsidedDisk(side, jitter, seed);
+    const auto laplacian = pinnedCotangentLaplacian(mesh);
+    // Repeats interleave the baseline with the flows so both see the same machine load; each
+    // figure is the best of its repeats.
+    double cholesky = 1e30;
+    struct Result {
+      double seconds = 1e30, peak = 0;
+      DiskMap map;
+      std::string failure;
+    };
+    std::vector<Result> results(schemes.size());
+    for (int rep = 0; rep < repeat; ++rep) {
+      cholesky = std::min(cholesky, choleskySeconds(laplacian));
+      for (std::size_t k = 0; k < schemes.size(); ++k) {
+        DiskMapOptions options;
+        options.scheme = schemes[k];
+        options.flips = flips;
+        Result& result = results[k];
+        if (!result.failure.empty()) continue;
+        try {
+          resetPeakMemory();
+          const auto start = Clock::now();
+          DiskMap map = computeDiskMap(mesh, options);
+          const double seconds = secondsSince(start);
+          result.peak = std::max(result.peak, peakMemoryMiB());
+          if (seconds < result.seconds) {
+            result.seconds = seconds;
+            result.map = std::move(map);
+          }
+        } catch (const std::exception& e) {
+          result.failure = e.what();
+        }
+      }
+    }
+    std::printf("| %zu | *one cotangent-Laplacian LDLT* | | | | %.4f | 1.0 | | | | | |\n",
+                mesh.n_vertices(), cholesky);
+    for (std::size_t k = 0; k < schemes.size(); ++k) {
+      const Result& result = results[k];
+      const char* name = toString(schemes[k]);
+      if (!result.failure.empty()) {
+        std::printf("| %zu | %s | failed: %s |\n", mesh.n_vertices(), name, result.failure.c_str());
+        continue;
+      }
+      const DiskMap& map = result.map;
+      const auto stats = measureDistortion(mesh, map.uv);
+      std::printf("| %zu | %s | %d | %d | %d | %.4f | %.2f | %.0f | %.1e | %.4f | %.4f | %d |\n",
+                  mesh.n_vertices(), name, map.flow.iterations, map.flow.factorizations,
+                  map.flow.flips, result.seconds, result.seconds / cholesky, result.peak,
+                  map.flow.maxCurvatureError, stats.ratioP50, stats.ratioP99, stats.flippedFaces);
+      if (breakdown) {
+        const auto& t = map.flow.seconds;
+        std::fprintf(stderr,
+                     "  %s: evaluation %.4f assembly %.4f analysis %.4f factorisation %.4f "
+                     "solve %.4f (%d CG steps) flips %.4f, rest %.4f; errors",
+                     name, t.evaluation, t.assembly, t.analysis, t.factorization, t.solve,
+                     map.flow.cgIterations, t.flips,
+                     result.seconds - t.evaluation - t.assembly - t.analysis - t.factorization -
+                         t.solve - t.flips);
+        for (double e : map.flow.errorHistory) std::fprintf(stderr, " %.1e", e);
+        std::fprintf(stderr, "\n");
+      }
+    }
+    std::fflush(stdout);
   }
 }

@@ -12,7 +12,10 @@
 
 namespace confvis::conformal {
 
-enum class FlipPolicy { Off, On, Auto };  // Auto: retry with flips if the flow stalls
+// Auto: flips from the start where the target needs them (a boundary vertex in a single
+// triangle), else switched on mid-flow when steps degenerate triangles (no restart); only if
+// the flow still fails, a second run with flips throughout.
+enum class FlipPolicy { Off, On, Auto };
 
 struct DiskMapOptions {
   Scheme scheme = Scheme::Yamabe;

@@ -56,6 +56,10 @@ struct RicciFlowOptions {
   double tolerance = 1e-10;      // on max |K̄ - K|
   int maxIterations = 100;
   bool delaunayFlips = false;    // keep the triangulation (power) Delaunay by edge flips
+  // Without delaunayFlips: switch them on (from the current metric, no restart) when a Newton
+  // step is cut short by a degenerating triangle or the flow would stall, and from the start
+  // when the target needs an angle no triangle can have (a vertex in too few triangles).
+  bool flipsWhenStuck = false;
   // Called after each Newton iteration with (iteration, max curvature error).
   std::function<void(int, double)> onIteration;
 };
@@ -64,10 +68,22 @@ struct RicciFlowReport {
   int iterations = 0;
   double maxCurvatureError = 0;
   int flips = 0;
+  int flipsStartedAt = -1;       // Newton step (1-based) in which flips came on; 0: from the
+                                 // start; -1: never
   int stepHalvings = 0;          // total line-search reductions
-  int factorizations = 0;
-  int symbolicAnalyses = 0;
+  int factorizations = 0;        // numeric LDLᵀ factorisations of the Hessian
+  int symbolicAnalyses = 0;      // symbolic analyses (the first also orders the unknowns)
+  int cgIterations = 0;          // conjugate-gradient steps preconditioned by a frozen factor
   std::vector<double> errorHistory;
+  // Where the time went, in seconds.
+  struct Seconds {
+    double evaluation = 0;     // lengths, angles and curvature (line-search trials included)
+    double assembly = 0;       // Hessian values
+    double analysis = 0;       // fill-reducing ordering and symbolic analysis
+    double factorization = 0;  // numeric factorisations
+    double solve = 0;          // triangular solves and conjugate gradients
+    double flips = 0;          // Delaunay edge flips and pattern updates
+  } seconds;
 };
 
 // Runs the flow in place: on return metric.u realises `target` to options.tolerance (and, with
