@@ -43,8 +43,9 @@ double litFraction(const confvis::ImageRGBA& image, bool* allFinite) {
 
 TEST(CliWalk, MapFollowsTheHeadWithoutStallingFrames) {
   const fs::path out = scratch("walk");
-  // 10 frames at 2 fps of path time (paced, ~5 s): the head leaves the 5 cm radius at t = 1.5 s.
-  const CliRun run = runCli("walk --frames 10 --fps 2 --scale 0.02 --radius 0.05 "
+  // 32 frames at 8 fps of path time (paced, 4 s): the head leaves the 5 cm radius at t = 1.5 s
+  // (frame 12), leaving 2.5 s for the first re-bake (< 1 s on a loaded 2-core machine).
+  const CliRun run = runCli("walk --frames 32 --fps 8 --scale 0.02 --radius 0.05 "
                             "--bake-resolution 32 -o " + out.string());
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("re-bakes:"), std::string::npos) << run.output;
@@ -52,10 +53,10 @@ TEST(CliWalk, MapFollowsTheHeadWithoutStallingFrames) {
   nlohmann::json report;
   std::ifstream(out / "walk.json") >> report;
   const nlohmann::json& frames = report.at("frames");
-  ASSERT_EQ(frames.size(), 10u);
+  ASSERT_EQ(frames.size(), 32u);
   EXPECT_EQ(report.at("scene"), "checker-tunnel");
 
-  int referenceChanges = 0;
+  int referenceChanges = 0, framesDuringBake = 0;
   std::optional<glm::dvec3> requested;  // head position of the bake that runs
   glm::dvec3 previous = vec(frames[0]["map"]["reference"]);
   EXPECT_LT(glm::length(previous), 1e-9) << "the first map is baked around cave5's reference";
@@ -79,6 +80,7 @@ TEST(CliWalk, MapFollowsTheHeadWithoutStallingFrames) {
       EXPECT_LT(glm::length(reference - previous), 1e-12);
       if (i > 0) EXPECT_EQ(frame["map"]["generation"], frames[i - 1]["map"]["generation"]);
     }
+    if (frame["baking"] && !frame["bake_started"] && !swapped) ++framesDuringBake;
     if (frame["bake_started"]) {
       EXPECT_FALSE(requested.has_value()) << "one bake at a time";
       EXPECT_GT(frame["head_to_reference_m"].get<double>(), 0.05);
@@ -100,6 +102,8 @@ TEST(CliWalk, MapFollowsTheHeadWithoutStallingFrames) {
     EXPECT_GT(lit, 0.8) << "front wall mostly black";
   }
   EXPECT_GE(referenceChanges, 1) << run.output;
+  // A bake takes longer than one frame (1/8 s): some frames came while it ran and did not wait.
+  EXPECT_GE(framesDuringBake, 1) << run.output;
   EXPECT_GE(report["rebakes"]["started"].get<int>(), referenceChanges);
   EXPECT_EQ(report["rebakes"]["swapped_in"].get<int>(), referenceChanges);
   EXPECT_EQ(report["rebakes"]["failed"].get<int>(), 0);
