@@ -15,6 +15,7 @@
 #include "confvis/base/error.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "retarget_map_source.hpp"
+#include "shipped_files.hpp"
 
 namespace confvis::cli {
 namespace {
@@ -30,24 +31,6 @@ struct RenderArgs {
   double scale = 1.0;
   bool ambientOcclusion = false, quiet = false;
 };
-
-// The default display: configs/cave5.json beside the executable's build or install tree, or in
-// the source tree it was built from.
-fs::path defaultConfig() {
-  std::vector<fs::path> candidates;
-  std::error_code error;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    candidates.push_back(exe.parent_path() / "../configs/cave5.json");
-    candidates.push_back(exe.parent_path() / "../share/confvis/configs/cave5.json");
-  }
-  candidates.push_back(fs::path(CONFVIS_SOURCE_DIR) / "configs/cave5.json");
-  for (const fs::path& path : candidates)
-    if (fs::exists(path)) return fs::weakly_canonical(path);
-  throw Error(ErrorCode::FileNotFound,
-              "no display config given and the default configs/cave5.json was not found next to "
-              "the executable or in " CONFVIS_SOURCE_DIR);
-}
 
 VirtualCamera parseCamera(const std::string& text) {
   std::vector<double> values;
@@ -85,7 +68,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 int runRender(const RenderArgs& args) {
   const auto start = std::chrono::steady_clock::now();
-  const fs::path configPath = args.config.empty() ? defaultConfig() : fs::path(args.config);
+  const fs::path configPath = args.config.empty()
+                                  ? shippedFile("configs/cave5.json", "display config")
+                                  : fs::path(args.config);
   const DisplayConfig config = loadDisplayConfig(configPath);
 
   RenderSettings settings;

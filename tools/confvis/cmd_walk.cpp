@@ -1,0 +1,234 @@
+// confvis walk: the map following the head. Plays a recorded head path through a display,
+// re-bakes the conformal map in the background whenever the head strays from the current map's
+// reference point (MapFollower), and renders every wall of every frame through the map the
+// follower hands out for that frame: DIR/frame-NNNN/ (EXR + PNG per wall, overview) and
+// DIR/walk.json (per frame: time, head, the map's reference point and generation, bake state).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "backend_factory.hpp"
+#include "command.hpp"
+#include "confvis/api/map_follower.hpp"
+#include "confvis/backends/render_output.hpp"
+#include "confvis/base/atomic_file.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_display.hpp"
+#include "confvis/engine/scene_loader.hpp"
+#include "confvis/engine/tracker.hpp"
+#include "shipped_files.hpp"
+
+namespace confvis::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct WalkArgs {
+  std::string config, path, scene = "checker-tunnel", backend = "embree", output = "out/walk";
+  int frames = 0;  // 0: one pass of the path
+  int bakeResolution = 0;
+  double fps = 30.0, scale = 0.1, radius = 0.10, bakeEdgeLength = 0.0;
+  bool noPacing = false, quiet = false;
+};
+
+nlohmann::json toJson(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+nlohmann::json toJson(const glm::dquat& q) { return {q.w, q.x, q.y, q.z}; }
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string frameName(int index) {
+  char name[32];
+  std::snprintf(name, sizeof name, "frame-%04d", index);
+  return name;
+}
+
+// Every head position is a new config: the on-disk bake cache would only fill up.
+BakeFunction bakeFunction(const WalkArgs& args) {
+  BakeDisplayOptions options;
+  options.useCache = false;
+  if (args.bakeResolution > 0) options.resolution = args.bakeResolution;
+  if (args.bakeEdgeLength > 0.0) options.edgeLength = args.bakeEdgeLength;
+  return [options](const DisplayConfig& config, const glm::dvec3&) {
+    return bakeDisplay(config, options).map;
+  };
+}
+
+int runWalk(const WalkArgs& args) {
+  const auto start = Clock::now();
+  const fs::path configPath = args.config.empty()
+                                  ? shippedFile("configs/cave5.json", "display config")
+                                  : fs::path(args.config);
+  const fs::path pathFile = args.path.empty()
+                                ? shippedFile("configs/paths/cave-walk.csv", "--path")
+                                : fs::path(args.path);
+  const DisplayConfig config = loadDisplayConfig(configPath);
+  const RecordedPath path = RecordedPath::load(pathFile);
+  const int frameCount = args.frames > 0 ? args.frames
+                                         : std::max(1, static_cast<int>(std::ceil(
+                                                           path.duration() * args.fps)));
+
+  // The tracker reads the walk's own clock (frame time), so the frames are reproducible whatever
+  // the render speed; pacing below keeps that clock close to the wall clock.
+  double frameSeconds = path.keys().front().seconds;
+  RecordedPathTracker tracker(path, /*loop=*/true, [&frameSeconds] { return frameSeconds; });
+
+  std::unique_ptr<RenderBackend> backend = makeBackend(args.backend);
+  const Scene scene = sceneByNameOrFile(args.scene);
+  backend->setScene(scene);
+  if (!args.quiet)
+    std::fprintf(stderr, "walk: baking the first map of '%s'...\n", config.name.c_str());
+  MapFollower follower(config, bakeFunction(args), MapFollowerOptions{.radius = args.radius});
+  const double setupSeconds = secondsSince(start);
+
+  RenderSettings settings;
+  settings.mode = RenderMode::Conformal;
+  settings.eyes = {Eye::Center};
+  settings.resolutionScale = args.scale;
+  // The map's render config: the display with its reference at the map's (render_plan requires
+  // them to match), rebuilt only when a new map is swapped in.
+  DisplayConfig frameConfig = config;
+  std::uint64_t frameConfigGeneration = 0;
+
+  nlohmann::json frames = nlohmann::json::array(), errors = nlohmann::json::array();
+  int previousBakesStarted = 0;
+  const auto loopStart = Clock::now();
+  for (int index = 0; index < frameCount; ++index) {
+    const double walkSeconds = index / args.fps;
+    if (!args.noPacing)  // a live loop: frame i begins no earlier than i / fps after the first
+      std::this_thread::sleep_until(loopStart + std::chrono::duration_cast<Clock::duration>(
+                                                    std::chrono::duration<double>(walkSeconds)));
+    frameSeconds = path.keys().front().seconds + walkSeconds;
+    const HeadPose head = tracker.latest().value().head;
+    const FollowerFrame frame = follower.beginFrame(head);
+    const glm::dvec3 reference(frame.map->reference.x, frame.map->reference.y,
+                               frame.map->reference.z);
+    if (index == 0 || frame.generation != frameConfigGeneration) {
+      frameConfig = withReference(config, reference);
+      frameConfigGeneration = frame.generation;
+    }
+    const bool bakeStarted = follower.stats().bakesStarted > previousBakesStarted;
+    previousBakesStarted = follower.stats().bakesStarted;
+
+    // The centre eye at the tracked head; the virtual camera sits at the map's reference point,
+    // so the virtual world (camera + (p - reference)) stays put when the reference moves.
+    settings.head = head;
+    settings.camera.position = reference;
+    RenderResult result;
+    try {
+      result = backend->render(frameConfig, frame.map.get(), settings);
+    } catch (const Error& error) {
+      throw Error(error.code(), "frame " + std::to_string(index) + " (t = " +
+                                    std::to_string(frameSeconds) + " s): " + error.what());
+    }
+    const fs::path directory = fs::path(args.output) / frameName(index);
+    writeRenderOutput(directory, frameConfig, settings, result,
+                      {{"walk", {{"frame", index}, {"seconds", frameSeconds}}}});
+
+    for (const std::string& message : follower.takeErrors()) {
+      errors.push_back({{"frame", index}, {"message", message}});
+      std::fprintf(stderr, "walk: frame %d: re-bake failed, keeping the old map: %s\n", index,
+                   message.c_str());
+    }
+    frames.push_back({{"frame", index},
+                      {"seconds", frameSeconds},
+                      {"directory", directory.filename().string()},
+                      {"head", {{"position", toJson(head.position)},
+                                {"orientation", toJson(head.orientation)}}},
+                      {"map", {{"reference", toJson(reference)},
+                               {"generation", frame.generation},
+                               {"swapped", frame.swapped}}},
+                      {"head_to_reference_m", glm::length(head.position - reference)},
+                      {"bake_started", bakeStarted},
+                      {"baking", frame.baking}});
+    if (!args.quiet)
+      std::fprintf(stderr,
+                   "frame %d/%d  t %.2f s  head (%.2f, %.2f, %.2f)  map %llu around (%.2f, %.2f, "
+                   "%.2f)%s%s\n",
+                   index + 1, frameCount, frameSeconds, head.position.x, head.position.y,
+                   head.position.z, static_cast<unsigned long long>(frame.generation),
+                   reference.x, reference.y, reference.z, frame.swapped ? "  [swapped in]" : "",
+                   frame.baking ? (bakeStarted ? "  [re-bake started]" : "  [baking]") : "");
+  }
+
+  // No waiting for a running bake before the report: it is counted as still running.
+  const MapFollowerStats stats = follower.stats();
+  const int stillRunning = stats.bakesStarted - stats.bakesSucceeded - stats.bakesFailed;
+  nlohmann::json report = {
+      {"display", {{"name", config.name}, {"config", configPath.string()}}},
+      {"path", pathFile.string()},
+      {"scene", args.scene},
+      {"backend", backend->name()},
+      {"fps", args.fps},
+      {"radius_m", args.radius},
+      {"scale", args.scale},
+      {"paced", !args.noPacing},
+      {"frames", frames},
+      {"rebakes", {{"started", stats.bakesStarted},
+                   {"swapped_in", stats.bakesSucceeded},
+                   {"failed", stats.bakesFailed},
+                   {"running_at_end", stillRunning}}},
+      {"errors", errors},
+      {"timings", {{"setup_seconds", setupSeconds}, {"frames_seconds", secondsSince(loopStart)}}}};
+  writeTextAtomically(fs::path(args.output) / "walk.json", report.dump(2) + "\n");
+  std::printf("%s: %d frames of '%s' along %s -> %s; re-bakes: %d started, %d swapped in, %d "
+              "failed, %d still running\n",
+              config.name.c_str(), frameCount, scene.name.c_str(),
+              pathFile.filename().string().c_str(), args.output.c_str(), stats.bakesStarted,
+              stats.bakesSucceeded, stats.bakesFailed, stillRunning);
+  return 0;  // ~MapFollower still joins a running bake: bakes cannot be cancelled
+}
+
+const RegisterCommand registration{Command{
+    "walk",
+    "Walk a scene along a recorded head path; the conformal map follows the head (EXR + PNG "
+    "frames)",
+    [](CLI::App& sub) {
+      auto args = std::make_shared<WalkArgs>();
+      sub.add_option("config", args->config, "Display config; default: configs/cave5.json");
+      sub.add_option("--path", args->path,
+                     "Head path CSV (seconds,x,y,z,qw,qx,qy,qz); default: "
+                     "configs/paths/cave-walk.csv");
+      sub.add_option("--scene", args->scene,
+                     "Built-in scene (checker-sphere, checker-tunnel, graph) or an OBJ/glTF file")
+          ->capture_default_str();
+      sub.add_option("--frames", args->frames, "Frames to render; default: one pass of the path")
+          ->check(CLI::Range(1, 1000000));
+      sub.add_option("--fps", args->fps, "Frames per second of path time")
+          ->check(CLI::Range(0.01, 1000.0))
+          ->capture_default_str();
+      sub.add_option("--scale", args->scale, "Output resolution as a fraction of each wall's")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      sub.add_option("--radius", args->radius,
+                     "Metres the head may stray from the map's reference before a re-bake")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
+      sub.add_option("--bake-resolution", args->bakeResolution,
+                     "Cube texels per face of the baked maps; default: the config's")
+          ->check(CLI::Range(8, 4096));
+      sub.add_option("--bake-edge-length", args->bakeEdgeLength,
+                     "Mesh edge length of the bakes (metres); default: the config's")
+          ->check(CLI::PositiveNumber);
+      sub.add_option("--backend", args->backend, "Renderer")
+          ->check(CLI::IsMember(backendNames()))
+          ->capture_default_str();
+      sub.add_flag("--no-pacing", args->noPacing,
+                   "Render as fast as possible instead of frame i no earlier than i/fps seconds "
+                   "after the first (with it, bakes rarely finish within the walk)");
+      sub.add_option("-o,--output", args->output, "Output directory")->capture_default_str();
+      sub.add_flag("-q,--quiet", args->quiet, "No per-frame progress lines");
+      return [args] { return runWalk(*args); };
+    }}};
+
+}  // namespace
+}  // namespace confvis::cli
