@@ -8,7 +8,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -57,7 +56,8 @@ TEST(CliWalk, MapFollowsTheHeadWithoutStallingFrames) {
   EXPECT_EQ(report.at("scene"), "checker-tunnel");
 
   int referenceChanges = 0, framesDuringBake = 0;
-  std::optional<glm::dvec3> requested;  // head position of the bake that runs
+  bool bakeRunning = false;
+  glm::dvec3 requested(0.0);  // head position of the bake that runs
   glm::dvec3 previous = vec(frames[0]["map"]["reference"]);
   EXPECT_LT(glm::length(previous), 1e-9) << "the first map is baked around cave5's reference";
   for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -69,29 +69,32 @@ TEST(CliWalk, MapFollowsTheHeadWithoutStallingFrames) {
     if (swapped) {
       // The new map was baked around the head position where its bake started, and is used from
       // this frame on.
-      ASSERT_TRUE(requested.has_value());
-      EXPECT_LT(glm::length(reference - *requested), 1e-9);
+      ASSERT_TRUE(bakeRunning);
+      EXPECT_LT(glm::length(reference - requested), 1e-9);
       EXPECT_GT(glm::length(reference - previous), 0.05);
       EXPECT_EQ(frame["map"]["generation"], frames[i - 1]["map"]["generation"].get<int>() + 1);
-      requested.reset();
+      bakeRunning = false;
       ++referenceChanges;
     } else {
       // Frames before the swap (a bake running or not) keep rendering through the previous map.
       EXPECT_LT(glm::length(reference - previous), 1e-12);
-      if (i > 0) EXPECT_EQ(frame["map"]["generation"], frames[i - 1]["map"]["generation"]);
+      if (i > 0) {
+        EXPECT_EQ(frame["map"]["generation"], frames[i - 1]["map"]["generation"]);
+      }
     }
     if (frame["baking"] && !frame["bake_started"] && !swapped) ++framesDuringBake;
     if (frame["bake_started"]) {
-      EXPECT_FALSE(requested.has_value()) << "one bake at a time";
+      EXPECT_FALSE(bakeRunning) << "one bake at a time";
       EXPECT_GT(frame["head_to_reference_m"].get<double>(), 0.05);
       EXPECT_TRUE(frame["baking"]);
+      bakeRunning = true;
       requested = head;
     }
     previous = reference;
 
     // Every frame, before, during and after a re-bake, is a real image on every wall.
     const fs::path directory = out / frame["directory"].get<std::string>();
-    for (const char* wall : {"front", "left", "right", "floor", "ceiling"}) {
+    for (const char* wall : {"front", "left", "right", "floor", "back"}) {
       ASSERT_TRUE(fs::exists(directory / (std::string(wall) + ".exr"))) << wall;
       EXPECT_TRUE(fs::exists(directory / (std::string(wall) + ".png"))) << wall;
     }
