@@ -105,8 +105,10 @@ TEST(CliWalk, MapFollowsTheHeadWithoutStallingFrames) {
     EXPECT_GT(lit, 0.8) << "front wall mostly black";
   }
   EXPECT_GE(referenceChanges, 1) << run.output;
-  // A bake takes longer than one frame (1/8 s): some frames came while it ran and did not wait.
-  EXPECT_GE(framesDuringBake, 1) << run.output;
+  // How many frames came while a bake ran depends on the machine's speed (a 20 cm bake can
+  // finish within one frame), so it is recorded, not asserted; that frames never wait for a bake
+  // is asserted deterministically by MapFollower's gated-bake tests.
+  RecordProperty("frames_during_bake", framesDuringBake);
   EXPECT_GE(report["rebakes"]["started"].get<int>(), referenceChanges);
   EXPECT_EQ(report["rebakes"]["swapped_in"].get<int>(), referenceChanges);
   EXPECT_EQ(report["rebakes"]["failed"].get<int>(), 0);
