@@ -158,14 +158,19 @@ TEST(RicciFlow, GaussBonnetViolationIsRejectedBeforeFlowing) {
   EXPECT_THROW(runRicciFlow(tri, hyperbolic, hyperbolicTarget), Error);
 }
 
+// The corner (1, -1) of makeGridDisk's square grid (in a single triangle), or -1.
+int gridCornerIndex(const TriMesh& mesh) {
+  for (auto v : mesh.vertices())
+    if (mesh.point(v)[0] == 1.0 && mesh.point(v)[1] == -1.0) return v.idx();
+  return -1;
+}
+
 TEST(RicciFlow, UnreachableTargetGivesAClearErrorAndNoNaN) {
   // Corner vertex (n, 0) of this grid lies in a single triangle: curvature 0 there needs a
   // straight angle, i.e. a degenerate triangle. The flow must stop with a reason, not NaN.
   TriMesh mesh = makeGridDisk(4);
   auto tri = buildTriangulation(mesh);
-  int corner = -1;
-  for (auto v : mesh.vertices())
-    if (mesh.point(v)[0] == 1.0 && mesh.point(v)[1] == -1.0) corner = v.idx();
+  const int corner = gridCornerIndex(mesh);
   ASSERT_GE(corner, 0);
   int cornerFaces = 0;
   for (const auto& f : tri.faceVertices)
@@ -264,9 +269,7 @@ TEST(RicciFlow, FlipsWhenStuckStartAtOnceWhereAnAngleIsOutOfReach) {
   // The grid corner of UnreachableTargetGivesAClearErrorAndNoNaN: one triangle, target angle π.
   TriMesh mesh = makeGridDisk(4);
   auto tri = buildTriangulation(mesh);
-  int corner = -1;
-  for (auto v : mesh.vertices())
-    if (mesh.point(v)[0] == 1.0 && mesh.point(v)[1] == -1.0) corner = v.idx();
+  const int corner = gridCornerIndex(mesh);
   ASSERT_GE(corner, 0);
   auto target = roundBoundaryTarget(tri);
   const double moved = target[corner];
