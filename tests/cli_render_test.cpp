@@ -4,8 +4,6 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -14,31 +12,15 @@
 #include "confvis/base/cube_map.hpp"
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/png_io.hpp"
+#include "cli_test_support.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CliRun {
-  int exitCode;
-  std::string output;  // stdout and stderr together
-};
-
-CliRun runCli(const std::string& args) {
-  const std::string command = std::string(CONFVIS_CLI_PATH) + " " + args + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-  const int status = pipe ? pclose(pipe) : -1;
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("confvis_render_" + std::to_string(getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+using confvis::testing::CliRun;
+using confvis::testing::runCli;
+using confvis::testing::scratch;
 
 std::string config(const std::string& name) {
   return std::string(CONFVIS_SOURCE_DIR) + "/configs/" + name + ".json";
@@ -46,6 +28,23 @@ std::string config(const std::string& name) {
 
 // Walls of the shipped CAVEs are 1920 px: this scale gives 48 px test images.
 const std::string kSmall = " --scale 0.025 -q";
+
+// The missing ceiling's green on a side wall: green pixels in the top quarter and in the lower
+// half of the image.
+struct GreenBands {
+  std::size_t top = 0, lower = 0;
+};
+GreenBands ceilingGreenBands(const confvis::ImageRGBA& wall) {
+  GreenBands bands;
+  for (int y = 0; y < wall.height; ++y)
+    for (int x = 0; x < wall.width; ++x) {
+      const float* p = wall.at(x, y);
+      const bool green = p[1] > 0.8f && p[0] < 0.2f && p[2] < 0.2f;
+      if (green && y < wall.height / 4) ++bands.top;
+      if (green && y >= wall.height / 2) ++bands.lower;
+    }
+  return bands;
+}
 
 // Fraction of the pixels in the `size`-square at (x0, y0) (default: the whole image) that have
 // colour (r, g, b).
@@ -154,14 +153,7 @@ TEST(CliRender, ConformalModeReadsABakedMapDirectory) {
                             " --wall front -o " + out.string() + kSmall);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const confvis::ImageRGBA front = confvis::readExr(out / "front.exr");
-  std::size_t topGreen = 0, lowerGreen = 0;
-  for (int y = 0; y < front.height; ++y)
-    for (int x = 0; x < front.width; ++x) {
-      const float* p = front.at(x, y);
-      const bool green = p[1] > 0.8f && p[0] < 0.2f && p[2] < 0.2f;
-      if (green && y < front.height / 4) ++topGreen;
-      if (green && y >= front.height / 2) ++lowerGreen;
-    }
+  const auto [topGreen, lowerGreen] = ceilingGreenBands(front);
   EXPECT_GT(topGreen, 48u * 12u / 5u);
   EXPECT_EQ(lowerGreen, 0u);
 }
@@ -184,14 +176,7 @@ TEST(CliRender, WithoutConfigRendersTheFiveSidedCaveConformally) {
   EXPECT_TRUE(fs::exists(out / "overview.png"));
   EXPECT_FALSE(fs::is_empty(cache)) << "the bake was not cached";
   const confvis::ImageRGBA front = confvis::readExr(out / "front.exr");
-  std::size_t topGreen = 0, lowerGreen = 0;
-  for (int y = 0; y < front.height; ++y)
-    for (int x = 0; x < front.width; ++x) {
-      const float* p = front.at(x, y);
-      const bool green = p[1] > 0.8f && p[0] < 0.2f && p[2] < 0.2f;
-      if (green && y < front.height / 4) ++topGreen;
-      if (green && y >= front.height / 2) ++lowerGreen;
-    }
+  const auto [topGreen, lowerGreen] = ceilingGreenBands(front);
   EXPECT_GT(topGreen, static_cast<std::size_t>(front.width) * front.height / 40) << run.output;
   EXPECT_EQ(lowerGreen, 0u);
 }
@@ -220,6 +205,20 @@ TEST(CliRender, BadInputGivesOneClearErrorAndNonZeroExit) {
   expectError("/nonexistent/display.json" + out, "/nonexistent/display.json");
   expectError(cave6 + " --backend optix" + out, "optix");
   expectError(cave6 + " --spp 0" + out, "spp");
+}
+
+// A `confvis bake` directory carries the reference point it was baked around (bake.json): a map
+// baked for a moved head must be refused for the display's own reference, not used silently.
+TEST(CliRender, BakedMapOfAnotherReferencePointIsRefused) {
+  const fs::path baked = scratch("baked-moved");
+  const CliRun bake = runCli("bake " + config("cave5") + " -o " + baked.string() +
+                             " --no-cache --resolution 32 --reference 0.3,0,0 -q");
+  ASSERT_EQ(bake.exitCode, 0) << bake.output;
+  const CliRun run =
+      runCli("render " + config("cave5") + " --map " + baked.string() + " -o " +
+             scratch("moved-out").string() + kSmall);
+  EXPECT_NE(run.exitCode, 0);
+  EXPECT_NE(run.output.find("baked around (0.3"), std::string::npos) << run.output;
 }
 
 TEST(CliRender, HasHelp) {

@@ -2,6 +2,7 @@
 
 #include "confvis/base/cube_map.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_files.hpp"
 
 namespace confvis {
 
@@ -10,6 +11,9 @@ RetargetMap readRetargetMapDirectory(const std::filesystem::path& directory,
   if (!std::filesystem::is_directory(directory))
     throw Error(ErrorCode::FileNotFound,
                 "baked map directory '" + directory.string() + "' does not exist");
+  // A `confvis bake` directory: its own loader checks every file against bake.json and takes
+  // the reference point the map was baked around from it.
+  if (std::filesystem::exists(directory / "bake.json")) return loadBakeDirectory(directory).map;
   for (const char* name : {"ray.exr", "geom.exr"})
     if (!std::filesystem::exists(directory / name))
       throw Error(ErrorCode::FileNotFound, "baked map directory '" + directory.string() +
