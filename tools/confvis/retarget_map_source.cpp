@@ -18,11 +18,8 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
   BakeDisplayOptions options;
   options.showProgress = showProgress;
   BakedDisplay baked = bakeDisplay(config, options);
-  std::string origin = baked.fromCache ? "baked (cache " + baked.cacheEntry.string() + ")"
-                                       : "baked now" + (baked.cacheEntry.empty()
-                                                            ? std::string()
-                                                            : " (cached in " +
-                                                                  baked.cacheEntry.string() + ")");
+  std::string origin = baked.fromCache ? "baked earlier" : "baked now";
+  if (!baked.cacheEntry.empty()) origin += " (cache " + baked.cacheEntry.string() + ")";
   return {std::move(baked.map), std::move(origin)};
 }
 
