@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "direction_table.hpp"
 #include "sampling.hpp"
 
 namespace confvis::embree {
@@ -22,6 +23,16 @@ std::uint32_t pixelSeed(const TileJob& job, int x, int y) {
   return hashU32(job.seed ^ hashU32(static_cast<std::uint32_t>(y) * 0x9e3779b1u +
                                     static_cast<std::uint32_t>(x)));
 }
+
+}  // namespace
+
+glm::dvec2 samplePosition(const TileJob& job, int x, int y, int sample) {
+  const glm::dvec2 offset = stratifiedSample(sample, job.samplesPerPixel, pixelSeed(job, x, y));
+  return {(x + offset.x) * job.pixelToWall.x, (y + offset.y) * job.pixelToWall.y};
+}
+
+namespace {
+
 
 void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job, int x0,
                 int y0, ImageRGBA& image, RayCounters& counters) {
@@ -40,9 +51,13 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
       for (int sample = 0; sample < job.samplesPerPixel; ++sample) {
         std::array<std::uint32_t, kPacketSize> sampleSeeds{};
         for (int lane = 0; lane < count; ++lane) {
-          const glm::dvec2 offset = stratifiedSample(sample, job.samplesPerPixel, seeds[lane]);
-          rays.make((x + lane + offset.x) * job.pixelToWall.x, (y + offset.y) * job.pixelToWall.y,
-                    paths[lane]);
+          if (job.directions) {
+            rays.makeCentre(job.directions->at(x + lane, y, sample), paths[lane]);
+          } else {
+            const glm::dvec2 offset = stratifiedSample(sample, job.samplesPerPixel, seeds[lane]);
+            rays.make((x + lane + offset.x) * job.pixelToWall.x,
+                      (y + offset.y) * job.pixelToWall.y, paths[lane]);
+          }
           sampleSeeds[lane] = hashU32(seeds[lane] + static_cast<std::uint32_t>(sample));
         }
         cameraRays += tracePaths(scene.handle(), paths.data(), count, hits);
