@@ -173,7 +173,8 @@ int main(int argc, char** argv) {
     const double rays = plainResult.stats["camera_rays"].get<double>();
     const double plainRate = rays / plainSeconds, conformalRate = rays / conformalSeconds;
     const double rawRate = static_cast<double>(raw.rays) / rawSeconds;
-    std::printf("\nplain      %8.4f s  %7.2f Mrays/s  (%.0f rays)\n", plainSeconds, plainRate * 1e-6, rays);
+    std::printf("\nplain      %8.4f s  %7.2f Mrays/s  (%.0f rays, %.0f retraced)\n", plainSeconds,
+                plainRate * 1e-6, rays, plainResult.stats["retraced_rays"].get<double>());
     std::printf("conformal  %8.4f s  %7.2f Mrays/s  conformal/plain time %.3f (goal <= 1.05)\n",
                 conformalSeconds, conformalRate * 1e-6, conformalSeconds / plainSeconds);
     std::printf("raw rtcIntersect8 %8.4f s  %7.2f Mrays/s  plain %.0f %%, conformal %.0f %% of "

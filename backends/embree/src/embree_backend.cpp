@@ -207,6 +207,7 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
                   {"direction_table_samples", tableSamples},
                   {"camera_rays", cameraRays},
                   {"occlusion_rays", occlusionRays},
+                  {"retraced_rays", counters.retraced.load()},
                   {"rays_per_second",
                    seconds > 0.0 ? static_cast<double>(cameraRays + occlusionRays) / seconds : 0.0},
                   {"images", perImage}};

@@ -42,7 +42,7 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
   std::array<std::uint32_t, kPacketSize> seeds{};
   std::array<glm::vec3, kPacketSize> colours{};
   PacketHits hits;
-  std::uint64_t cameraRays = 0, occlusionRays = 0;
+  std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; x += kPacketSize) {
       const int count = std::min(kPacketSize, x1 - x);
@@ -61,6 +61,7 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
           sampleSeeds[lane] = hashU32(seeds[lane] + static_cast<std::uint32_t>(sample));
         }
         cameraRays += tracePaths(scene.handle(), paths.data(), count, hits);
+        retraced += static_cast<std::uint64_t>(hits.retraced);
         occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
         for (int lane = 0; lane < count; ++lane)
           if (hits.hit[lane]) sum[lane] += glm::vec4(colours[lane], 1.0f);
@@ -74,6 +75,7 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
   }
   counters.camera += cameraRays;
   counters.occlusion += occlusionRays;
+  counters.retraced += retraced;
 }
 
 }  // namespace

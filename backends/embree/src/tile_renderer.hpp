@@ -17,6 +17,7 @@ class DirectionTable;
 struct RayCounters {
   std::atomic<std::uint64_t> camera{0};     // primary rays (one per path segment traced)
   std::atomic<std::uint64_t> occlusion{0};  // ambient-occlusion rays
+  std::atomic<std::uint64_t> retraced{0};   // camera rays traced again (see tracePaths)
 };
 
 struct TileJob {
