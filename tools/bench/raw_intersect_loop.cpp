@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "confvis/engine/view.hpp"
@@ -13,7 +14,7 @@ namespace confvis::bench {
 
 RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& config,
                                double scale) {
-  constexpr int kTile = 16;
+  constexpr int kTile = 16;  // the renderer's default tile (EmbreeOptions::tileSize)
   std::atomic<std::uint64_t> rays{0}, hits{0};
   const auto start = std::chrono::steady_clock::now();
   for (const Wall& wall : config.walls) {
@@ -23,41 +24,52 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
     const double sx = static_cast<double>(wall.width) / width;
     const double sy = static_cast<double>(wall.height) / height;
     const glm::vec3 origin(view.eye_position);
+    // The direction is affine in the wall-pixel position; like the renderer's plain rays
+    // (CameraRays), evaluate it in float and normalise per ray.
+    const glm::dvec3 base = view.rayDirection(0.0, 0.0);
+    const glm::vec3 directionBase(base);
+    const glm::vec3 stepX(view.rayDirection(1.0, 0.0) - base);
+    const glm::vec3 stepY(view.rayDirection(0.0, 1.0) - base);
     const int across = (width + kTile - 1) / kTile, tiles = across * ((height + kTile - 1) / kTile);
-    tbb::parallel_for(0, tiles, [&](int tile) {
-      const int x0 = (tile % across) * kTile, y0 = (tile / across) * kTile;
+    // The renderer's layout: tiles in parallel, within a tile rows of 8-pixel packets.
+    tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
       context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
       std::uint64_t tileRays = 0, tileHits = 0;
-      for (int y = y0; y < std::min(y0 + kTile, height); ++y)
-        for (int x = x0; x < std::min(x0 + kTile, width); x += 8) {
-          alignas(32) int valid[8];
-          alignas(32) RTCRayHit8 rh;
-          for (int lane = 0; lane < 8; ++lane) {
-            valid[lane] = x + lane < width ? -1 : 0;
-            const glm::vec3 d(glm::normalize(view.rayDirection((x + lane + 0.5) * sx, (y + 0.5) * sy)));
-            rh.ray.org_x[lane] = origin.x;
-            rh.ray.org_y[lane] = origin.y;
-            rh.ray.org_z[lane] = origin.z;
-            rh.ray.dir_x[lane] = d.x;
-            rh.ray.dir_y[lane] = d.y;
-            rh.ray.dir_z[lane] = d.z;
-            rh.ray.tnear[lane] = 0.0f;
-            rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
-            rh.ray.time[lane] = 0.0f;
-            rh.ray.mask[lane] = ~0u;
-            rh.ray.id[lane] = static_cast<unsigned>(lane);
-            rh.ray.flags[lane] = 0;
-            rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-          }
-          rtcIntersect8(valid, scene.handle(), &context, &rh);
-          for (int lane = 0; lane < 8; ++lane)
-            if (valid[lane]) {
-              ++tileRays;
-              tileHits += rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
+      for (int tile = r.begin(); tile != r.end(); ++tile) {
+        const int x0 = (tile % across) * kTile, y0 = (tile / across) * kTile;
+        for (int y = y0; y < std::min(y0 + kTile, height); ++y)
+          for (int x = x0; x < std::min(x0 + kTile, width); x += 8) {
+            alignas(32) int valid[8];
+            alignas(32) RTCRayHit8 rh;
+            const auto py = static_cast<float>((y + 0.5) * sy);
+            for (int lane = 0; lane < 8; ++lane) {
+              valid[lane] = x + lane < std::min(x0 + kTile, width) ? -1 : 0;
+              const auto px = static_cast<float>((x + lane + 0.5) * sx);
+              const glm::vec3 d = glm::normalize(directionBase + px * stepX + py * stepY);
+              rh.ray.org_x[lane] = origin.x;
+              rh.ray.org_y[lane] = origin.y;
+              rh.ray.org_z[lane] = origin.z;
+              rh.ray.dir_x[lane] = d.x;
+              rh.ray.dir_y[lane] = d.y;
+              rh.ray.dir_z[lane] = d.z;
+              rh.ray.tnear[lane] = 0.0f;
+              rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
+              rh.ray.time[lane] = 0.0f;
+              rh.ray.mask[lane] = ~0u;
+              rh.ray.id[lane] = static_cast<unsigned>(lane);
+              rh.ray.flags[lane] = 0;
+              rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
             }
-        }
+            rtcIntersect8(valid, scene.handle(), &context, &rh);
+            for (int lane = 0; lane < 8; ++lane)
+              if (valid[lane]) {
+                ++tileRays;
+                tileHits += rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
+              }
+          }
+      }
       rays += tileRays;
       hits += tileHits;
     });

@@ -46,6 +46,15 @@ class CameraRays {
 
   // The path through pixel-space point (px, py) of the wall (see WallView::rayDirection).
   void make(double px, double py, RayPath& path) const;
+  // Conformal centre eye only (centreEyeConformal()): the path for a sample whose map direction
+  // F (unnormalised, zero = unlit) is already known; the same path make() builds from it.
+  void makeCentre(const glm::vec3& mapDirection, RayPath& path) const {
+    path.vertexCount = 1;
+    path.vertices[0] = placedEye_;
+    path.lit = mapDirection != glm::vec3(0.0f);
+    if (path.lit) path.tail = glm::normalize(rotationF_ * mapDirection);
+  }
+  bool centreEyeConformal() const { return warp_ && eyeAtReference_; }
 
  private:
   glm::vec3 place(const glm::dvec3& physicalPoint) const;

@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "camera_rays.hpp"
+#include "direction_table.hpp"
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/embree/embree_device.hpp"
 #include "confvis/backends/embree/embree_scene.hpp"
@@ -24,27 +25,71 @@ struct EmbreeBackend::Impl {
 
   // The map seen from `wall` (see WallMapGrid), built once per map, wall and output size.
   const WallMapGrid& wallGrid(const ConformalWarp& warp, std::uint64_t mapFingerprint,
-                                      const Wall& wall, double scale) {
-    const double spacing = WallMapGrid::spacingFor(wall, warp.reference(),
-                                                           warp.map().resolution(), scale);
+                              const Wall& wall, double scale) {
+    const std::uint64_t key = gridKey(warp, mapFingerprint, wall, scale);
+    auto found = grids.find(key);
+    if (found != grids.end()) return *found->second;
+    if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
+    auto grid = std::make_unique<WallMapGrid>(warp, wall, spacingFor(warp, wall, scale));
+    return *grids.emplace(key, std::move(grid)).first->second;
+  }
+
+  // The centre-eye directions of one image (see DirectionTable), or null. Built on the second
+  // render of the same image: a one-shot render would pay a full map lookup per sample for the
+  // table on top of the frame. Bounded to kMaxTableSamples in all; `buildSeconds` accumulates
+  // the build time.
+  const embree::DirectionTable* directionTable(const WallMapGrid& grid, std::uint64_t gridKey,
+                                               const embree::TileJob& job, double& buildSeconds) {
+    std::uint64_t key = gridKey;
+    for (int value : {job.width, job.height, job.samplesPerPixel, static_cast<int>(job.seed)})
+      key = mixHash(key, static_cast<double>(value));
+    TableEntry& entry = tables[key];
+    if (entry.table || ++entry.renders < 2) return entry.table.get();
+    const std::size_t samples = static_cast<std::size_t>(job.width) *
+                                static_cast<std::size_t>(job.height) *
+                                static_cast<std::size_t>(job.samplesPerPixel);
+    if (samples > kMaxTableSamples) return nullptr;
+    if (tableSamples + samples > kMaxTableSamples) {  // make room: drop every built table
+      for (auto& [k, other] : tables) other.table.reset();
+      tableSamples = 0;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    entry.table = std::make_unique<embree::DirectionTable>(grid, job);
+    buildSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    tableSamples += samples;
+    return entry.table.get();
+  }
+
+  static double spacingFor(const ConformalWarp& warp, const Wall& wall, double scale) {
+    return WallMapGrid::spacingFor(wall, warp.reference(), warp.map().resolution(), scale);
+  }
+
+  static std::uint64_t gridKey(const ConformalWarp& warp, std::uint64_t mapFingerprint,
+                               const Wall& wall, double scale) {
     std::uint64_t key = mapFingerprint;
     for (const glm::dvec3& corner : {wall.lowerLeft, wall.lowerRight, wall.upperLeft})
       for (int i = 0; i < 3; ++i) key = mixHash(key, corner[i]);
     for (double value : {wall.bezel.left, wall.bezel.right, wall.bezel.bottom, wall.bezel.top,
                          static_cast<double>(wall.width), static_cast<double>(wall.height),
-                         spacing})
+                         spacingFor(warp, wall, scale)})
       key = mixHash(key, value);
-    auto found = grids.find(key);
-    if (found != grids.end()) return *found->second;
-    if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
-    auto grid = std::make_unique<WallMapGrid>(warp, wall, spacing);
-    return *grids.emplace(key, std::move(grid)).first->second;
+    return key;
   }
+
+  // About 48M samples (576 MB): five 1920^2 walls at 2 spp, or one frame's worth of a large
+  // display at 1 spp.
+  static constexpr std::size_t kMaxTableSamples = std::size_t{48} << 20;
+  struct TableEntry {
+    int renders = 0;
+    std::unique_ptr<embree::DirectionTable> table;
+  };
 
   EmbreeOptions options;
   EmbreeDevice device;
   std::unique_ptr<EmbreeScene> scene;
   std::map<std::uint64_t, std::unique_ptr<WallMapGrid>> grids;
+  std::map<std::uint64_t, TableEntry> tables;
+  std::size_t tableSamples = 0;  // held by `tables`
 };
 
 EmbreeBackend::EmbreeBackend(const EmbreeOptions& options)
@@ -77,8 +122,10 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
     for (const PlannedImage& image : plan.images)
       impl_->wallGrid(*warp, mapFingerprint, *image.view.wall, settings.resolutionScale);
   }
-  const double mapSetupSeconds =
+  double mapBuildSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
+  std::uint64_t tableSamples = 0;  // camera samples whose map direction came from a table
+  double tableBuildSeconds = 0.0;  // inside the render loop, but not rendering
 
   const EmbreeScene& scene = *impl_->scene;
   embree::TileJob job;
@@ -108,17 +155,25 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < plan.images.size(); ++i) {
     const PlannedImage& planned = plan.images[i];
+    const Wall& wall = *planned.view.wall;
+    const WallMapGrid* grid =
+        warp ? &impl_->wallGrid(*warp, mapFingerprint, wall, settings.resolutionScale) : nullptr;
     const embree::CameraRays rays =
-        warp ? embree::CameraRays(planned.view, settings.camera, *warp,
-                                  impl_->wallGrid(*warp, mapFingerprint, *planned.view.wall,
-                                                  settings.resolutionScale),
-                                  settings.stereoRays, impl_->options.curvedRaySegments)
+        warp ? embree::CameraRays(planned.view, settings.camera, *warp, *grid, settings.stereoRays,
+                                  impl_->options.curvedRaySegments)
              : embree::CameraRays(planned.view, settings.camera, config.reference);
     job.width = planned.width;
     job.height = planned.height;
-    job.pixelToWall = {static_cast<double>(planned.view.wall->width) / planned.width,
-                       static_cast<double>(planned.view.wall->height) / planned.height};
+    job.pixelToWall = {static_cast<double>(wall.width) / planned.width,
+                       static_cast<double>(wall.height) / planned.height};
     job.seed = static_cast<std::uint32_t>(planned.wallIndex * 3 + static_cast<int>(planned.eye));
+    job.directions = nullptr;
+    if (rays.centreEyeConformal()) {
+      job.directions = impl_->directionTable(
+          *grid, Impl::gridKey(*warp, mapFingerprint, wall, settings.resolutionScale), job,
+          tableBuildSeconds);
+      if (job.directions) tableSamples += job.directions->sampleCount();
+    }
     WallImage out;
     out.wall = planned.view.wall->name;
     out.eye = planned.eye;
@@ -134,7 +189,9 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
     result.images.push_back(std::move(out));
   }
   const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
+      tableBuildSeconds;
+  mapBuildSeconds += tableBuildSeconds;
   progress.finish();
   impl_->device.check("rendering");
 
@@ -146,9 +203,11 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
                   {"scene_triangles", scene.scene().triangleCount()},
                   {"bvh_build_seconds", scene.buildSeconds()},
                   {"render_seconds", seconds},
-                  {"map_setup_seconds", mapSetupSeconds},
+                  {"map_build_seconds", mapBuildSeconds},
+                  {"direction_table_samples", tableSamples},
                   {"camera_rays", cameraRays},
                   {"occlusion_rays", occlusionRays},
+                  {"retraced_rays", counters.retraced.load()},
                   {"rays_per_second",
                    seconds > 0.0 ? static_cast<double>(cameraRays + occlusionRays) / seconds : 0.0},
                   {"images", perImage}};

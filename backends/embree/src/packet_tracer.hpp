@@ -20,10 +20,15 @@ struct PacketHits {
   std::array<glm::vec2, kPacketSize> barycentrics{};
   std::array<glm::vec3, kPacketSize> geometricNormal{}, point{};
   std::array<glm::vec3, kPacketSize> direction{};  // unit direction of the segment that hit
+  int retraced = 0;  // lanes traced a second time (see tracePaths)
 };
 
 // Traces `count` (<= 8) paths: every lane's segments in order until one hits. Unlit paths are
-// not traced. Returns the number of rays cast (one per lane and segment).
+// not traced. A lane that misses while its packet neighbours (both, or the only one) hit is
+// traced once more with its tail turned by 1e-5 rad: Embree's robust mode closes shared edges,
+// but a ray exactly through a shared vertex can still slip between the triangles around it
+// (hits.retraced counts these). Returns the number of rays cast (one per lane and segment,
+// retries included).
 std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, PacketHits& hits);
 
 struct OcclusionPacket {

@@ -6,6 +6,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "direction_table.hpp"
 #include "sampling.hpp"
 
 namespace confvis::embree {
@@ -23,6 +24,16 @@ std::uint32_t pixelSeed(const TileJob& job, int x, int y) {
                                     static_cast<std::uint32_t>(x)));
 }
 
+}  // namespace
+
+glm::dvec2 samplePosition(const TileJob& job, int x, int y, int sample) {
+  const glm::dvec2 offset = stratifiedSample(sample, job.samplesPerPixel, pixelSeed(job, x, y));
+  return {(x + offset.x) * job.pixelToWall.x, (y + offset.y) * job.pixelToWall.y};
+}
+
+namespace {
+
+
 void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job, int x0,
                 int y0, ImageRGBA& image, RayCounters& counters) {
   const int x1 = std::min(x0 + job.tileSize, job.width);
@@ -31,7 +42,7 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
   std::array<std::uint32_t, kPacketSize> seeds{};
   std::array<glm::vec3, kPacketSize> colours{};
   PacketHits hits;
-  std::uint64_t cameraRays = 0, occlusionRays = 0;
+  std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; x += kPacketSize) {
       const int count = std::min(kPacketSize, x1 - x);
@@ -40,12 +51,17 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
       for (int sample = 0; sample < job.samplesPerPixel; ++sample) {
         std::array<std::uint32_t, kPacketSize> sampleSeeds{};
         for (int lane = 0; lane < count; ++lane) {
-          const glm::dvec2 offset = stratifiedSample(sample, job.samplesPerPixel, seeds[lane]);
-          rays.make((x + lane + offset.x) * job.pixelToWall.x, (y + offset.y) * job.pixelToWall.y,
-                    paths[lane]);
+          if (job.directions) {
+            rays.makeCentre(job.directions->at(x + lane, y, sample), paths[lane]);
+          } else {
+            const glm::dvec2 offset = stratifiedSample(sample, job.samplesPerPixel, seeds[lane]);
+            rays.make((x + lane + offset.x) * job.pixelToWall.x,
+                      (y + offset.y) * job.pixelToWall.y, paths[lane]);
+          }
           sampleSeeds[lane] = hashU32(seeds[lane] + static_cast<std::uint32_t>(sample));
         }
         cameraRays += tracePaths(scene.handle(), paths.data(), count, hits);
+        retraced += static_cast<std::uint64_t>(hits.retraced);
         occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
         for (int lane = 0; lane < count; ++lane)
           if (hits.hit[lane]) sum[lane] += glm::vec4(colours[lane], 1.0f);
@@ -59,6 +75,7 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
   }
   counters.camera += cameraRays;
   counters.occlusion += occlusionRays;
+  counters.retraced += retraced;
 }
 
 }  // namespace

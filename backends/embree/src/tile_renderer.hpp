@@ -12,9 +12,12 @@
 
 namespace confvis::embree {
 
+class DirectionTable;
+
 struct RayCounters {
   std::atomic<std::uint64_t> camera{0};     // primary rays (one per path segment traced)
   std::atomic<std::uint64_t> occlusion{0};  // ambient-occlusion rays
+  std::atomic<std::uint64_t> retraced{0};   // camera rays traced again (see tracePaths)
 };
 
 struct TileJob {
@@ -24,7 +27,14 @@ struct TileJob {
   int tileSize = 16;
   std::uint32_t seed = 0;             // distinguishes images (wall, eye) in the random streams
   ShadingOptions shading;
+  // Conformal centre eye: the map directions of every sample, precomputed (see DirectionTable);
+  // null = the CameraRays look the map up.
+  const DirectionTable* directions = nullptr;
 };
+
+// Wall-pixel position of sample `sample` of output pixel (x, y): the stratified sub-pixel
+// offset (seeded per pixel and image) scaled to wall pixels.
+glm::dvec2 samplePosition(const TileJob& job, int x, int y, int sample);
 
 // Renders into `image` (width x height, resized here): linear RGB averaged over the samples,
 // alpha = fraction of samples that hit something. Calls progress.advance() once per tile.

@@ -7,14 +7,15 @@
 // (EXR, half float, all walls of a case stacked top to bottom in config order, one file per eye,
 // a PNG preview beside each); look at the previews before committing them.
 //
-// Conformal goldens with baked maps: add cases with MapKind::Baked (the map file of branch
-// `bake`) to goldenCases() once the bake lands; everything else stays as it is.
+// Conformal goldens with real baked maps (MapKind::Baked): the config's map is baked inside the
+// test, without the cache (the bake is deterministic), so a change to the bake shows up here too.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/png_io.hpp"
+#include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_test_maps.hpp"
 #include "vulkan_test_support.hpp"
@@ -29,7 +30,10 @@ namespace fs = std::filesystem;
 constexpr float kTolerance = 0.05f;
 constexpr double kBudget = 0.01;
 
-enum class MapKind { None, AzimuthSqueeze };
+enum class MapKind { None, AzimuthSqueeze, Baked };
+
+// Texels per face of the baked maps: at 64-pixel walls a texel is about a pixel.
+constexpr int kBakeResolution = 64;
 
 struct GoldenCase {
   std::string config;
@@ -42,6 +46,7 @@ struct GoldenCase {
   std::string name() const {
     std::string n = config + "-" + scene + (mode == RenderMode::Plain ? "-plain" : "-conformal");
     if (map == MapKind::AzimuthSqueeze) n += "-squeeze";
+    if (map == MapKind::Baked) n += "-baked";
     return n + (eyes.size() > 1 ? "-stereo" : "-mono");
   }
 };
@@ -59,6 +64,11 @@ std::vector<GoldenCase> goldenCases() {
   // The conformal path (tessellation, warp, cut handling) under an analytic map with a cut.
   cases.push_back({"cave5", "checker-sphere", RenderMode::Conformal, MapKind::AzimuthSqueeze});
   cases.push_back({"cave5", "checker-tunnel", RenderMode::Conformal, MapKind::AzimuthSqueeze});
+  // Real baked maps: the 5-sided CAVE (missing ceiling squeezed in) and the six-wall dome-like
+  // md230x6 (seams and corners far from a cube's).
+  cases.push_back({"cave5", "checker-sphere", RenderMode::Conformal, MapKind::Baked});
+  cases.push_back({"cave5", "checker-tunnel", RenderMode::Conformal, MapKind::Baked});
+  cases.push_back({"md230x6", "checker-sphere", RenderMode::Conformal, MapKind::Baked});
   return cases;
 }
 
@@ -71,8 +81,16 @@ fs::path goldenPath(const GoldenCase& c, Eye eye) {
          (c.name() + "-" + eyeName(eye) + ".exr");
 }
 
-std::optional<RetargetMap> mapFor(MapKind kind) {
+RetargetMap bakedMap(const DisplayConfig& config) {
+  BakeDisplayOptions options;
+  options.useCache = false;
+  options.resolution = kBakeResolution;
+  return bakeDisplay(config, options).map;
+}
+
+std::optional<RetargetMap> mapFor(MapKind kind, const DisplayConfig& config) {
   if (kind == MapKind::AzimuthSqueeze) return test::azimuthSqueezeMap(64);
+  if (kind == MapKind::Baked) return bakedMap(config);
   return std::nullopt;
 }
 
@@ -81,7 +99,7 @@ RenderResult renderCase(const GoldenCase& c, VulkanOptions options = {},
   test::ValidatedBackend vk(options);
   const DisplayConfig config = test::loadConfig(c.config);
   vk->setScene(builtinScene(c.scene));
-  const std::optional<RetargetMap> map = mapFor(c.map);
+  const std::optional<RetargetMap> map = mapOverride ? std::nullopt : mapFor(c.map, config);
   RenderSettings settings;
   settings.mode = c.mode;
   settings.eyes = c.eyes;
@@ -183,6 +201,38 @@ TEST(VulkanGoldenBroken, ConformalWithTheIdentityPassesThePlainGoldenAndAWrongWa
   EXPECT_GT(badFraction(misoriented), kBudget);
   // A map a few degrees off.
   EXPECT_GT(badFraction(test::rotationMap(64, 3.0)), kBudget);
+}
+
+// Broken warps under the real baked maps: no retargeting at all, and the two cube maps swapped
+// (geom used where ray belongs: the inverse map, close to right only where the map is nearly
+// the identity).
+TEST(VulkanGoldenBroken, BakedMapIdentityAndSwappedMapsFail) {
+  if (updating()) GTEST_SKIP();
+  for (const char* name :
+       {"cave5-checker-sphere-conformal-baked-mono", "md230x6-checker-sphere-conformal-baked-mono"}) {
+    const GoldenCase c = findCase(name);
+    const RetargetMap baked = bakedMap(test::loadConfig(c.config));
+    const RetargetMap identity = RetargetMap::identity(kBakeResolution, baked.reference);
+    RetargetMap swapped = baked;
+    std::swap(swapped.geom, swapped.ray);
+    const double identityBad = worstBadFraction(c, renderCase(c, {}, &identity), c.eyes);
+    const double swappedBad = worstBadFraction(c, renderCase(c, {}, &swapped), c.eyes);
+    RecordProperty(std::string(name) + "_identity", std::to_string(identityBad));
+    RecordProperty(std::string(name) + "_swapped", std::to_string(swappedBad));
+    EXPECT_GT(identityBad, kBudget) << name;
+    EXPECT_GT(swappedBad, kBudget) << name;
+  }
+}
+
+TEST(VulkanGoldenBroken, BakedMapWithoutTessellationFails) {
+  if (updating()) GTEST_SKIP();
+  // The tunnel's long edges bend under the real map where the ceiling is squeezed in.
+  const GoldenCase c = findCase("cave5-checker-tunnel-conformal-baked-mono");
+  VulkanOptions flat;
+  flat.tessellate = false;
+  const double bad = worstBadFraction(c, renderCase(c, flat), c.eyes);
+  RecordProperty("bad_fraction", std::to_string(bad));
+  EXPECT_GT(bad, kBudget);
 }
 
 TEST(VulkanGoldenBroken, NoTessellationFails) {
