@@ -1,11 +1,11 @@
 // Vulkan backend benchmark (run by hand, never in CI): frame time of conformal rendering as a
 // multiple of plain rendering of the same scene, walls and resolution, measured in the same run
-// (goal <= 1.5), and how that ratio and the image move with the tessellation threshold. The
-// image error is measured against the closed form (checker colours along T_ray of each pixel's
-// direction), the role the Embree render will play once both backends are merged.
-// Maps (analytic until baked maps are available): the identity (no bend: the warp's fixed cost),
-// a Moebius zoom (a smooth conformal map: bends like a baked map away from its cut) and an
-// azimuth squeeze (a cut along a half-meridian and singular poles: a stress test).
+// (goal <= 1.5), and how that ratio and the image move with the tessellation threshold.
+// Timing maps (analytic): the identity (no bend: the warp's fixed cost), a Moebius zoom (a smooth
+// conformal map) and an azimuth squeeze (a cut along a half-meridian and singular poles: a
+// stress test). Threshold sweeps: under the zoom map against the closed form (checker colours
+// along T_ray of each pixel's direction), and under the config's real baked map against the
+// Embree backend's render of the centre eye (the backward path of design note §5).
 // Times are medians of wall-clock and of process CPU time (lavapipe renders on the CPU in this
 // process, so CPU time is the steadier measure on a shared machine).
 #include <CLI/CLI.hpp>
@@ -15,11 +15,14 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "confvis/backends/embree/embree_backend.hpp"
 #include "confvis/backends/vulkan_backend.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_image_checks.hpp"  // closed-form image comparison shared with the tests
 #include "vulkan_test_maps.hpp"     // analytic maps shared with the tests
@@ -108,6 +111,90 @@ Scene checkerCube(int n) {
   return cube;
 }
 
+// Share of all walls' pixels where two renders differ by more than 0.1 in some channel (the
+// tolerance of the Vulkan/Embree cross-check test).
+double imageDifference(const RenderResult& a, const RenderResult& b) {
+  std::size_t bad = 0, pixels = 0;
+  for (std::size_t i = 0; i < a.images.size() && i < b.images.size(); ++i) {
+    const test::PixelComparison c = test::comparePixels(a.images[i].image, b.images[i].image, 0.1f);
+    bad += c.bad;
+    pixels += c.pixels;
+  }
+  return pixels ? double(bad) / double(pixels) : 1.0;
+}
+
+// Share of pixels nothing was drawn on: gaps, since the checker-sphere surrounds every wall.
+double gapFraction(const RenderResult& result) {
+  std::size_t gaps = 0, pixels = 0;
+  for (const WallImage& image : result.images) {
+    for (int y = 0; y < image.image.height; ++y)
+      for (int x = 0; x < image.image.width; ++x) gaps += image.image.at(x, y)[3] < 0.5f;
+    pixels += image.image.pixelCount();
+  }
+  return pixels ? double(gaps) / double(pixels) : 0.0;
+}
+
+const std::vector<double> kThresholds = {0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 0.0};  // 0: none
+
+std::string thresholdName(double error) {
+  return error > 0 ? std::to_string(error).substr(0, 5) : "no tess";
+}
+
+Timing timeThreshold(const VulkanOptions& options, double error, const Scene& scene,
+                     const DisplayConfig& config, const RetargetMap& map,
+                     const RenderSettings& settings, int repeats) {
+  VulkanOptions sweep = options;
+  sweep.tessellate = error > 0.0;
+  sweep.tessellationErrorPixels = error > 0.0 ? error : 1.0;
+  auto backend = makeVulkanBackend(sweep);
+  backend->setScene(scene);
+  return timeFrames(*backend, config, &map, settings, repeats);
+}
+
+// Threshold sweep under the config's real baked map, centre eye at the reference point: frame
+// time relative to plain and the share of pixels off Embree's render (when not skipped).
+// Returns the device's name.
+std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& config, double scale,
+                   int bakeResolution, bool skipEmbree, int repeats) {
+  BakeDisplayOptions bakeOptions;
+  bakeOptions.useCache = false;
+  bakeOptions.resolution = bakeResolution;
+  const RetargetMap map = bakeDisplay(config, bakeOptions).map;
+  const Scene scene = sphereWithTriangles(20000);
+  RenderSettings settings;
+  settings.resolutionScale = scale;
+  settings.head.position = config.reference;
+  settings.camera.position = config.reference;
+  std::optional<RenderResult> embree;
+  if (!skipEmbree) {
+    EmbreeBackend backend;
+    backend.setScene(scene);
+    embree = backend.render(config, &map, settings);
+  }
+  settings.mode = RenderMode::Plain;
+  auto backend = makeVulkanBackend(options);
+  backend->setScene(scene);
+  const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
+  settings.mode = RenderMode::Conformal;
+  std::printf("\nsphere-20k under the baked %s map (%d texels a face), by tessellation "
+              "threshold\n%-10s %9s %7s %9s %7s %12s %8s %12s\n",
+              config.name.c_str(), bakeResolution, "error px", "conf s", "ratio", "conf cpu",
+              "ratio", "off Embree", "gaps", "tessellated");
+  for (double error : kThresholds) {
+    const Timing t = timeThreshold(options, error, scene, config, map, settings, repeats);
+    char offEmbree[16] = "-";
+    if (embree)
+      std::snprintf(offEmbree, sizeof offEmbree, "%.2f%%",
+                    100.0 * imageDifference(t.last, *embree));
+    std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %12s %7.2f%% %12zu\n",
+                thresholdName(error).c_str(), t.seconds, t.seconds / plain.seconds, t.cpu,
+                t.cpu / plain.cpu, offEmbree, 100.0 * gapFraction(t.last),
+                t.last.stats.value("triangles_tessellated", std::size_t{0}));
+    std::fflush(stdout);
+  }
+  return plain.last.stats.value("device", "?");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -115,13 +202,20 @@ int main(int argc, char** argv) {
   std::string device, configName = "cave5";
   double scale = 0.25;
   int repeats = 3;
-  bool skip1m = false;
+  int bakeResolution = 128;
+  bool skip1m = false, skip20k = false, skipSweep = false, skipEmbree = false;
   app.add_option("--device", device, "Vulkan device (name part or index; default: auto)");
   app.add_option("--config", configName, "display config in configs/ (name or path)");
   app.add_option("--scale", scale, "resolution scale of the walls")->check(CLI::PositiveNumber);
   app.add_option("--repeats", repeats, "timed frames per measurement (median)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--skip-1m", skip1m, "leave out the ~1M-triangle scene");
+  app.add_flag("--skip-20k", skip20k, "leave the ~20k-triangle scene out of the timing table");
+  app.add_flag("--skip-sweep", skipSweep, "leave out the threshold sweeps");
+  app.add_flag("--skip-embree", skipEmbree,
+               "no Embree render in the baked-map sweep (no image difference column)");
+  app.add_option("--bake-resolution", bakeResolution, "texels per face of the baked map")
+      ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
   try {
     const std::filesystem::path configPath =
@@ -139,7 +233,8 @@ int main(int argc, char** argv) {
     constexpr double kZoom = 2.0;
     const RetargetMap zoom = test::zoomMap(256, kZoom);
 
-    std::vector<std::pair<std::string, std::size_t>> scenes = {{"sphere-20k", 20000}};
+    std::vector<std::pair<std::string, std::size_t>> scenes;
+    if (!skip20k) scenes.push_back({"sphere-20k", 20000});
     if (!skip1m) scenes.push_back({"sphere-1M", 1000000});
     std::printf("config %s, %zu walls at scale %.3g (%d x %d px), median of %d frames\n",
                 config.name.c_str(), config.walls.size(), scale,
@@ -171,6 +266,7 @@ int main(int argc, char** argv) {
     // of pixels off the closed form.
     for (const auto& [sceneName, flat] :
          {std::pair<const char*, bool>{"sphere-20k", false}, {"cube-4x4", true}}) {
+      if (skipSweep) break;
       const Scene scene = flat ? checkerCube(4) : sphereWithTriangles(20000);
       std::printf("\n%s under the zoom map, by tessellation threshold\n%-10s %9s %7s %9s %7s "
                   "%18s %12s\n",
@@ -180,21 +276,18 @@ int main(int argc, char** argv) {
       backend->setScene(scene);
       const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
       settings.mode = RenderMode::Conformal;
-      for (double error : {0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 0.0}) {
-        VulkanOptions sweep = options;
-        sweep.tessellate = error > 0.0;
-        sweep.tessellationErrorPixels = error > 0.0 ? error : 1.0;
-        auto b = makeVulkanBackend(sweep);
-        b->setScene(scene);
-        const Timing t = timeFrames(*b, config, &zoom, settings, repeats);
+      for (double error : kThresholds) {
+        const Timing t = timeThreshold(options, error, scene, config, zoom, settings, repeats);
         std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %17.2f%% %12zu\n",
-                    error > 0 ? std::to_string(error).substr(0, 5).c_str() : "no tess",
+                    thresholdName(error).c_str(),
                     t.seconds, t.seconds / plain.seconds, t.cpu, t.cpu / plain.cpu,
                     100.0 * closedFormError(t.last, config, flat, kZoom),
                     t.last.stats.value("triangles_tessellated", std::size_t{0}));
         std::fflush(stdout);
       }
     }
+    if (!skipSweep)
+      device = bakedMapSweep(options, config, scale, bakeResolution, skipEmbree, repeats);
     std::printf("\ndevice: %s\n", device.c_str());
   } catch (const Error& e) {
     std::fprintf(stderr, "confvis_bench_vulkan: %s\n", e.what());
