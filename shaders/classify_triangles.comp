@@ -4,20 +4,21 @@
 // leaves straight enough to draw flat between their warped corners (the common case: drawn by
 // the cheap pipeline) and those that need tessellation or lie on the cut (drawn by the
 // tessellation pipeline, which subdivides, culls and drops exactly as if it drew everything).
-// Triangles entirely outside the source field are dropped here. The same edge test runs in the
-// tessellation control shader, so a shared edge gets the same subdivision on both sides.
+// Triangles entirely outside the source field are dropped here. Edge levels come from
+// classify_edges.comp; tessellated triangles copy theirs next to their indices for warp.tesc.
 #include "confvis_warp.glsl"
 #include "confvis_prepass_common.glsl"
 
 layout(local_size_x = 64) in;
 
-void append(uint list, uint i0, uint i1, uint i2) {
+void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
   uint slot = atomicAdd(commands[2 * prepass.mesh + list].indexCount, 3u);
   uint at = prepass.firstIndex + slot;
   if (list == 0u) {
     simpleIndices[at] = i0; simpleIndices[at + 1u] = i1; simpleIndices[at + 2u] = i2;
   } else {
     complexIndices[at] = i0; complexIndices[at + 1u] = i1; complexIndices[at + 2u] = i2;
+    for (uint k = 0u; k < 3u; ++k) patchLevels[at + k] = levels[k];
   }
 }
 
@@ -34,12 +35,11 @@ void main() {
     w[k] = warped[v];
   }
   if (max(w[0].w, max(w[1].w, w[2].w)) < 0.5) return;  // nothing of it is shown
+  vec4 levels[3];
   bool simple = !confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.minGap);
-  vec3 midpoint;
-  for (int k = 0; k < 3 && simple; ++k) {
-    int a = (k + 1) % 3, b = (k + 2) % 3;
-    simple = confvisEdgeSegments(r[a], r[b], w[a].xyz, w[b].xyz, prepass.maxErrorAngle,
-                                 prepass.maxSegmentAngle, midpoint) <= 1.0;
+  for (uint k = 0u; k < 3u; ++k) {
+    levels[k] = edgeLevels[triangleEdges[base + k]];
+    simple = simple && levels[k].w <= 1.0;
   }
-  append(simple ? 0u : 1u, i[0], i[1], i[2]);
+  append(simple ? 0u : 1u, i[0], i[1], i[2], levels);
 }

@@ -22,9 +22,18 @@ layout(set = 2, binding = 3, std430) writeonly buffer SimpleIndices { uint simpl
 layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint complexIndices[]; };
 // Two commands per mesh: [2 m] simple, [2 m + 1] tessellated.
 layout(set = 2, binding = 5, std430) buffer Commands { DrawCommand commands[]; };
+// The scene's distinct edges (vertex pairs) and, laid out like the indices, each triangle's edge
+// opposite each corner (mesh_edges.cpp).
+layout(set = 2, binding = 6, std430) readonly buffer Edges { uvec2 edges[]; };
+layout(set = 2, binding = 7, std430) readonly buffer TriangleEdges { uint triangleEdges[]; };
+// Per edge: xyz = warped midpoint relative to c, w = tessellation segments (classify_edges.comp).
+layout(set = 2, binding = 8, std430) buffer EdgeLevels { vec4 edgeLevels[]; };
+// Per slot of the tessellated list, laid out like its indices: the edge levels opposite each
+// corner, for warp.tesc (confvis_render_common.glsl reads them as set 0, binding 2).
+layout(set = 2, binding = 9, std430) writeonly buffer PatchLevels { vec4 patchLevels[]; };
 
 layout(push_constant) uniform Prepass {
-  uint count;         // vertices (warp) or the mesh's triangles (classify)
+  uint count;         // vertices (warp), edges or the mesh's triangles (classify)
   uint mesh;
   uint firstIndex;
   int vertexOffset;

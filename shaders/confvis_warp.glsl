@@ -22,7 +22,8 @@
 // Triangles must be subdivided before the per-vertex warp (edges bend): use
 // confvisEdgeSegments() for the tessellation levels, and drop triangles with
 // confvisDropTriangle() after tessellation (those straddling the source's cut, whose corners land
-// far apart, and those outside the source field) instead of smearing them across a wall.
+// far apart or whose shape tears, and those entirely outside the source field) instead of
+// smearing them across a wall.
 #ifndef CONFVIS_WARP_GLSL
 #define CONFVIS_WARP_GLSL
 
@@ -132,17 +133,33 @@ float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
   return clamp(ceil(segments), 1.0, 64.0);
 }
 
-// True for a (small, tessellated) triangle that must not be drawn: a corner outside the source
-// field (validity below 0.5), or corners that the warp throws far apart, which happens only when
-// the triangle straddles the source's cut (T_geom jumps there): its warped angular size exceeds
-// four times its virtual one and minGap (radians; a few pixels, so that the tiny jumps near the
-// cut's ends, where both sides meet again, are not mistaken for cuts).
+// Twice the area of a triangle over its longest edge squared: its shape, 0 for a sliver.
+float confvisRoundness(vec3 a, vec3 b, vec3 c) {
+  float longest = max(dot(b - a, b - a), max(dot(c - b, c - b), dot(a - c, a - c)));
+  return longest > 0.0 ? length(cross(b - a, c - a)) / longest : 0.0;
+}
+
+// True for a (small, tessellated) triangle that must not be drawn: one entirely outside the
+// source field (validity below 0.5 at every corner; pieces partly outside the rim are kept, the
+// map is continuous there and dropping them leaves gaps along the rim), or one that straddles the
+// source's cut (T_geom jumps there). Only triangles whose warped angular size exceeds minGap
+// (radians; a few pixels, so that the small jumps near the cut's ends, where both sides meet
+// again, are kept) can straddle it; they do when the warp stretches them more than 16 times (the
+// jump; a conformal map's own stretch across a tessellated triangle stays far below) or tears
+// their shape: flips them, or turns them into a sliver 16 times flatter (a conformal map keeps
+// the shape of a small triangle). A milder 4x stretch rule dropped legitimately stretched
+// triangles near the corners of strongly curved displays and left gaps.
 bool confvisDropTriangle(vec3 a, vec3 b, vec3 c, vec4 wa, vec4 wb, vec4 wc, float minGap) {
-  if (min(wa.w, min(wb.w, wc.w)) < 0.5) return true;
+  if (max(wa.w, max(wb.w, wc.w)) < 0.5) return true;
   float virtualSize = max(confvisAngle(a, b), max(confvisAngle(b, c), confvisAngle(c, a)));
   float warpedSize =
       max(confvisAngle(wa.xyz, wb.xyz), max(confvisAngle(wb.xyz, wc.xyz), confvisAngle(wc.xyz, wa.xyz)));
-  return warpedSize > max(4.0 * virtualSize, minGap);
+  if (warpedSize <= minGap) return false;
+  if (warpedSize > 16.0 * virtualSize) return true;
+  // Orientation as seen from c (the reference point), before and after the warp.
+  bool flipped = dot(cross(b - a, c - a), a + b + c) *
+                     dot(cross(wb.xyz - wa.xyz, wc.xyz - wa.xyz), wa.xyz + wb.xyz + wc.xyz) < 0.0;
+  return flipped || 16.0 * confvisRoundness(wa.xyz, wb.xyz, wc.xyz) < confvisRoundness(a, b, c);
 }
 
 #endif  // CONFVIS_WARP_GLSL

@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Conformal mode: subdivide each triangle by how much the warp bends its edges.
+// Conformal mode: subdivide each triangle by how much the warp bends its edges (measured by the
+// pre-pass).
 #include "confvis_render_common.glsl"
 #include "confvis_warp.glsl"
 
@@ -18,11 +19,12 @@ layout(location = 2) out vec3 outWorld[];
 layout(location = 3) out vec3 outNormal[];
 layout(location = 4) out vec2 outUv[];
 
-float segments(int i, int j, out vec3 warpedMidpoint) {
-  vec4 params = wallView().params;
-  float n = confvisEdgeSegments(inRelative[i], inRelative[j], inWarped[i].xyz, inWarped[j].xyz,
-                                params.x, params.y, warpedMidpoint);
-  return params.w == 0.0 ? 1.0 : n;
+// Segments of the edge opposite corner k, as the pre-pass measured them once per edge
+// (classify_edges.comp), and its warped midpoint.
+float segments(int k, out vec3 warpedMidpoint) {
+  vec4 level = patchLevels[3u * (push.firstPatch + uint(gl_PrimitiveID)) + uint(k)];
+  warpedMidpoint = level.xyz;
+  return wallView().params.w == 0.0 ? 1.0 : level.w;
 }
 
 // Bits of the clip planes (x, y both sides, near) that a point relative to c lies outside of,
@@ -52,7 +54,7 @@ void main() {
   }
   // Outer level k belongs to the edge opposite corner k.
   vec3 m0, m1, m2;
-  float e0 = segments(1, 2, m0), e1 = segments(2, 0, m1), e2 = segments(0, 1, m2);
+  float e0 = segments(0, m0), e1 = segments(1, m1), e2 = segments(2, m2);
   // Patches whose warped corners and edge midpoints all lie beyond one side of this view are
   // not drawn, unless an edge bends so much (across the cut, for one) that the samples say
   // little about the curve between them.

@@ -156,6 +156,7 @@ void NewtonFlow::prepare() {
   {
     ScopedTimer timer(seconds_.evaluation);
     detail::evaluateMetric(tri_, metric_, metric_.u, eval_);
+    ++report_.evaluations;
   }
   if (!eval_.valid())
     throw Error(ErrorCode::InvalidInput, "initial metric is invalid: " + describeInvalid(eval_));
@@ -300,6 +301,7 @@ bool NewtonFlow::lineSearch(double& stepTaken) {
         uTrial_[v] = i >= 0 ? u[v] + alpha * delta_[i] : u[v];
       }
       detail::evaluateMetric(tri_, metric_, uTrial_, trial_);
+      ++report_.evaluations;
     }
     if (trial_.valid() &&
         residualNorm2(target_, trial_.curvature) < (1 - 1e-4 * alpha / remaining) * reference) {
@@ -335,6 +337,7 @@ bool NewtonFlow::lineSearch(double& stepTaken) {
         alpha *= 0.9 * fraction;
         continue;
       }
+      if (stage > 0) break;  // a later stage that gains under 5% is not worth halvings
     }
     alpha *= 0.5;
   }

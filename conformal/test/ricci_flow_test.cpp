@@ -104,6 +104,8 @@ TEST_P(EveryScheme, HyperbolicDiskConverges) {
 
 // The robust schemes also handle an irregular, lopsided mesh (obtuse and sliver triangles) and
 // a pair of pants (χ = -1) in hyperbolic geometry once flips keep the triangulation Delaunay.
+// Virtual radius joined them with initial radii of a third of the shortest incident edge (with
+// radii of the mean incident length both cases stalled).
 class RobustScheme : public testing::TestWithParam<Scheme> {};
 
 TEST_P(RobustScheme, EuclideanIrregularDiskWithFlips) {
@@ -131,7 +133,8 @@ TEST_P(RobustScheme, HyperbolicPairOfPantsGetsGeodesicBoundaries) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RicciFlow, RobustScheme,
-                         testing::Values(Scheme::InversiveDistance, Scheme::Yamabe),
+                         testing::Values(Scheme::InversiveDistance, Scheme::Yamabe,
+                                         Scheme::VirtualRadius),
                          [](const testing::TestParamInfo<Scheme>& param) {
                            return std::string(toString(param.param));
                          });

@@ -214,11 +214,12 @@ int main(int argc, char** argv) {
         const auto& t = map.flow.seconds;
         std::fprintf(stderr,
                      "  %s: evaluation %.4f assembly %.4f analysis %.4f factorisation %.4f "
-                     "solve %.4f (%d CG steps) flips %.4f, rest %.4f; errors",
+                     "solve %.4f (%d CG steps) flips %.4f, rest %.4f; %d evaluations; errors",
                      name, t.evaluation, t.assembly, t.analysis, t.factorization, t.solve,
                      map.flow.cgIterations, t.flips,
                      result.seconds - t.evaluation - t.assembly - t.analysis - t.factorization -
-                         t.solve - t.flips);
+                         t.solve - t.flips,
+                     map.flow.evaluations);
         for (double e : map.flow.errorHistory) std::fprintf(stderr, " %.1e", e);
         std::fprintf(stderr, "\n");
       }

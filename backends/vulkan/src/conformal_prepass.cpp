@@ -1,5 +1,6 @@
 #include "conformal_prepass.hpp"
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -29,7 +30,11 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
                      true);
 
   const VkDevice device = context_.device();
-  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 6};
+  edgeLevels_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(glm::vec4),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+  patchLevels_ = Buffer(context_, scene.triangleCount() * 3 * sizeof(glm::vec4),
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kPrepassBindings};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
   poolInfo.poolSizeCount = 1;
@@ -44,9 +49,11 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   allocInfo.pSetLayouts = &layout;
   check(vkAllocateDescriptorSets(device, &allocInfo, &set_), "vkAllocateDescriptorSets");
   // Bindings of confvis_prepass_common.glsl, in order.
-  const std::array<VkBuffer, 6> buffers = {scene.vertexBuffer(), scene.indexBuffer(),
-                                           warped_.get(),        flat_.get(),
-                                           tessellated_.get(),   commands_.get()};
+  const std::array<VkBuffer, kPrepassBindings> buffers = {
+      scene.vertexBuffer(), scene.indexBuffer(),         warped_.get(),
+      flat_.get(),          tessellated_.get(),          commands_.get(),
+      scene.edgeBuffer(),   scene.triangleEdgeBuffer(), edgeLevels_.get(),
+      patchLevels_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   sceneId_ = scene.id();
@@ -76,7 +83,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.maxErrorAngle = thresholds.maxErrorAngle;
   push.maxSegmentAngle = thresholds.maxSegmentAngle;
   push.minGap = thresholds.minGap;
-  constexpr std::uint32_t kGroup = 64;  // local_size_x of both shaders
+  constexpr std::uint32_t kGroup = 64;  // local_size_x of the pre-pass shaders
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVertices());
   push.count = static_cast<std::uint32_t>(scene.vertexCount());
   vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
@@ -85,6 +92,14 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   VkMemoryBarrier warpedReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   warpedReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   warpedReady.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &warpedReady, 0, nullptr, 0,
+                       nullptr);
+
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdges());
+  push.count = static_cast<std::uint32_t>(scene.edgeCount());
+  vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+  vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &warpedReady, 0, nullptr, 0,
                        nullptr);
@@ -103,9 +118,11 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   VkMemoryBarrier listsReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   listsReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   listsReady.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT |
-                             VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_HOST_READ_BIT;
+                             VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_HOST_READ_BIT |
+                             VK_ACCESS_SHADER_READ_BIT;
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_VERTEX_INPUT_BIT |
+                           VK_PIPELINE_STAGE_TESSELLATION_CONTROL_SHADER_BIT |
                            VK_PIPELINE_STAGE_HOST_BIT,
                        0, 1, &listsReady, 0, nullptr, 0, nullptr);
 }

@@ -34,7 +34,7 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
   }};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -179,17 +179,20 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
       const GpuScene::Draw& draw = scene.draws()[d];
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
                               0, nullptr);
-      const PushConstants push{draw.baseColorFactor, request.viewBase,
-                               draw.hasNormals ? 1u : 0u, {0u, 0u}};
+      PushConstants push{draw.baseColorFactor, request.viewBase, draw.hasNormals ? 1u : 0u, 0u,
+                         0u};
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
       if (request.conformal && tessellated) {
         // The pre-pass has finished (the frame waited for it): split its list into draws of a
-        // bounded number of patches.
+        // bounded number of patches, each told where its patches' edge levels start.
         const VkDrawIndexedIndirectCommand c = prepass_.command(d, true);
         constexpr std::uint32_t kChunk = 3 * kMaxPatchesPerDraw;
-        for (std::uint32_t first = 0; first < c.indexCount; first += kChunk)
+        for (std::uint32_t first = 0; first < c.indexCount; first += kChunk) {
+          push.firstPatch = (c.firstIndex + first) / 3;
+          vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
           vkCmdDrawIndexed(cmd, std::min(kChunk, c.indexCount - first), 1, c.firstIndex + first,
                            c.vertexOffset, 0);
+        }
       } else if (request.conformal) {  // the pre-pass's list and count
         vkCmdDrawIndexedIndirect(cmd, prepass_.commands(), ConformalPrepass::commandOffset(d, false),
                                  1, sizeof(VkDrawIndexedIndirectCommand));
@@ -247,6 +250,13 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
       prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
     });
     prepassSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The tessellation control shader reads the edge levels (set 0, binding 2); the set is idle
+    // now that the pre-pass has completed.
+    if (patchLevelsScene_ != prepass_.sceneId()) {
+      patchLevelsScene_ = prepass_.sceneId();
+      writeBufferDescriptor(context_.device(), frameSet_, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                            prepass_.patchLevels());
+    }
   }
   const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());
   std::vector<WallImage> images;

@@ -62,6 +62,7 @@ class FrameRenderer {
   std::map<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>, Targets> targets_;
   Buffer frameBuffer_, viewBuffer_;
   UniqueDescriptorPool pool_;
+  std::uint64_t patchLevelsScene_ = 0;  // scene whose pre-pass buffers frameSet_ binding 2 holds
   VkDescriptorSet frameSet_ = VK_NULL_HANDLE, warpSet_ = VK_NULL_HANDLE;
   Image geomMap_;
   UniqueSampler warpSampler_;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "confvis/base/error.hpp"
+#include "mesh_edges.hpp"
 #include "vk_check.hpp"
 
 namespace confvis::vulkan {
@@ -105,6 +106,16 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
                            VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   indices_ = uploadBuffer(context, indices.data(), indices.size() * sizeof(std::uint32_t),
                           VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  std::vector<IndexRange> ranges;
+  for (const Draw& draw : draws_) ranges.push_back({draw.firstIndex, draw.indexCount, draw.vertexOffset});
+  const MeshEdges edges = buildMeshEdges(indices, ranges);
+  edgeCount_ = edges.edges.size();
+  edges_ = uploadBuffer(context, edges.edges.data(), edges.edges.size() * sizeof(glm::uvec2),
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  triangleEdges_ =
+      uploadBuffer(context, edges.triangleEdges.data(),
+                   edges.triangleEdges.size() * sizeof(std::uint32_t),
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
 }
 
 }  // namespace confvis::vulkan

@@ -29,6 +29,11 @@ class GpuScene {
   const std::vector<Draw>& draws() const { return draws_; }
   VkBuffer vertexBuffer() const { return vertices_.get(); }
   VkBuffer indexBuffer() const { return indices_.get(); }
+  // The distinct edges (uvec2 of vertex indices) and each triangle's edges, laid out like the
+  // indices (mesh_edges.hpp); storage buffers for the conformal pre-pass.
+  VkBuffer edgeBuffer() const { return edges_.get(); }
+  VkBuffer triangleEdgeBuffer() const { return triangleEdges_.get(); }
+  std::size_t edgeCount() const { return edgeCount_; }
   const Bounds& bounds() const { return bounds_; }
   std::size_t triangleCount() const { return triangleCount_; }
   std::size_t vertexCount() const { return vertexCount_; }
@@ -37,13 +42,14 @@ class GpuScene {
 
  private:
   std::vector<Draw> draws_;
-  Buffer vertices_, indices_;
+  Buffer vertices_, indices_, edges_, triangleEdges_;
   std::vector<Image> textures_;  // textures_.back() is the white 1x1 texture
   UniqueSampler sampler_;
   UniqueDescriptorPool pool_;
   Bounds bounds_;
   std::size_t triangleCount_ = 0;
   std::size_t vertexCount_ = 0;
+  std::size_t edgeCount_ = 0;
   std::uint64_t id_ = 0;
 };
 

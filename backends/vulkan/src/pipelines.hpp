@@ -35,8 +35,12 @@ struct PushConstants {
   glm::vec4 baseColorFactor;
   std::uint32_t viewBase;
   std::uint32_t hasNormals;
-  std::uint32_t padding[2];
+  std::uint32_t firstPatch;  // tessellated draws: list slot of the first patch
+  std::uint32_t padding;
 };
+
+// Storage buffers of set 2 in confvis_prepass_common.glsl.
+inline constexpr std::uint32_t kPrepassBindings = 10;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -78,6 +82,7 @@ class Pipelines {
   VkPipelineLayout layout() const { return layout_.get(); }
   VkPipelineLayout computeLayout() const { return computeLayout_.get(); }
   VkPipeline warpVertices() const { return warpVertices_.get(); }
+  VkPipeline classifyEdges() const { return classifyEdges_.get(); }
   VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
 
   // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
@@ -104,7 +109,7 @@ class Pipelines {
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
-  UniquePipeline warpVertices_, classifyTriangles_;
+  UniquePipeline warpVertices_, classifyEdges_, classifyTriangles_;
   std::map<std::uint32_t, Pass> passes_;
 };
 

@@ -1,10 +1,11 @@
-// The conformal pre-pass compute pipelines (warp_vertices.comp, classify_triangles.comp) and
-// their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
+// The conformal pre-pass compute pipelines (warp_vertices.comp, classify_edges.comp,
+// classify_triangles.comp) and their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
 #include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
 
 #include "pipelines.hpp"
 #include "vk_check.hpp"
 
+#include "confvis_spirv/classify_edges_comp.h"
 #include "confvis_spirv/classify_triangles_comp.h"
 #include "confvis_spirv/warp_vertices_comp.h"
 
@@ -30,7 +31,7 @@ UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
 void Pipelines::createComputePipelines() {
   const VkDevice device = context_.device();
   std::vector<VkDescriptorSetLayoutBinding> buffers;
-  for (std::uint32_t binding = 0; binding < 6; ++binding)
+  for (std::uint32_t binding = 0; binding < kPrepassBindings; ++binding)
     buffers.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                        VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
   prepassSetLayout_ = setLayout(device, buffers);
@@ -39,8 +40,10 @@ void Pipelines::createComputePipelines() {
       {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(PrepassConstants)});
   const VkPipelineLayout layout = computeLayout_.get();
   const UniqueShaderModule warp = shaderModule(device, kSpirv_warp_vertices_comp);
+  const UniqueShaderModule edges = shaderModule(device, kSpirv_classify_edges_comp);
   const UniqueShaderModule classify = shaderModule(device, kSpirv_classify_triangles_comp);
   warpVertices_ = computePipeline(device, layout, warp);
+  classifyEdges_ = computePipeline(device, layout, edges);
   classifyTriangles_ = computePipeline(device, layout, classify);
 }
 

@@ -71,6 +71,7 @@ struct RicciFlowReport {
   int flipsStartedAt = -1;       // Newton step (1-based) in which flips came on; 0: from the
                                  // start; -1: never
   int stepHalvings = 0;          // total line-search reductions
+  int evaluations = 0;           // metric evaluations (curvature), line-search trials included
   int factorizations = 0;        // numeric LDLᵀ factorisations of the Hessian
   int symbolicAnalyses = 0;      // symbolic analyses (the first also orders the unknowns)
   int cgIterations = 0;          // conjugate-gradient steps preconditioned by a frozen factor
