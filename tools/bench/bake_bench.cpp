@@ -63,7 +63,7 @@ double stage(const DisplayMap& map, const char* key) {
 }
 
 struct Sample {
-  double templ = 0, flow = 0, alignment = 0, bake = 0, ray = 0, geom = 0, extend = 0, total = 0;
+  double templ = 0, flow = 0, alignment = 0, bake = 0, locators = 0, ray = 0, geom = 0, extend = 0, total = 0;
   double cpu = 0, bakeCpu = 0, freshBakeCpu = 0;
 };
 
@@ -85,9 +85,9 @@ int main(int argc, char** argv) {
   const Vec3d moved{0.15, 0.1, -0.2};  // a head 27 cm off centre
   std::printf("config %s, %u hardware threads, bake threads %d, median of %d runs; times in ms\n",
               configPath.c_str(), std::thread::hardware_concurrency(), threads, repeat);
-  std::printf("%-6s %5s %-9s %6s %6s | %8s %8s %9s %8s (%6s %6s %6s) | %8s | %15s %15s %15s | %8s %6s | %s\n",
+  std::printf("%-6s %5s %-9s %6s %6s | %8s %8s %9s %8s (%6s %6s %6s %6s) | %8s | %15s %15s %15s | %8s %6s | %s\n",
               "edge", "res", "reference", "S tris", "T tris", "template", "flow", "alignment",
-              "bake", "ray", "geom", "extend", "total", "cpu min/mean", "bake cpu min/mn",
+              "bake", "loc", "ray", "geom", "extend", "total", "cpu min/mean", "bake cpu min/mn",
               "fresh bake cpu", "baseline", "bake/b", "ray ratio p50/p95/max, flipped");
   for (double edge : parseList<double>(edges))
     for (int n : parseList<int>(resolutions))
@@ -125,6 +125,7 @@ int main(int argc, char** argv) {
           s.bake = t.total;
           s.ray = t.ray;
           s.geom = t.geom;
+          s.locators = t.locators;
           s.extend = t.extend;
           samples.push_back(s);
         }
@@ -148,10 +149,10 @@ int main(int argc, char** argv) {
         };
         const BakedConformality q =
             measureBakedConformality(map.ray, {.margin = 2, .discontinuityTolerance = 0.5, .stride = std::max(1, n / 256)});
-        std::printf("%-6.2f %5d %-9s %6zu %6zu | %8.2f %8.2f %9.2f %8.2f (%6.2f %6.2f %6.2f) | %8.2f | %15s %15s %15s | %8.2f %6.2f | %.4f/%.4f/%.3f, %zu\n",
+        std::printf("%-6.2f %5d %-9s %6zu %6zu | %8.2f %8.2f %9.2f %8.2f (%6.2f %6.2f %6.2f %6.2f) | %8.2f | %15s %15s %15s | %8.2f %6.2f | %.4f/%.4f/%.3f, %zu\n",
                     edge, n, movedReference ? "moved" : "config", last.source.triangles.size(),
                     last.target.triangles.size(), med(&Sample::templ), med(&Sample::flow),
-                    med(&Sample::alignment), med(&Sample::bake), med(&Sample::ray),
+                    med(&Sample::alignment), med(&Sample::bake), med(&Sample::locators), med(&Sample::ray),
                     med(&Sample::geom), med(&Sample::extend), med(&Sample::total),
                     minMean(&Sample::cpu).c_str(), minMean(&Sample::bakeCpu).c_str(),
                     minMean(&Sample::freshBakeCpu).c_str(),
