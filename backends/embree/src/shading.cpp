@@ -38,8 +38,8 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
     // Two-sided: turn the normal towards the viewer, so files with either winding shade alike.
     if (glm::dot(n, hits.direction[lane]) > 0.0f) n = -n;
     normals[lane] = n;
-    const glm::vec4 base =
-        scene.scene().baseColorAt(hits.geomID[lane], hits.primID[lane], hits.barycentrics[lane]);
+    const glm::vec4 base = scene.baseColor(hits.geomID[lane], hits.primID[lane],
+                                           hits.barycentrics[lane].x, hits.barycentrics[lane].y);
     colours[lane] = glm::vec3(base) * std::max(0.0f, -glm::dot(n, hits.direction[lane]));
   }
   if (!options.ambientOcclusion || options.occlusionSamples <= 0) return 0;
