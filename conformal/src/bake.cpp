@@ -115,11 +115,27 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
       const double k = x - span.xBegin;
       const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
       const double tolerance = -1e-12 * hw;
-      bool inside = false;
-      if (current >= 0) {
+      // Homogeneous barycentric coordinates in `current`; the most negative names the edge
+      // crossed.
+      auto outsideCorner = [&] {
         const double l1 = row1[0] * hx + row1[1] * hy + row1[2] * hw;
         const double l2 = row2[0] * hx + row2[1] * hy + row2[2] * hw;
-        inside = l1 >= tolerance && l2 >= tolerance && hw - l1 - l2 >= tolerance;
+        const double l0 = hw - l1 - l2;
+        if (l0 >= tolerance && l1 >= tolerance && l2 >= tolerance) return -1;
+        return l0 <= l1 && l0 <= l2 ? 0 : l1 <= l2 ? 1 : 2;
+      };
+      bool inside = false;
+      if (current >= 0) {
+        const int crossed = outsideCorner();
+        inside = crossed < 0;
+        // A texel that left the triangle is most often in the neighbour across the edge it
+        // crossed: test that one before a full point location.
+        const int next = inside ? -1 : codomainDisk.neighbour(current, crossed);
+        if (next >= 0 && codomainDisk.affine(next).valid) {
+          select(next);
+          inside = outsideCorner() < 0;
+          if (inside) hint = next;
+        }
       }
       if (inside) {
         const Vec3d sum = hx * toDirection[0] + hy * toDirection[1] + hw * toDirection[2];

@@ -25,20 +25,12 @@ class EmbreeScene {
   const Scene& scene() const { return source_; }
   // Length of the bounding-box diagonal, metres (a scale for ambient-occlusion distances).
   double diagonal() const { return diagonal_; }
-  // Unit shading normal at a hit: the interpolated vertex normal where the mesh has normals,
-  // else the geometric normal Embree reported (Ng, any length).
-  glm::vec3 shadingNormal(unsigned geomID, unsigned primID, float u, float v,
-                          const glm::vec3& geometricNormal) const {
+  // The vertex normals interpolated at a hit, not normalised; zero where the mesh has none.
+  glm::vec3 interpolatedNormal(unsigned geomID, unsigned primID, float u, float v) const {
     const ShadingMesh& mesh = shadingMeshes_[geomID];
-    if (mesh.normals) {
-      const glm::uvec3 t = mesh.triangles[primID];
-      const glm::vec3 n =
-          (1.0f - u - v) * mesh.normals[t.x] + u * mesh.normals[t.y] + v * mesh.normals[t.z];
-      const float length = glm::length(n);
-      if (length > 1e-20f) return n / length;
-    }
-    const float length = glm::length(geometricNormal);
-    return length > 0.0f ? geometricNormal / length : glm::vec3(0.0f);
+    if (!mesh.normals) return glm::vec3(0.0f);
+    const glm::uvec3 t = mesh.triangles[primID];
+    return (1.0f - u - v) * mesh.normals[t.x] + u * mesh.normals[t.y] + v * mesh.normals[t.z];
   }
   // Scene::baseColorAt for a hit, from the flattened per-mesh data (no bounds checks: geomID and
   // primID come from Embree).
