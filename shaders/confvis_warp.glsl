@@ -109,9 +109,11 @@ vec4 confvisWarpRelative(vec3 relative) {
 // from c) of the bent edge: the warped midpoint's deviation from the chord shrinks with the square
 // of the segment count. maxSegmentAngle caps the angular length of a segment so that a long edge
 // whose bend happens to vanish at its midpoint is still subdivided. An edge across the source's
-// cut is cut into segments of about twice maxErrorAngle (a pixel at the default half-pixel
-// error), so that the triangles dropped along the cut leave gaps of about a pixel. It is told
-// from a smooth bend by its halves: where T_geom jumps, one warped half spans the jump and is
+// cut is cut into segments of about four times maxErrorAngle (two pixels at the default
+// half-pixel error), so that the triangles dropped along the cut leave gaps of about two pixels;
+// pixel-sized segments (one pixel) made these patches (inner level = longest edge's, so the
+// square of it in triangles) most of the cost on a baked cave5 map: 9x plain instead of 4x.
+// It is told from a smooth bend by its halves: where T_geom jumps, one warped half spans the jump and is
 // more than three times as long as the other (and longer than eight times maxErrorAngle), while
 // a smooth map stretches both halves of a short edge alike. Symmetric in (a, b), so the two triangles sharing an edge
 // agree and leave no cracks. In [1, 64]. warpedMidpoint receives the warp of the edge's midpoint
@@ -125,7 +127,7 @@ float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
   float longHalf = max(halfA, halfB);
   float segments;
   if (longHalf > max(3.0 * min(halfA, halfB), 8.0 * maxErrorAngle)) {
-    segments = edge / (2.0 * maxErrorAngle);
+    segments = edge / (4.0 * maxErrorAngle);
   } else {
     float deviation = confvisAngle(wm, 0.5 * (wa + wb));
     segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);

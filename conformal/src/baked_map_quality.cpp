@@ -13,8 +13,6 @@ namespace confvis {
 
 namespace {
 
-using detail::TexelRef;
-
 Vec3d storedDirection(const CubeMap& map, const TexelRef& t) {
   const float* p = map.face(t.face).at(t.x, t.y);
   const Vec3d v{p[0], p[1], p[2]};
@@ -38,33 +36,26 @@ void requireMap(const CubeMap& map, const char* what) {
       throw Error(ErrorCode::InvalidInput, std::string(what) + ": malformed cube map");
 }
 
-// The four texels a bilinear lookup of `dir` blends (sampleBilinear's footprint).
-std::array<TexelRef, 4> bilinearFootprint(int n, const Vec3d& dir) {
+// Largest angle between the directions a bilinear lookup of `dir` in `map` blends (beyond a
+// face edge, the neighbouring-face texels standing in for the missing ones).
+double footprintSpread(const CubeMap& map, const Vec3d& dir) {
+  const int n = map.faceSize;
   CubeFace face;
   double x, y;
   directionToTexel(dir, n, face, x, y);
   const int x0 = static_cast<int>(std::floor(x - 0.5)), y0 = static_cast<int>(std::floor(y - 0.5));
-  std::array<TexelRef, 4> out;
+  std::array<Vec3d, 32> blended;
+  int count = 0;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i) {
-      const int tx = x0 + i, ty = y0 + j;
-      out[j * 2 + i] = tx >= 0 && tx < n && ty >= 0 && ty < n
-                           ? TexelRef{face, tx, ty}
-                           : detail::neighbourTexel(face, std::clamp(tx, 0, n - 1),
-                                                    std::clamp(ty, 0, n - 1), tx - std::clamp(tx, 0, n - 1),
-                                                    ty - std::clamp(ty, 0, n - 1), n);
+      const TexelStandIn standIn = texelAcrossFaceEdge(face, x0 + i, y0 + j, n);
+      for (int k = 0; k < standIn.count; ++k)
+        blended[count++] = storedDirection(map, standIn.texels[k].texel);
     }
-  return out;
-}
-
-// Largest angle between the directions a bilinear lookup of `dir` in `map` blends.
-double footprintSpread(const CubeMap& map, const Vec3d& dir) {
-  const auto texels = bilinearFootprint(map.faceSize, dir);
   double spread = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      spread = std::max(spread, angleBetween(storedDirection(map, texels[i]),
-                                             storedDirection(map, texels[j])));
+  for (int i = 0; i < count; ++i)
+    for (int j = i + 1; j < count; ++j)
+      spread = std::max(spread, angleBetween(blended[i], blended[j]));
   return spread;
 }
 
@@ -159,34 +150,32 @@ BakedConformality measureBakedConformality(const CubeMap& map, const Conformalit
   return stats;
 }
 
-RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, int stride,
-                                double discontinuityTexels) {
-  requireMap(forward, "measureRoundTrip");
-  requireMap(inverse, "measureRoundTrip");
-  const int n = forward.faceSize;
-  stride = std::max(1, stride);
-  const double unit = texelAngle(inverse.faceSize);
-  RoundTripStats stats;
-  std::vector<double> errors;
+namespace {
+
+// 4-neighbour distance (capped) of every texel to the nearest edge of `map`: an invalid texel or
+// one whose stored direction jumps by more than `jump` radians to a valid neighbour.
+std::vector<std::uint8_t> distanceToEdge(const CubeMap& map, double jump, std::uint8_t cap) {
+  const int n = map.faceSize;
+  std::vector<std::uint8_t> smooth(6 * static_cast<std::size_t>(n) * n);
   for (CubeFace face : kCubeFaces)
-    for (int y = 0; y < n; y += stride)
-      for (int x = 0; x < n; x += stride) {
-        if (!isValid(forward, {face, x, y})) continue;
-        const Vec3d v = storedDirection(forward, {face, x, y});
-        if (footprintSpread(inverse, v) > discontinuityTexels * unit) {
-          ++stats.discontinuous;
-          continue;
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x) {
+        bool ok = isValid(map, {face, x, y});
+        const Vec3d v = storedDirection(map, {face, x, y});
+        for (int k = 0; k < 4 && ok; ++k) {
+          const TexelRef t = detail::neighbourTexel(face, x, y, detail::kNeighbourSteps[k][0],
+                                                    detail::kNeighbourSteps[k][1], n);
+          ok = !isValid(map, t) || angleBetween(v, storedDirection(map, t)) <= jump;
         }
-        const std::optional<Vec3d> back = lookupDirection(inverse, v);
-        if (!back) {
-          ++stats.invalid;
-          continue;
-        }
-        errors.push_back(angleBetween(*back, texelDirection(face, x, y, n)) / texelAngle(n));
+        smooth[detail::texelIndex(face, x, y, n)] = ok;
       }
+  return detail::distanceToUnmasked(smooth, n, cap);
+}
+
+void summarise(std::vector<double>& errors, RoundTripErrors& stats) {
   stats.measured = errors.size();
   std::sort(errors.begin(), errors.end());
-  const std::size_t valid = stats.measured + stats.discontinuous + stats.invalid;
+  const std::size_t valid = stats.valid();
   const auto below = static_cast<std::size_t>(
       std::lower_bound(errors.begin(), errors.end(), 1.0) - errors.begin());
   stats.fractionBelowOneTexel = valid ? static_cast<double>(below) / static_cast<double>(valid) : 0;
@@ -194,6 +183,57 @@ RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, 
   stats.p95 = percentile(errors, 0.95);
   stats.p99 = percentile(errors, 0.99);
   stats.max = errors.empty() ? 0 : errors.back();
+}
+
+}  // namespace
+
+RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, int stride,
+                                double discontinuityTexels, int boundaryTexels) {
+  requireMap(forward, "measureRoundTrip");
+  requireMap(inverse, "measureRoundTrip");
+  const int n = forward.faceSize, m = inverse.faceSize;
+  stride = std::max(1, stride);
+  boundaryTexels = std::clamp(boundaryTexels, 0, 254);
+  const double unit = texelAngle(m);
+  const auto cap = static_cast<std::uint8_t>(boundaryTexels + 1);
+  const std::vector<std::uint8_t> forwardEdge =
+      distanceToEdge(forward, discontinuityTexels * texelAngle(n), cap);
+  const std::vector<std::uint8_t> inverseEdge =
+      distanceToEdge(inverse, discontinuityTexels * unit, cap);
+  RoundTripStats stats;
+  stats.boundaryTexels = boundaryTexels;
+  std::vector<double> all, interior, boundary;
+  for (CubeFace face : kCubeFaces)
+    for (int y = 0; y < n; y += stride)
+      for (int x = 0; x < n; x += stride) {
+        if (!isValid(forward, {face, x, y})) continue;
+        const Vec3d v = storedDirection(forward, {face, x, y});
+        CubeFace imageFace;
+        double ix, iy;
+        directionToTexel(v, m, imageFace, ix, iy);
+        const std::size_t image = detail::texelIndex(
+            imageFace, std::clamp(static_cast<int>(ix), 0, m - 1),
+            std::clamp(static_cast<int>(iy), 0, m - 1), m);
+        const bool onBoundary = forwardEdge[detail::texelIndex(face, x, y, n)] <= boundaryTexels ||
+                                inverseEdge[image] <= boundaryTexels;
+        RoundTripErrors& part = onBoundary ? stats.boundary : stats.interior;
+        std::vector<double>& partErrors = onBoundary ? boundary : interior;
+        if (footprintSpread(inverse, v) > discontinuityTexels * unit) {
+          ++part.discontinuous, ++stats.all.discontinuous;
+          continue;
+        }
+        const std::optional<Vec3d> back = lookupDirection(inverse, v);
+        if (!back) {
+          ++part.invalid, ++stats.all.invalid;
+          continue;
+        }
+        const double error = angleBetween(*back, texelDirection(face, x, y, n)) / texelAngle(n);
+        all.push_back(error);
+        partErrors.push_back(error);
+      }
+  summarise(all, stats.all);
+  summarise(interior, stats.interior);
+  summarise(boundary, stats.boundary);
   return stats;
 }
 
@@ -232,11 +272,18 @@ nlohmann::json toJson(const BakedConformality& s) {
           {"ratio_p99", s.ratioP99}, {"ratio_max", s.ratioMax}};
 }
 
+nlohmann::json toJson(const RoundTripErrors& s) {
+  return {{"valid_texels", s.valid()}, {"measured_texels", s.measured},
+          {"discontinuous_texels", s.discontinuous}, {"invalid_texels", s.invalid},
+          {"error_p50_texels", s.p50}, {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99},
+          {"error_max_texels", s.max}, {"fraction_below_one_texel", s.fractionBelowOneTexel}};
+}
+
 nlohmann::json toJson(const RoundTripStats& s) {
-  return {{"measured_texels", s.measured}, {"discontinuous_texels", s.discontinuous},
-          {"invalid_texels", s.invalid}, {"error_p50_texels", s.p50},
-          {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99}, {"error_max_texels", s.max},
-          {"fraction_below_one_texel", s.fractionBelowOneTexel}};
+  return {{"boundary_width_texels", s.boundaryTexels},
+          {"all", toJson(s.all)},
+          {"interior", toJson(s.interior)},
+          {"boundary", toJson(s.boundary)}};
 }
 
 nlohmann::json toJson(const CoverageStats& s) {

@@ -9,11 +9,6 @@
 
 namespace confvis::detail {
 
-struct TexelRef {
-  CubeFace face;
-  int x, y;
-};
-
 inline std::size_t texelIndex(CubeFace face, int x, int y, int n) {
   return (static_cast<std::size_t>(face) * n + y) * n + x;
 }

@@ -262,6 +262,13 @@ DisplayTemplates closureTemplates(const DisplayConfig& config, const CoarseDispl
 
 }  // namespace
 
+bool displayMapIsIdentity(const DisplayConfig& config) {
+  if (config.source != SourceField::FullSphere) return false;
+  if (std::any_of(config.walls.begin(), config.walls.end(), hasBezel)) return false;
+  // Without bezels every wall is one fan cell, whatever the edge length: the topology is cheap.
+  return assembleDisplay(config, resolveEdgeLength(config, 0.0)).closed();
+}
+
 DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength) {
   const double h = resolveEdgeLength(config, edgeLength);
   const CoarseDisplay display = assembleDisplay(config, h);

@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "confvis/base/error.hpp"
 #include "display_test_configs.hpp"
 
 using namespace confvis;
@@ -306,4 +307,25 @@ TEST(DisplayTemplate, TiledWallWithTJunctionsIsStitchedIntoOneDisk) {
     const glm::dvec3& p = t.target.points[v];
     EXPECT_TRUE(std::abs(std::abs(p.x) - 1.5) < kEps || std::abs(std::abs(p.y) - 1) < kEps);
   }
+}
+
+TEST(DisplayTemplate, OnlyABezelFreeClosedDisplayHasTheIdentityMap) {
+  EXPECT_TRUE(displayMapIsIdentity(shipped("cave6")));
+  DisplayConfig offCentre = shipped("cave6");
+  offCentre.reference = {0.4, -0.3, 0.7};  // still enclosed: source and target stay the same mesh
+  EXPECT_TRUE(displayMapIsIdentity(offCentre));
+  // Bezels are unlit: the map is the identity, but its alpha must mark them, so it is baked.
+  DisplayConfig bezels = shipped("cave6");
+  bezels.walls[0].bezel = {0.02, 0.02, 0.02, 0.02};
+  EXPECT_FALSE(displayMapIsIdentity(bezels));
+  DisplayConfig hemisphere = shipped("cave6");
+  hemisphere.source = SourceField::Hemisphere;
+  EXPECT_FALSE(displayMapIsIdentity(hemisphere));
+  for (const char* open : {"cave5", "cave4", "cave3", "flat-wall", "md230x6"})
+    EXPECT_FALSE(displayMapIsIdentity(shipped(open))) << open;
+  // A malformed display is reported, not taken for "not the identity".
+  DisplayConfig broken = shipped("cave6");
+  broken.walls.pop_back();
+  broken.walls.push_back(makeWall("tilted", {-1.5, 1.5, 1.5}, {1.5, 1.5, 1.5}, {-1.5, 1.0, -1.5}));
+  EXPECT_THROW(displayMapIsIdentity(broken), Error);
 }

@@ -22,6 +22,7 @@
 #include "confvis/backends/retarget_map_files.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/conformal/display_template.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "image_based_retarget.hpp"
 #include "raw_intersect_loop.hpp"
@@ -121,7 +122,7 @@ int main(int argc, char** argv) {
     if (!mapDirectory.empty()) {
       map = readRetargetMapDirectory(mapDirectory, config.reference);
       mapName = mapDirectory;
-    } else if (displayCoversWholeSphere(config)) {
+    } else if (displayMapIsIdentity(config)) {
       map = RetargetMap::identity(config.cubeResolution, {config.reference.x, config.reference.y,
                                                           config.reference.z});
       mapName = "identity";

@@ -2,6 +2,7 @@
 
 #include "confvis/backends/retarget_map_files.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/conformal/display_template.hpp"
 #include "confvis/conformal/bake_display.hpp"
 
 namespace confvis::cli {
@@ -10,10 +11,10 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
                          bool showProgress) {
   if (!mapDirectory.empty())
     return {readRetargetMapDirectory(mapDirectory, config.reference), mapDirectory};
-  if (displayCoversWholeSphere(config)) {
+  if (displayMapIsIdentity(config)) {
     const Vec3d c{config.reference.x, config.reference.y, config.reference.z};
     return {RetargetMap::identity(config.cubeResolution, c),
-            "identity (the display covers the whole sphere)"};
+            "identity (closed display without bezels)"};
   }
   BakeDisplayOptions options;
   options.showProgress = showProgress;

@@ -10,11 +10,11 @@ namespace confvis::cli {
 
 struct MapSource {
   RetargetMap map;
-  std::string origin;  // for the report: "identity (display covers the whole sphere)" or a path
+  std::string origin;  // for the report: "identity (closed display without bezels)" or a path
 };
 
 // In order: --map DIR (a baked directory with ray.exr and geom.exr); the identity for a display
-// that covers the whole sphere; otherwise bakeDisplay (through the on-disk cache, so only the
+// whose map is the identity (displayMapIsIdentity); otherwise bakeDisplay (through the on-disk cache, so only the
 // first render of a display pays for the bake).
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
                          bool showProgress);

@@ -38,6 +38,18 @@ void attachMesh(EmbreeDevice& device, RTCScene scene, const Mesh& mesh, unsigned
 
 EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(scene) {
   validateScene(source_);
+  for (const Mesh& mesh : source_.meshes) {
+    ShadingMesh& flat = shadingMeshes_.emplace_back();
+    flat.triangles = mesh.triangles.data();
+    if (!mesh.normals.empty()) flat.normals = mesh.normals.data();
+    if (mesh.material < 0) continue;
+    const Material& material = source_.materials[static_cast<std::size_t>(mesh.material)];
+    flat.factor = material.baseColorFactor;
+    if (material.baseColorTexture >= 0 && !mesh.uvs.empty()) {
+      flat.uvs = mesh.uvs.data();
+      flat.texture = &source_.textures[static_cast<std::size_t>(material.baseColorTexture)];
+    }
+  }
   const auto start = std::chrono::steady_clock::now();
   scene_ = rtcNewScene(device.handle());
   try {
@@ -63,19 +75,5 @@ EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(sce
 }
 
 EmbreeScene::~EmbreeScene() { rtcReleaseScene(scene_); }
-
-glm::vec3 EmbreeScene::shadingNormal(unsigned geomID, unsigned primID, float u, float v,
-                                     const glm::vec3& geometricNormal) const {
-  const Mesh& mesh = source_.meshes[geomID];
-  if (!mesh.normals.empty()) {
-    const glm::uvec3 t = mesh.triangles[primID];
-    const glm::vec3 n = (1.0f - u - v) * mesh.normals[t.x] + u * mesh.normals[t.y] +
-                        v * mesh.normals[t.z];
-    const float length = glm::length(n);
-    if (length > 1e-20f) return n / length;
-  }
-  const float length = glm::length(geometricNormal);
-  return length > 0.0f ? geometricNormal / length : glm::vec3(0.0f);
-}
 
 }  // namespace confvis

@@ -28,22 +28,39 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
                           const ShadingOptions& options,
                           const std::array<std::uint32_t, kPacketSize>& seeds,
                           std::array<glm::vec3, kPacketSize>& colours) {
-  std::array<glm::vec3, kPacketSize> normals{};
+  // Structure of arrays: the gathers (normals, texels) per lane first, then the arithmetic
+  // (normalisation, headlight Lambert) over all 8 lanes without branches, which the compiler
+  // turns into vector sqrt and divide instead of one dependent chain per lane. Missed lanes
+  // carry zeros through and come out black.
+  alignas(32) std::array<float, kPacketSize> nx{}, ny{}, nz{}, dx{}, dy{}, dz{};
+  alignas(32) std::array<float, kPacketSize> red{}, green{}, blue{};
   for (int lane = 0; lane < kPacketSize; ++lane) {
-    colours[lane] = glm::vec3(0.0f);
     if (!hits.hit[lane]) continue;
-    glm::vec3 n = scene.shadingNormal(hits.geomID[lane], hits.primID[lane],
-                                      hits.barycentrics[lane].x, hits.barycentrics[lane].y,
-                                      hits.geometricNormal[lane]);
-    // Two-sided: turn the normal towards the viewer, so files with either winding shade alike.
-    if (glm::dot(n, hits.direction[lane]) > 0.0f) n = -n;
-    normals[lane] = n;
-    const glm::vec4 base =
-        scene.scene().baseColorAt(hits.geomID[lane], hits.primID[lane], hits.barycentrics[lane]);
-    colours[lane] = glm::vec3(base) * std::max(0.0f, -glm::dot(n, hits.direction[lane]));
+    const float u = hits.barycentrics[lane].x, v = hits.barycentrics[lane].y;
+    glm::vec3 n = scene.interpolatedNormal(hits.geomID[lane], hits.primID[lane], u, v);
+    if (!(glm::dot(n, n) > 1e-40f)) n = hits.geometricNormal[lane];  // none, or degenerate
+    nx[lane] = n.x, ny[lane] = n.y, nz[lane] = n.z;
+    const glm::vec3& d = hits.direction[lane];
+    dx[lane] = d.x, dy[lane] = d.y, dz[lane] = d.z;
+    const glm::vec4 base = scene.baseColor(hits.geomID[lane], hits.primID[lane], u, v);
+    red[lane] = base.r, green[lane] = base.g, blue[lane] = base.b;
+  }
+  alignas(32) std::array<float, kPacketSize> towardsViewer{};  // -1 or 1 / |n|, see below
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const float lengthSquared = nx[lane] * nx[lane] + ny[lane] * ny[lane] + nz[lane] * nz[lane];
+    const float facing = nx[lane] * dx[lane] + ny[lane] * dy[lane] + nz[lane] * dz[lane];
+    const float inverseLength = lengthSquared > 0.0f ? 1.0f / std::sqrt(lengthSquared) : 0.0f;
+    // Two-sided: the normal turned towards the viewer, so files with either winding shade alike;
+    // Lambert with the headlight is then |n . d| / |n|.
+    towardsViewer[lane] = facing > 0.0f ? -inverseLength : inverseLength;
+    const float lambert = std::abs(facing) * inverseLength;
+    colours[lane] = glm::vec3(red[lane] * lambert, green[lane] * lambert, blue[lane] * lambert);
   }
   if (!options.ambientOcclusion || options.occlusionSamples <= 0) return 0;
 
+  std::array<glm::vec3, kPacketSize> normals{};  // unit, towards the viewer
+  for (int lane = 0; lane < kPacketSize; ++lane)
+    normals[lane] = towardsViewer[lane] * glm::vec3(nx[lane], ny[lane], nz[lane]);
   std::uint64_t rays = 0;
   std::array<int, kPacketSize> open{};
   std::array<Random, kPacketSize> rngs;

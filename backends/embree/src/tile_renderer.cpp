@@ -43,11 +43,14 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
   std::array<glm::vec3, kPacketSize> colours{};
   PacketHits hits;
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
+  // Per-pixel random streams drive sub-pixel positions and occlusion rays only.
+  const bool seeded = job.samplesPerPixel > 1 || job.shading.ambientOcclusion;
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; x += kPacketSize) {
       const int count = std::min(kPacketSize, x1 - x);
       std::array<glm::vec4, kPacketSize> sum{};
-      for (int lane = 0; lane < count; ++lane) seeds[lane] = pixelSeed(job, x + lane, y);
+      if (seeded)
+        for (int lane = 0; lane < count; ++lane) seeds[lane] = pixelSeed(job, x + lane, y);
       for (int sample = 0; sample < job.samplesPerPixel; ++sample) {
         std::array<std::uint32_t, kPacketSize> sampleSeeds{};
         for (int lane = 0; lane < count; ++lane) {
@@ -58,7 +61,7 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
             rays.make((x + lane + offset.x) * job.pixelToWall.x,
                       (y + offset.y) * job.pixelToWall.y, paths[lane]);
           }
-          sampleSeeds[lane] = hashU32(seeds[lane] + static_cast<std::uint32_t>(sample));
+          if (seeded) sampleSeeds[lane] = hashU32(seeds[lane] + static_cast<std::uint32_t>(sample));
         }
         cameraRays += tracePaths(scene.handle(), paths.data(), count, hits);
         retraced += static_cast<std::uint64_t>(hits.retraced);

@@ -85,16 +85,30 @@ void requireWellFormed(const CubeMap& map) {
                                                std::to_string(map.faceSize));
 }
 
-// Texel (x, y) of `face`, where x or y may lie one texel beyond the face: such a texel is taken
-// from the neighbouring face, at the texel nearest to its direction.
-const float* fetchAcrossEdges(const CubeMap& map, CubeFace face, int x, int y) {
-  const int n = map.faceSize;
-  if (x >= 0 && x < n && y >= 0 && y < n) return map.face(face).at(x, y);
-  const Vec3d d = directionOnFace(kExrFrames, face, texelCentre(x, n), texelCentre(y, n));
-  CubeFace other;
-  double ox, oy;
-  locate(kExrFrames, d, n, other, ox, oy);
-  return map.face(other).at(clampIndex(ox, n), clampIndex(oy, n));
+// Adds the texels of `face` that interpolate linearly at direction d (taken on that face's plane,
+// whatever its major axis), with texel coordinates clamped to the texel centres: bilinear
+// inside, linear along the edge row beyond it.
+void addClampedBilinear(CubeFace face, const Vec3d& d, int n, double weight, TexelStandIn& out) {
+  const FaceFrame& f = kExrFrames[static_cast<int>(face)];
+  const double major = dot(d, f.normal);
+  auto footprint = [n](double coordinate, int& i0, double& t) {
+    const double c = std::clamp(coordinate - 0.5, 0.0, static_cast<double>(n - 1));
+    i0 = std::min(static_cast<int>(std::floor(c)), std::max(n - 2, 0));
+    t = n > 1 ? c - i0 : 0.0;
+  };
+  int x0, y0;
+  double tx, ty;
+  footprint((dot(d, f.right) / major + 1.0) * 0.5 * n, x0, tx);
+  footprint((dot(d, f.down) / major + 1.0) * 0.5 * n, y0, ty);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const double w = weight * (i ? tx : 1 - tx) * (j ? ty : 1 - ty);
+      if (w > 0) out.texels[out.count++] = {{face, x0 + i, y0 + j}, w};
+    }
+}
+
+CubeFace faceOfAxis(int axis, double sign) {
+  return static_cast<CubeFace>(2 * axis + (sign > 0 ? 0 : 1));
 }
 
 }  // namespace
@@ -157,11 +171,45 @@ std::array<float, 4> sampleNearest(const CubeMap& map, const Vec3d& dir) {
   return {t[0], t[1], t[2], t[3]};
 }
 
+TexelStandIn texelAcrossFaceEdge(CubeFace face, int x, int y, int n) {
+  requireFaceSize(n);
+  TexelStandIn out;
+  if (x >= 0 && x < n && y >= 0 && y < n) {
+    out.texels[out.count++] = {{face, x, y}, 1.0};
+    return out;
+  }
+  if (x < -1 || x > n || y < -1 || y > n)
+    throw Error(ErrorCode::InvalidInput, "cube map texel more than one texel beyond its face");
+  // Beyond the face, |c| = 1 + 1/n exceeds the face's own normal component 1: the major axis is
+  // that of the edge crossed, or a tie between two such axes beyond a corner (exact: both are
+  // the same rational number).
+  const Vec3d d = directionOnFace(kExrFrames, face, texelCentre(x, n), texelCentre(y, n));
+  std::array<double, 3> component{d.x, d.y, d.z};
+  double major = 0;
+  for (double c : component) major = std::max(major, std::abs(c));
+  int ties = 0;
+  for (double c : component) ties += std::abs(c) == major;
+  if (ties == 2) {
+    // Beyond a corner d lies on the edge between faces B and C, at coordinate alpha along it.
+    // The mean of B's and C's texels beside the edge at coordinate u stands for the edge point
+    // alpha = u / (1 - 1/(2n)) (their centres are 1/n in from the edge): so look both up at
+    // u = alpha (1 - 1/(2n)), i.e. scale the third component.
+    for (double& c : component)
+      if (std::abs(c) != major) c *= 1.0 - 0.5 / n;
+  }
+  const Vec3d lookup{component[0], component[1], component[2]};
+  for (int axis = 0; axis < 3; ++axis)
+    if (std::abs(component[axis]) == major)
+      addClampedBilinear(faceOfAxis(axis, component[axis]), lookup, n, 1.0 / ties, out);
+  return out;
+}
+
 std::array<float, 4> sampleBilinear(const CubeMap& map, const Vec3d& dir) {
   requireWellFormed(map);
+  const int n = map.faceSize;
   CubeFace face;
   double x, y;
-  locate(kExrFrames, dir, map.faceSize, face, x, y);
+  locate(kExrFrames, dir, n, face, x, y);
   // Texel centres sit at i + 0.5: the footprint is the 2x2 block around (x - 0.5, y - 0.5).
   const double fx = x - 0.5, fy = y - 0.5;
   const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
@@ -170,8 +218,13 @@ std::array<float, 4> sampleBilinear(const CubeMap& map, const Vec3d& dir) {
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i) {
       const double w = (i ? tx : 1 - tx) * (j ? ty : 1 - ty);
-      const float* t = fetchAcrossEdges(map, face, x0 + i, y0 + j);
-      for (int c = 0; c < 4; ++c) sum[c] += w * t[c];
+      if (w == 0) continue;
+      const TexelStandIn standIn = texelAcrossFaceEdge(face, x0 + i, y0 + j, n);
+      for (int k = 0; k < standIn.count; ++k) {
+        const WeightedTexel& r = standIn.texels[k];
+        const float* t = map.face(r.texel.face).at(r.texel.x, r.texel.y);
+        for (int c = 0; c < 4; ++c) sum[c] += w * r.weight * t[c];
+      }
     }
   return {static_cast<float>(sum[0]), static_cast<float>(sum[1]), static_cast<float>(sum[2]),
           static_cast<float>(sum[3])};

@@ -28,24 +28,8 @@ glm::vec4 Texture::texel(int x, int y) const {
   return {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
 }
 
-glm::vec4 Texture::sample(glm::vec2 uv) const {
+glm::vec4 Texture::sampleWrapped(glm::vec2 uv) const {
   if (width <= 0 || height <= 0) return glm::vec4(1.0f);
-  {
-    // Footprint inside the image (the common case, which renderers pay per hit): float maths,
-    // no wrapping.
-    const float x = uv.x * static_cast<float>(width) - 0.5f;
-    const float y = uv.y * static_cast<float>(height) - 0.5f;
-    if (x >= 0.0f && y >= 0.0f && x < static_cast<float>(width - 1) &&
-        y < static_cast<float>(height - 1)) {
-      const int ix = static_cast<int>(x), iy = static_cast<int>(y);
-      const float fx = x - static_cast<float>(ix), fy = y - static_cast<float>(iy);
-      const float* row0 = rgba.data() + 4 * (static_cast<std::size_t>(iy) * width + ix);
-      const float* row1 = row0 + 4 * static_cast<std::size_t>(width);
-      const glm::vec4 a(row0[0], row0[1], row0[2], row0[3]), b(row0[4], row0[5], row0[6], row0[7]);
-      const glm::vec4 c(row1[0], row1[1], row1[2], row1[3]), d(row1[4], row1[5], row1[6], row1[7]);
-      return glm::mix(glm::mix(a, b, fx), glm::mix(c, d, fx), fy);
-    }
-  }
   // Continuous texel coordinates with texel centres at integers.
   const double x = static_cast<double>(uv.x) * width - 0.5;
   const double y = static_cast<double>(uv.y) * height - 0.5;

@@ -38,7 +38,7 @@ struct BakedConformality {
 BakedConformality measureBakedConformality(const CubeMap& map,
                                            const ConformalityOptions& options = {});
 
-struct RoundTripStats {
+struct RoundTripErrors {
   std::size_t measured = 0;
   // Texels whose inverse lookup blends texels more than `discontinuityTexels` apart (its
   // footprint straddles the source cut); reported, not measured.
@@ -48,12 +48,24 @@ struct RoundTripStats {
   // Of all valid texels (discontinuous and invalid ones counted as failures): error below one
   // texel.
   double fractionBelowOneTexel = 0;
+  std::size_t valid() const { return measured + discontinuous + invalid; }
+};
+
+// The round trip over all valid texels, and split at the cut: a texel is on the boundary when it
+// lies within `boundaryTexels` 4-neighbour steps of an edge of `forward`, or its image does of
+// an edge of `inverse`. An edge is a texel with alpha < 0.5 (the display's rim) or one whose
+// direction jumps by more than `discontinuityTexels` to a neighbour (the source cut). There a
+// bilinear lookup blends texels from both sides of the cut or of the rim, so only the interior
+// can be held to the sub-texel bound; the boundary is a thin band, mostly below one texel.
+struct RoundTripStats {
+  int boundaryTexels = 2;
+  RoundTripErrors all, interior, boundary;
 };
 
 // For every texel d of `forward` with alpha >= 0.5: v = the stored direction, then a bilinear
 // lookup of v in `inverse` (as RetargetMap does), compared with d.
 RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, int stride = 1,
-                                double discontinuityTexels = 8.0);
+                                double discontinuityTexels = 8.0, int boundaryTexels = 2);
 
 struct CoverageStats {
   std::size_t sourceTexels = 0;  // geom texels with alpha >= 0.5: directions v in S
@@ -72,6 +84,7 @@ struct CoverageStats {
 CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels = 1.0, int stride = 1);
 
 nlohmann::json toJson(const BakedConformality& stats);
+nlohmann::json toJson(const RoundTripErrors& stats);
 nlohmann::json toJson(const RoundTripStats& stats);
 nlohmann::json toJson(const CoverageStats& stats);
 

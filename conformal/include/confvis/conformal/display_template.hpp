@@ -78,6 +78,12 @@ struct DisplayTemplates {
 // edgeLength <= 0 takes config.edgeLength.
 DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength = 0.0);
 
+// True exactly when the display's conformal map is the identity and needs no bake: a sphere
+// source and a closed display (walls enclosing the reference point) without bezels. A closed
+// display with bezels maps by the identity too, but its bezels are unlit (alpha 0), so it is
+// baked. Throws like checkVisibleRegion for a malformed display.
+bool displayMapIsIdentity(const DisplayConfig& config);
+
 // The checks of the visible region alone (walls hiding each other, touching without sharing an
 // edge, not forming a disk), as buildDisplayTemplates runs them.
 void checkVisibleRegion(const DisplayConfig& config);

@@ -66,10 +66,31 @@ CubeMap toVulkanLayout(const CubeMap& exrLayout);
 // --- Sampling (EXR layout). Both throw Error(InvalidInput) for a zero or non-finite direction
 // or a malformed map. ---
 std::array<float, 4> sampleNearest(const CubeMap& map, const Vec3d& dir);
-// Bilinear across face edges: a footprint texel that falls off the face is fetched from the
-// neighbouring face (the texel nearest to that texel's direction), so there is no seam. At the
-// cube's corners, where only three texels meet, the missing fourth repeats one of them.
+// Bilinear across face edges, second order everywhere: a footprint texel that falls off the face
+// stands for the direction of its centre on the face's plane extended past the edge, and takes
+// the value there interpolated on the neighbouring face(s) (texelAcrossFaceEdge). Seamless: the
+// error at edges and corners is no larger than inside a face.
 std::array<float, 4> sampleBilinear(const CubeMap& map, const Vec3d& dir);
+
+struct TexelRef {
+  CubeFace face = CubeFace::PosX;
+  int x = 0, y = 0;
+};
+struct WeightedTexel {
+  TexelRef texel;
+  double weight = 0;
+};
+// The in-face texels whose weighted sum stands in for texel (x, y) of `face`, where x and y may
+// lie one texel beyond the face (-1 or n). Inside the face: the texel itself. Beyond an edge: the
+// direction of that texel's centre on the face's extended plane, interpolated linearly along the
+// neighbouring face's edge row (an O(1/n^2) error, where the nearest texel is O(1/n) off). Beyond
+// a corner that direction lies on the edge between the two other faces there: their two texels
+// beside it, averaged. Weights are positive and sum to one; `count` of `texels` are used.
+struct TexelStandIn {
+  std::array<WeightedTexel, 8> texels;
+  int count = 0;
+};
+TexelStandIn texelAcrossFaceEdge(CubeFace face, int x, int y, int n);
 
 // --- Files ---
 // OpenEXR cube environment map: N x 6N, faces stacked top to bottom, float32 RGBA, ZIP,

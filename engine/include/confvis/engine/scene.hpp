@@ -21,7 +21,24 @@ struct Texture {
 
   glm::vec4 texel(int x, int y) const;  // x, y wrapped (repeat)
   // Bilinear filtering with repeat wrap; texel centres at ((x + 0.5) / width, (y + 0.5) / height).
-  glm::vec4 sample(glm::vec2 uv) const;
+  // Inline: renderers call it per hit, and nearly every footprint lies inside the image (float
+  // maths, no wrapping); the rest goes to sampleWrapped.
+  glm::vec4 sample(glm::vec2 uv) const {
+    const float x = uv.x * static_cast<float>(width) - 0.5f;
+    const float y = uv.y * static_cast<float>(height) - 0.5f;
+    if (!(x >= 0.0f && y >= 0.0f && x < static_cast<float>(width - 1) &&
+          y < static_cast<float>(height - 1)))
+      return sampleWrapped(uv);
+    const int ix = static_cast<int>(x), iy = static_cast<int>(y);
+    const float fx = x - static_cast<float>(ix), fy = y - static_cast<float>(iy);
+    const float* row0 = rgba.data() + 4 * (static_cast<std::size_t>(iy) * width + ix);
+    const float* row1 = row0 + 4 * static_cast<std::size_t>(width);
+    const glm::vec4 a(row0[0], row0[1], row0[2], row0[3]), b(row0[4], row0[5], row0[6], row0[7]);
+    const glm::vec4 c(row1[0], row1[1], row1[2], row1[3]), d(row1[4], row1[5], row1[6], row1[7]);
+    return glm::mix(glm::mix(a, b, fx), glm::mix(c, d, fx), fy);
+  }
+  // The general case of sample: any uv, repeat wrap (1 for an empty texture).
+  glm::vec4 sampleWrapped(glm::vec2 uv) const;
 };
 
 // The glTF metallic-roughness model reduced to what both renderers need: the base colour.

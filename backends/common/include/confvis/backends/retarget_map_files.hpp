@@ -1,5 +1,5 @@
 #pragma once
-// Baked retarget maps on disk, and the one display that needs no bake.
+// Baked retarget maps on disk.
 #include <filesystem>
 
 #include <glm/glm.hpp>
@@ -16,10 +16,5 @@ namespace confvis {
 // maps differ in size.
 RetargetMap readRetargetMapDirectory(const std::filesystem::path& directory,
                                      const glm::dvec3& reference);
-
-// True when the display's lit walls cover every direction around its reference point (a
-// 6-sided CAVE seen from inside): its conformal map is the identity and needs no bake. Checked
-// on the texel-centre directions of a cube map of `samplesPerFaceEdge`^2 texels per face.
-bool displayCoversWholeSphere(const DisplayConfig& config, int samplesPerFaceEdge = 32);
 
 }  // namespace confvis
