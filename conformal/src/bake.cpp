@@ -115,11 +115,27 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
       const double k = x - span.xBegin;
       const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
       const double tolerance = -1e-12 * hw;
-      bool inside = false;
-      if (current >= 0) {
+      // Homogeneous barycentric coordinates in `current`; the most negative names the edge
+      // crossed.
+      auto outsideCorner = [&] {
         const double l1 = row1[0] * hx + row1[1] * hy + row1[2] * hw;
         const double l2 = row2[0] * hx + row2[1] * hy + row2[2] * hw;
-        inside = l1 >= tolerance && l2 >= tolerance && hw - l1 - l2 >= tolerance;
+        const double l0 = hw - l1 - l2;
+        if (l0 >= tolerance && l1 >= tolerance && l2 >= tolerance) return -1;
+        return l0 <= l1 && l0 <= l2 ? 0 : l1 <= l2 ? 1 : 2;
+      };
+      bool inside = false;
+      if (current >= 0) {
+        const int crossed = outsideCorner();
+        inside = crossed < 0;
+        // A texel that left the triangle is most often in the neighbour across the edge it
+        // crossed: test that one before a full point location.
+        const int next = inside ? -1 : codomainDisk.neighbour(current, crossed);
+        if (next >= 0 && codomainDisk.affine(next).valid) {
+          select(next);
+          inside = outsideCorner() < 0;
+          if (inside) hint = next;
+        }
       }
       if (inside) {
         const Vec3d sum = hx * toDirection[0] + hy * toDirection[1] + hw * toDirection[2];
@@ -151,6 +167,13 @@ void validateDisplayMap(const DisplayMap& map) {
 
 RetargetMap bakeRetargetMap(const DisplayMap& map, int resolution, const BakeOptions& options,
                             BakeTimings* timings) {
+  RetargetMap result;
+  bakeRetargetMapInto(map, resolution, options, result, timings);
+  return result;
+}
+
+void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOptions& options,
+                         RetargetMap& result, BakeTimings* timings) {
   if (resolution < 1 || resolution > kMaxResolution)
     throw Error(ErrorCode::InvalidInput, "bake resolution must be between 1 and " +
                                              std::to_string(kMaxResolution) + " texels, got " +
@@ -169,10 +192,9 @@ RetargetMap bakeRetargetMap(const DisplayMap& map, int resolution, const BakeOpt
   std::unique_ptr<Progress> progress;
   if (options.showProgress) progress = std::make_unique<Progress>("bake", 12 * bands, true);
 
-  RetargetMap result;
   result.reference = options.reference;
-  result.ray = CubeMap(resolution);
-  result.geom = CubeMap(resolution);
+  for (CubeMap* cube : {&result.ray, &result.geom})
+    if (cube->faceSize != resolution) *cube = CubeMap(resolution);
   std::vector<std::uint8_t> rayCovered, geomCovered;
   stage = Clock::now();
   bakeDirectionMap(map.target, map.source, sourceDisk, options.threads, result.ray, rayCovered,
@@ -185,7 +207,16 @@ RetargetMap bakeRetargetMap(const DisplayMap& map, int resolution, const BakeOpt
   stage = Clock::now();
   detail::parallelFor(2, options.threads, [&](std::size_t which) {
     CubeMap& cube = which == 0 ? result.ray : result.geom;
-    detail::extendPastBoundary(cube, which == 0 ? rayCovered : geomCovered);
+    const std::vector<std::uint8_t>& covered = which == 0 ? rayCovered : geomCovered;
+    detail::extendPastBoundary(cube, covered);
+    // Uncovered texels are invalid; a reused map may hold an earlier bake's alpha there.
+    const std::size_t perFace = static_cast<std::size_t>(resolution) * resolution;
+    for (int f = 0; f < 6; ++f) {
+      float* texel = cube.faces[f].pixels.data();
+      const std::uint8_t* mark = covered.data() + f * perFace;
+      for (std::size_t i = 0; i < perFace; ++i)
+        if (!mark[i]) texel[4 * i + 3] = 0.0f;
+    }
     // Never NaN: every path above normalises a non-zero vector, but a broken invariant must not
     // reach a renderer.
     for (const ImageRGBA& face : cube.faces)
@@ -195,7 +226,6 @@ RetargetMap bakeRetargetMap(const DisplayMap& map, int resolution, const BakeOpt
   if (progress) progress->finish();
   t.total = secondsSince(start);
   if (timings) *timings = t;
-  return result;
 }
 
 }  // namespace confvis

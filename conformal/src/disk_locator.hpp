@@ -37,6 +37,8 @@ class DiskLocator {
     bool valid;  // false for a triangle of (near) zero area, which is never returned
   };
   const Affine& affine(int triangle) const { return affine_[triangle]; }
+  // The triangle across the edge opposite `corner` of `triangle`; -1 on the boundary.
+  int neighbour(int triangle, int corner) const { return neighbour_[triangle][corner]; }
 
  private:
   std::array<double, 3> barycentric(int t, std::complex<double> z) const;

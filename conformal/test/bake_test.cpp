@@ -210,6 +210,29 @@ TEST(Bake, ThreadCountDoesNotChangeTheResult) {
   }
 }
 
+TEST(Bake, BakingIntoAReusedMapGivesTheFreshResult) {
+  // First a bake that covers (alpha 1) texels the second leaves uncovered: a reused map must not
+  // keep that alpha, nor any other earlier value.
+  const DisplayMap wide = sameSourceAndTarget(makeCapMesh(20, 0.95 * kPi));
+  SphereDiskMesh target = makeCapMesh(14, 0.45 * kPi);
+  for (Vec3d& p : target.sphere) p = test::rotate(p, normalized(Vec3d{1, 0.5, 0}), 0.7);
+  const DisplayMap narrow{makeCapMesh(20, 0.9 * kPi), target};
+  RetargetMap reused;
+  bakeRetargetMapInto(wide, 32, {}, reused);
+  const float* before = reused.ray.faces[0].pixels.data();
+  bakeRetargetMapInto(narrow, 32, {}, reused);
+  EXPECT_EQ(reused.ray.faces[0].pixels.data(), before);  // the storage was reused
+  const RetargetMap fresh = bakeRetargetMap(narrow, 32);
+  std::size_t uncovered = 0;
+  for (int f = 0; f < 6; ++f) {
+    EXPECT_EQ(reused.ray.faces[f].pixels, fresh.ray.faces[f].pixels) << f;
+    EXPECT_EQ(reused.geom.faces[f].pixels, fresh.geom.faces[f].pixels) << f;
+    for (std::size_t i = 3; i < fresh.ray.faces[f].pixels.size(); i += 4)
+      uncovered += fresh.ray.faces[f].pixels[i] == 0.0f;
+  }
+  EXPECT_GT(uncovered, 6u * 32 * 32 / 4);  // the narrow cap leaves much of the sphere invalid
+}
+
 TEST(Bake, MalformedInputGivesOneClearError) {
   const DisplayMap good = sameSourceAndTarget(makeCapMesh(4, 1.0));
   auto expectError = [](const DisplayMap& map, int resolution, const std::string& fragment) {

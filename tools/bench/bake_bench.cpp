@@ -4,6 +4,9 @@
 // moved one (a tracked head). The baseline, measured in the same run, is filling both maps with
 // the identity (RetargetMap::identity, one thread): the least a bake at that resolution must do.
 // Wall times (ms) per stage, and the process CPU time of the whole run and of the bake alone.
+// Each run bakes twice from the same display map: once into fresh cube maps (bakeRetargetMap)
+// and once into the previous run's maps (bakeRetargetMapInto, as a tracked head re-bakes); the
+// total is config -> template -> flow -> alignment -> reused bake. CPU columns give min/mean.
 //
 //   build/confvis_bench_bake [--config configs/cave5.json] [--edges 0.2,0.1,0.05]
 //                            [--resolutions 256,512,1024] [--repeat 5] [--threads 0]
@@ -60,8 +63,8 @@ double stage(const DisplayMap& map, const char* key) {
 }
 
 struct Sample {
-  double templ = 0, flow = 0, alignment = 0, bake = 0, ray = 0, geom = 0, extend = 0, total = 0;
-  double cpu = 0, bakeCpu = 0;
+  double templ = 0, flow = 0, alignment = 0, bake = 0, locators = 0, ray = 0, geom = 0, extend = 0, total = 0;
+  double cpu = 0, bakeCpu = 0, freshBakeCpu = 0;
 };
 
 }  // namespace
@@ -74,7 +77,7 @@ int main(int argc, char** argv) {
   app.add_option("--config", configPath, "Display config")->capture_default_str();
   app.add_option("--edges", edges, "Refinement edge lengths, metres")->capture_default_str();
   app.add_option("--resolutions", resolutions, "Cube-map face sizes")->capture_default_str();
-  app.add_option("--repeat", repeat, "Runs per row (the median is reported)")->capture_default_str();
+  app.add_option("--repeat", repeat, "Runs per row (median wall times; CPU min/mean)")->capture_default_str();
   app.add_option("--threads", threads, "Bake threads (0: one per core)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
@@ -82,10 +85,10 @@ int main(int argc, char** argv) {
   const Vec3d moved{0.15, 0.1, -0.2};  // a head 27 cm off centre
   std::printf("config %s, %u hardware threads, bake threads %d, median of %d runs; times in ms\n",
               configPath.c_str(), std::thread::hardware_concurrency(), threads, repeat);
-  std::printf("%-6s %5s %-9s %6s %6s | %8s %8s %9s %8s (%6s %6s %6s) | %8s | %8s %8s | %8s %6s | %s\n",
+  std::printf("%-6s %5s %-9s %6s %6s | %8s %8s %9s %8s (%6s %6s %6s %6s) | %8s | %15s %15s %15s | %8s %6s | %s\n",
               "edge", "res", "reference", "S tris", "T tris", "template", "flow", "alignment",
-              "bake", "ray", "geom", "extend", "total", "cpu", "bake cpu", "baseline", "bake/b",
-              "ray ratio p50/p95/max, flipped");
+              "bake", "loc", "ray", "geom", "extend", "total", "cpu min/mean", "bake cpu min/mn",
+              "fresh bake cpu", "baseline", "bake/b", "ray ratio p50/p95/max, flipped");
   for (double edge : parseList<double>(edges))
     for (int n : parseList<int>(resolutions))
       for (const bool movedReference : {false, true}) {
@@ -96,7 +99,9 @@ int main(int argc, char** argv) {
         const DisplayConfig config = effectiveBakeConfig(base, overrides);
         std::vector<Sample> samples;
         DisplayMap last;
-        RetargetMap map;
+        RetargetMap map;  // as left by the previous frame's bake
+        map.ray = CubeMap(n);
+        map.geom = CubeMap(n);
         for (int r = 0; r < repeat; ++r) {
           const auto start = Clock::now();
           const double cpuStart = processCpuSeconds();
@@ -106,17 +111,21 @@ int main(int argc, char** argv) {
           bake.reference = {config.reference.x, config.reference.y, config.reference.z};
           bake.threads = threads;
           BakeTimings t;
-          map = bakeRetargetMap(last, n, bake, &t);
+          bakeRetargetMapInto(last, n, bake, map, &t);
           Sample s;
           s.total = secondsSince(start);
           s.cpu = processCpuSeconds() - cpuStart;
           s.bakeCpu = processCpuSeconds() - bakeCpuStart;
+          const double freshStart = processCpuSeconds();
+          const RetargetMap fresh = bakeRetargetMap(last, n, bake);
+          s.freshBakeCpu = processCpuSeconds() - freshStart;
           s.templ = stage(last, "template");
           s.flow = stage(last, "flow");
           s.alignment = stage(last, "alignment");
           s.bake = t.total;
           s.ray = t.ray;
           s.geom = t.geom;
+          s.locators = t.locators;
           s.extend = t.extend;
           samples.push_back(s);
         }
@@ -131,14 +140,22 @@ int main(int argc, char** argv) {
           for (const Sample& s : samples) v.push_back(s.*field * 1e3);
           return median(v);
         };
+        auto minMean = [&](double Sample::*field) {
+          double lo = 1e300, sum = 0;
+          for (const Sample& s : samples) lo = std::min(lo, s.*field * 1e3), sum += s.*field * 1e3;
+          char text[32];
+          std::snprintf(text, sizeof text, "%.1f/%.1f", lo, sum / static_cast<double>(samples.size()));
+          return std::string(text);
+        };
         const BakedConformality q =
             measureBakedConformality(map.ray, {.margin = 2, .discontinuityTolerance = 0.5, .stride = std::max(1, n / 256)});
-        std::printf("%-6.2f %5d %-9s %6zu %6zu | %8.2f %8.2f %9.2f %8.2f (%6.2f %6.2f %6.2f) | %8.2f | %8.2f %8.2f | %8.2f %6.2f | %.4f/%.4f/%.3f, %zu\n",
+        std::printf("%-6.2f %5d %-9s %6zu %6zu | %8.2f %8.2f %9.2f %8.2f (%6.2f %6.2f %6.2f %6.2f) | %8.2f | %15s %15s %15s | %8.2f %6.2f | %.4f/%.4f/%.3f, %zu\n",
                     edge, n, movedReference ? "moved" : "config", last.source.triangles.size(),
                     last.target.triangles.size(), med(&Sample::templ), med(&Sample::flow),
-                    med(&Sample::alignment), med(&Sample::bake), med(&Sample::ray),
+                    med(&Sample::alignment), med(&Sample::bake), med(&Sample::locators), med(&Sample::ray),
                     med(&Sample::geom), med(&Sample::extend), med(&Sample::total),
-                    med(&Sample::cpu), med(&Sample::bakeCpu),
+                    minMean(&Sample::cpu).c_str(), minMean(&Sample::bakeCpu).c_str(),
+                    minMean(&Sample::freshBakeCpu).c_str(),
                     median(baseline) * 1e3, med(&Sample::bake) / (median(baseline) * 1e3),
                     q.ratioP50, q.ratioP95, q.ratioMax, q.flipped);
         std::fflush(stdout);

@@ -42,6 +42,11 @@ struct BakeTimings {  // seconds
 // triangles) and for a resolution outside 1..8192.
 RetargetMap bakeRetargetMap(const DisplayMap& map, int resolution, const BakeOptions& options = {},
                             BakeTimings* timings = nullptr);
+// The same bake into `out`, reusing its cube maps' storage when they already have `resolution`
+// texels per face (every texel is rewritten): a tracked head re-bakes without allocating and
+// first-touching 2 x 6 N^2 RGBA floats each time. The result equals bakeRetargetMap's.
+void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOptions& options,
+                         RetargetMap& out, BakeTimings* timings = nullptr);
 
 // The mesh checks of bakeRetargetMap, also used before writing a DisplayMap to files.
 void validateDisplayMap(const DisplayMap& map);
