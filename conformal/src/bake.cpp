@@ -3,12 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
 #include "cube_texels.hpp"
 #include "disk_locator.hpp"
+#include "parallel_for.hpp"
 #include "sphere_raster.hpp"
 
 namespace confvis {
@@ -184,8 +186,14 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
   BakeTimings t;
   const auto start = Clock::now();
   auto stage = Clock::now();
-  const detail::DiskLocator sourceDisk(map.source.disk, map.source.triangles);
-  const detail::DiskLocator targetDisk(map.target.disk, map.target.triangles);
+  // Both point-location structures at once (a tracked head re-bakes: wall time counts).
+  std::optional<detail::DiskLocator> sourceLocator, targetLocator;
+  detail::parallelFor(2, options.threads, [&](std::size_t which) {
+    if (which == 0) sourceLocator.emplace(map.source.disk, map.source.triangles);
+    else targetLocator.emplace(map.target.disk, map.target.triangles);
+  });
+  const detail::DiskLocator& sourceDisk = *sourceLocator;
+  const detail::DiskLocator& targetDisk = *targetLocator;
   t.locators = secondsSince(stage);
 
   const int bands = (resolution + detail::kRasterBandRows - 1) / detail::kRasterBandRows;
