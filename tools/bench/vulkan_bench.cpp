@@ -22,6 +22,7 @@
 #include "confvis/backends/embree/embree_backend.hpp"
 #include "confvis/backends/vulkan_backend.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/png_io.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_image_checks.hpp"  // closed-form image comparison shared with the tests
@@ -134,7 +135,35 @@ double gapFraction(const RenderResult& result) {
   return pixels ? double(gaps) / double(pixels) : 0.0;
 }
 
-const std::vector<double> kThresholds = {0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 0.0};  // 0: none
+// Tessellation thresholds of the sweeps in pixels (0: no tessellation); --thresholds replaces them.
+std::vector<double> sweepThresholds = {0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 0.0};
+
+// Writes every wall of `result` as DIR/PREFIX-WALL.png, and where `reference` is given a mask of
+// the pixels off it by more than 0.1 (white) as DIR/PREFIX-WALL-off.png; nothing without DIR.
+void saveImages(const std::filesystem::path& dir, const std::string& prefix,
+                const RenderResult& result, const RenderResult* reference) {
+  if (dir.empty()) return;
+  std::filesystem::create_directories(dir);
+  for (std::size_t i = 0; i < result.images.size(); ++i) {
+    const WallImage& image = result.images[i];
+    writePng(dir / (prefix + "-" + image.wall + ".png"), image.image);
+    if (!reference || i >= reference->images.size()) continue;
+    const ImageRGBA& other = reference->images[i].image;
+    if (other.width != image.image.width || other.height != image.image.height) continue;
+    ImageRGBA mask = image.image;
+    for (int y = 0; y < mask.height; ++y)
+      for (int x = 0; x < mask.width; ++x) {
+        float off = 0.0f;
+        for (int c = 0; c < 4; ++c)
+          off = std::max(off, std::abs(image.image.at(x, y)[c] - other.at(x, y)[c]));
+        const float v = off > 0.1f ? 1.0f : 0.0f;
+        float* m = mask.at(x, y);
+        m[0] = m[1] = m[2] = v;
+        m[3] = 1.0f;
+      }
+    writePng(dir / (prefix + "-" + image.wall + "-off.png"), mask);
+  }
+}
 
 std::string thresholdName(double error) {
   return error > 0 ? std::to_string(error).substr(0, 5) : "no tess";
@@ -155,7 +184,8 @@ Timing timeThreshold(const VulkanOptions& options, double error, const Scene& sc
 // time relative to plain and the share of pixels off Embree's render (when not skipped).
 // Returns the device's name.
 std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& config, double scale,
-                   int bakeResolution, bool skipEmbree, int repeats) {
+                          int bakeResolution, bool skipEmbree, int repeats,
+                          const std::filesystem::path& imageDir) {
   BakeDisplayOptions bakeOptions;
   bakeOptions.useCache = false;
   bakeOptions.resolution = bakeResolution;
@@ -170,6 +200,7 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
     EmbreeBackend backend;
     backend.setScene(scene);
     embree = backend.render(config, &map, settings);
+    saveImages(imageDir, "embree", *embree, nullptr);
   }
   settings.mode = RenderMode::Plain;
   auto backend = makeVulkanBackend(options);
@@ -180,8 +211,10 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
               "threshold\n%-10s %9s %7s %9s %7s %12s %8s %12s\n",
               config.name.c_str(), bakeResolution, "error px", "conf s", "ratio", "conf cpu",
               "ratio", "off Embree", "gaps", "tessellated");
-  for (double error : kThresholds) {
+  for (double error : sweepThresholds) {
     const Timing t = timeThreshold(options, error, scene, config, map, settings, repeats);
+    saveImages(imageDir, error > 0.0 ? "vulkan-" + thresholdName(error) + "px" : "vulkan-untessellated",
+               t.last, embree ? &*embree : nullptr);
     char offEmbree[16] = "-";
     if (embree)
       std::snprintf(offEmbree, sizeof offEmbree, "%.2f%%",
@@ -203,7 +236,9 @@ int main(int argc, char** argv) {
   double scale = 0.25;
   int repeats = 3;
   int bakeResolution = 128;
-  bool skip1m = false, skip20k = false, skipSweep = false, skipEmbree = false;
+  std::string imageDir;
+  bool skip1m = false, skip20k = false, skipSweep = false, skipZoomSweep = false,
+       skipEmbree = false;
   app.add_option("--device", device, "Vulkan device (name part or index; default: auto)");
   app.add_option("--config", configName, "display config in configs/ (name or path)");
   app.add_option("--scale", scale, "resolution scale of the walls")->check(CLI::PositiveNumber);
@@ -212,10 +247,18 @@ int main(int argc, char** argv) {
   app.add_flag("--skip-1m", skip1m, "leave out the ~1M-triangle scene");
   app.add_flag("--skip-20k", skip20k, "leave the ~20k-triangle scene out of the timing table");
   app.add_flag("--skip-sweep", skipSweep, "leave out the threshold sweeps");
+  app.add_flag("--skip-zoom-sweep", skipZoomSweep,
+               "leave out the threshold sweeps under the zoom map (keep the baked-map one)");
+  app.add_option("--thresholds", sweepThresholds,
+                 "tessellation thresholds of the sweeps in pixels, 0 for none")
+      ->delimiter(',');
   app.add_flag("--skip-embree", skipEmbree,
                "no Embree render in the baked-map sweep (no image difference column)");
   app.add_option("--bake-resolution", bakeResolution, "texels per face of the baked map")
       ->check(CLI::PositiveNumber);
+  app.add_option("--save-images", imageDir,
+                 "write the baked-map sweep's renders (and masks of the pixels off Embree) as PNG "
+                 "files into this directory");
   CLI11_PARSE(app, argc, argv);
   try {
     const std::filesystem::path configPath =
@@ -267,7 +310,7 @@ int main(int argc, char** argv) {
     // of pixels off the closed form.
     for (const auto& [sceneName, flat] :
          {std::pair<const char*, bool>{"sphere-20k", false}, {"cube-4x4", true}}) {
-      if (skipSweep) break;
+      if (skipSweep || skipZoomSweep) break;
       const Scene scene = flat ? checkerCube(4) : sphereWithTriangles(20000);
       std::printf("\n%s under the zoom map, by tessellation threshold\n%-10s %9s %7s %9s %7s "
                   "%18s %12s\n",
@@ -277,7 +320,7 @@ int main(int argc, char** argv) {
       backend->setScene(scene);
       const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
       settings.mode = RenderMode::Conformal;
-      for (double error : kThresholds) {
+      for (double error : sweepThresholds) {
         const Timing t = timeThreshold(options, error, scene, config, zoom, settings, repeats);
         std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %17.2f%% %12zu\n",
                     thresholdName(error).c_str(),
@@ -288,7 +331,8 @@ int main(int argc, char** argv) {
       }
     }
     if (!skipSweep)
-      device = bakedMapSweep(options, config, scale, bakeResolution, skipEmbree, repeats);
+      device = bakedMapSweep(options, config, scale, bakeResolution, skipEmbree, repeats,
+                             imageDir);
     std::printf("\ndevice: %s\n", device.c_str());
   } catch (const Error& e) {
     std::fprintf(stderr, "confvis_bench_vulkan: %s\n", e.what());
