@@ -4,7 +4,8 @@
 // warped midpoint and its tessellation level once. The triangles on both sides read the same
 // result (classify_triangles.comp, then warp.tesc), so shared edges get the same subdivision
 // and leave no cracks; the midpoint's warp is the costly part and is no longer done per triangle
-// and per view.
+// and per view. The level's sign tells whether the edge may lose pieces to confvisDropTriangle
+// (negative: it spans the cut, or part of it lies outside the source field).
 #include "confvis_warp.glsl"
 #include "confvis_prepass_common.glsl"
 
@@ -14,9 +15,11 @@ void main() {
   uint e = gl_GlobalInvocationID.x;
   if (e >= prepass.count) return;
   uvec2 v = edges[e];
-  vec3 midpoint;
-  float segments = confvisEdgeSegments(vertexRelative(v.x), vertexRelative(v.y), warped[v.x].xyz,
-                                       warped[v.y].xyz, prepass.maxErrorAngle,
-                                       prepass.maxSegmentAngle, midpoint);
-  edgeLevels[e] = vec4(midpoint, segments);
+  vec4 midpoint;
+  bool acrossCut;
+  float segments = confvisMeasureEdge(vertexRelative(v.x), vertexRelative(v.y), warped[v.x].xyz,
+                                      warped[v.y].xyz, prepass.maxErrorAngle,
+                                      prepass.maxSegmentAngle, midpoint, acrossCut);
+  bool mayDrop = acrossCut || min(midpoint.w, min(warped[v.x].w, warped[v.y].w)) < 1.0;
+  edgeLevels[e] = vec4(midpoint.xyz, mayDrop ? -segments : segments);
 }

@@ -2,24 +2,56 @@
 #extension GL_GOOGLE_include_directive : require
 // Conformal pre-pass, once per frame and mesh: sorts the mesh's triangles into those the warp
 // leaves straight enough to draw flat between their warped corners (the common case: drawn by
-// the cheap pipeline) and those that need tessellation or lie on the cut (drawn by the
-// tessellation pipeline, which subdivides, culls and drops exactly as if it drew everything).
-// Triangles entirely outside the source field are dropped here. Edge levels come from
-// classify_edges.comp; tessellated triangles copy theirs next to their indices for warp.tesc.
+// the cheap pipeline), those that need tessellation only (tessellation pipeline without a
+// geometry shader) and those that may lose pieces to confvisDropTriangle: on or next to the cut,
+// partly outside the source field or strongly distorted (tessellation and the geometry shader
+// that drops pieces, exactly as if it drew everything; lavapipe runs it in its single-threaded
+// draw stage, so only these pay for it). Triangles entirely outside the source field are dropped
+// here. Edge levels come from classify_edges.comp; tessellated triangles copy theirs next to
+// their indices for warp.tesc.
 #include "confvis_warp.glsl"
 #include "confvis_prepass_common.glsl"
 
 layout(local_size_x = 64) in;
 
 void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
-  uint slot = atomicAdd(commands[2 * prepass.mesh + list].indexCount, 3u);
-  uint at = prepass.firstIndex + slot;
-  if (list == 0u) {
+  uint slot = atomicAdd(commands[3u * prepass.mesh + list].indexCount, 3u);
+  if (list == kListFlat) {
+    uint at = prepass.firstIndex + slot;
     simpleIndices[at] = i0; simpleIndices[at + 1u] = i1; simpleIndices[at + 2u] = i2;
-  } else {
-    complexIndices[at] = i0; complexIndices[at + 1u] = i1; complexIndices[at + 2u] = i2;
-    for (uint k = 0u; k < 3u; ++k) patchLevels[at + k] = levels[k];
+    return;
   }
+  // The dropping list fills the mesh's range from its end, back to front.
+  uint at = list == kListTessellated ? prepass.firstIndex + slot
+                                     : prepass.firstIndex + 3u * prepass.count - 3u - slot;
+  complexIndices[at] = i0; complexIndices[at + 1u] = i1; complexIndices[at + 2u] = i2;
+  for (uint k = 0u; k < 3u; ++k) patchLevels[at + k] = levels[k];
+}
+
+// A triangle that the warp stretches more than 4 times, flips or flattens 4 times.
+bool distorted(vec3 r0, vec3 r1, vec3 r2, vec3 w0, vec3 w1, vec3 w2) {
+  float virtualSize = max(confvisAngle(r0, r1), max(confvisAngle(r1, r2), confvisAngle(r2, r0)));
+  float warpedSize = max(confvisAngle(w0, w1), max(confvisAngle(w1, w2), confvisAngle(w2, w0)));
+  bool flipped = dot(cross(r1 - r0, r2 - r0), r0 + r1 + r2) *
+                     dot(cross(w1 - w0, w2 - w0), w0 + w1 + w2) < 0.0;
+  return warpedSize > 4.0 * virtualSize || flipped ||
+         4.0 * confvisRoundness(w0, w1, w2) < confvisRoundness(r0, r1, r2);
+}
+
+// A patch distorted as a whole or in one of the four halves-sized triangles between its corners
+// and edge midpoints (m[k]: midpoint of the edge opposite corner k, wm[k] its warp): next to a
+// singular point or the cut (near the ends of a cut, where the jump is too small for the edge
+// test), where its tessellated pieces may meet confvisDropTriangle's 16-times rules even though
+// the patch's edges do not.
+bool distortedPatch(vec3 r[3], vec4 w[3], vec3 wm[3]) {
+  vec3 m[3] = vec3[3](0.5 * (r[1] + r[2]), 0.5 * (r[2] + r[0]), 0.5 * (r[0] + r[1]));
+  bool any = distorted(r[0], r[1], r[2], w[0].xyz, w[1].xyz, w[2].xyz) ||
+             distorted(m[0], m[1], m[2], wm[0], wm[1], wm[2]);
+  for (int k = 0; k < 3; ++k) {
+    int i = (k + 1) % 3, j = (k + 2) % 3;  // corner k with the midpoints of its two edges
+    any = any || distorted(r[k], m[j], m[i], w[k].xyz, wm[j], wm[i]);
+  }
+  return any;
 }
 
 void main() {
@@ -36,10 +68,21 @@ void main() {
   }
   if (max(w[0].w, max(w[1].w, w[2].w)) < 0.5) return;  // nothing of it is shown
   vec4 levels[3];
-  bool simple = !confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.minGap);
+  bool drops = confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.minGap);
+  bool bent = false, mayDrop = drops;
+  vec3 wm[3];
   for (uint k = 0u; k < 3u; ++k) {
     levels[k] = edgeLevels[triangleEdges[base + k]];
-    simple = simple && levels[k].w <= 1.0;
+    mayDrop = mayDrop || levels[k].w < 0.0;
+    levels[k].w = abs(levels[k].w);
+    bent = bent || levels[k].w > 1.0;
+    wm[k] = levels[k].xyz;
   }
-  append(simple ? 0u : 1u, i[0], i[1], i[2], levels);
+  mayDrop = mayDrop || (bent && distortedPatch(r, w, wm));
+  // Unbent and not dropped as a whole: the dropping pipeline would draw it unchanged.
+  uint list = drops     ? kListDropping
+              : !bent   ? kListFlat
+              : mayDrop ? kListDropping
+                        : kListTessellated;
+  append(list, i[0], i[1], i[2], levels);
 }

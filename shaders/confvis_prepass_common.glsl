@@ -20,17 +20,23 @@ layout(set = 2, binding = 1, std430) readonly buffer Indices { uint indices[]; }
 layout(set = 2, binding = 2, std430) buffer Warped { vec4 warped[]; };
 layout(set = 2, binding = 3, std430) writeonly buffer SimpleIndices { uint simpleIndices[]; };
 layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint complexIndices[]; };
-// Two commands per mesh: [2 m] simple, [2 m + 1] tessellated.
+// Three commands per mesh: [3 m] flat, [3 m + 1] tessellated, [3 m + 2] tessellated with the
+// geometry shader that drops pieces (kListFlat... below). Both tessellated lists share
+// ComplexIndices and PatchLevels: the first fills the mesh's range from its start, the second
+// from its end (its command's firstIndex is left at the range's start; the host knows the count).
 layout(set = 2, binding = 5, std430) buffer Commands { DrawCommand commands[]; };
 // The scene's distinct edges (vertex pairs) and, laid out like the indices, each triangle's edge
 // opposite each corner (mesh_edges.cpp).
 layout(set = 2, binding = 6, std430) readonly buffer Edges { uvec2 edges[]; };
 layout(set = 2, binding = 7, std430) readonly buffer TriangleEdges { uint triangleEdges[]; };
-// Per edge: xyz = warped midpoint relative to c, w = tessellation segments (classify_edges.comp).
+// Per edge: xyz = warped midpoint relative to c, w = tessellation segments, negative where pieces
+// of the edge's triangles may be dropped (classify_edges.comp).
 layout(set = 2, binding = 8, std430) buffer EdgeLevels { vec4 edgeLevels[]; };
-// Per slot of the tessellated list, laid out like its indices: the edge levels opposite each
-// corner, for warp.tesc (confvis_render_common.glsl reads them as set 0, binding 2).
+// Per slot of the tessellated lists, laid out like their indices: the edge levels opposite each
+// corner (segments positive), for warp.tesc (confvis_render_common.glsl: set 0, binding 2).
 layout(set = 2, binding = 9, std430) writeonly buffer PatchLevels { vec4 patchLevels[]; };
+
+const uint kListFlat = 0u, kListTessellated = 1u, kListDropping = 2u;
 
 layout(push_constant) uniform Prepass {
   uint count;         // vertices (warp), edges or the mesh's triangles (classify)

@@ -27,6 +27,7 @@
 #ifndef CONFVIS_WARP_GLSL
 #define CONFVIS_WARP_GLSL
 
+#define CUTT 1.0
 #ifndef CONFVIS_WARP_SET
 #define CONFVIS_WARP_SET 1
 #endif
@@ -104,35 +105,68 @@ vec4 confvisWarpRelative(vec3 relative) {
   return vec4(r * g.xyz, g.w);
 }
 
+// Angle between neighbouring texels of the geom map around direction v (non-zero): 2 / n on the
+// face, times the squared cosine of v to the face's axis (down to a third at its corners).
+float confvisTexelAngle(vec3 v) {
+  vec3 a = abs(v);
+  float ma = max(a.x, max(a.y, a.z)) / length(v);  // cosine to the face's axis
+  return 2.0 / float(textureSize(confvisGeomMap, 0).x) * ma * ma;
+}
+
 // Segments for the edge a-b (virtual points relative to c; wa, wb their warps from
 // confvisWarpRelative) so that the drawn polyline stays within maxErrorAngle (radians, seen
 // from c) of the bent edge: the warped midpoint's deviation from the chord shrinks with the square
 // of the segment count. maxSegmentAngle caps the angular length of a segment so that a long edge
 // whose bend happens to vanish at its midpoint is still subdivided. An edge across the source's
-// cut is cut into segments of about four times maxErrorAngle (two pixels at the default
-// half-pixel error), so that the triangles dropped along the cut leave gaps of about two pixels;
-// pixel-sized segments (one pixel) made these patches (inner level = longest edge's, so the
-// square of it in triangles) most of the cost on a baked cave5 map: 9x plain instead of 4x.
+// cut is cut into segments of four times maxErrorAngle (two pixels at the default half-pixel
+// error) or half a texel of the geom map, whichever is longer, so that the triangles dropped
+// along the cut leave gaps of about two pixels, or no wider than the band along the cut that
+// the map cannot reach anyway: points within half a texel of the cut take the nearest texel's
+// direction on their side (confvisSampleGeomAcrossCut), so the display's edge where the cut
+// lands keeps a gap of half a texel's image. Finer segments only cost: these patches (inner
+// level = longest edge's, so the square of it in triangles) were most of the frame on lavapipe
+// under a baked cave5 map (128 texels a face, 480-pixel walls, two-pixel segments: 4.3 x plain;
+// half-texel segments: 2.7 x, the same pixels off Embree).
 // It is told from a smooth bend by its halves: where T_geom jumps, one warped half spans the jump and is
 // more than three times as long as the other (and longer than eight times maxErrorAngle), while
 // a smooth map stretches both halves of a short edge alike. Symmetric in (a, b), so the two triangles sharing an edge
 // agree and leave no cracks. In [1, 64]. warpedMidpoint receives the warp of the edge's midpoint
 // (relative to c), e.g. for culling the patch.
 float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
-                          float maxSegmentAngle, out vec3 warpedMidpoint) {
-  vec3 wm = confvisWarpRelative(0.5 * (a + b)).xyz;
-  warpedMidpoint = wm;
+                          float maxSegmentAngle, out vec3 warpedMidpoint);
+
+// The cut test above on the warped halves (angles) of an edge split at its midpoint.
+bool confvisHalvesSpanJump(float halfA, float halfB, float maxErrorAngle) {
+  return max(halfA, halfB) > max(3.0 * min(halfA, halfB), 8.0 * maxErrorAngle);
+}
+
+// confvisEdgeSegments with more of what it measured: warpedMidpoint.w is the midpoint's validity,
+// acrossCut whether the edge was taken to span the cut (the two-pixel segments).
+float confvisMeasureEdge(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
+                         float maxSegmentAngle, out vec4 warpedMidpoint, out bool acrossCut) {
+  warpedMidpoint = confvisWarpRelative(0.5 * (a + b));
+  vec3 wm = warpedMidpoint.xyz;
   float edge = confvisAngle(a, b);
   float halfA = confvisAngle(wa, wm), halfB = confvisAngle(wm, wb);
-  float longHalf = max(halfA, halfB);
   float segments;
-  if (longHalf > max(3.0 * min(halfA, halfB), 8.0 * maxErrorAngle)) {
-    segments = edge / (4.0 * maxErrorAngle);
+  acrossCut = confvisHalvesSpanJump(halfA, halfB, maxErrorAngle);
+  if (acrossCut) {
+    segments = edge / max(4.0 * maxErrorAngle, 0.5 * confvisTexelAngle(a + b));
   } else {
     float deviation = confvisAngle(wm, 0.5 * (wa + wb));
     segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
   }
   return clamp(ceil(segments), 1.0, 64.0);
+}
+
+float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
+                          float maxSegmentAngle, out vec3 warpedMidpoint) {
+  vec4 midpoint;
+  bool acrossCut;
+  float segments = confvisMeasureEdge(a, b, wa, wb, maxErrorAngle, maxSegmentAngle, midpoint,
+                                      acrossCut);
+  warpedMidpoint = midpoint.xyz;
+  return segments;
 }
 
 // Twice the area of a triangle over its longest edge squared: its shape, 0 for a sliver.

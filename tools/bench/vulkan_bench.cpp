@@ -208,9 +208,9 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
   const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
   settings.mode = RenderMode::Conformal;
   std::printf("\nsphere-20k under the baked %s map (%d texels a face), by tessellation "
-              "threshold\n%-10s %9s %7s %9s %7s %12s %8s %12s\n",
+              "threshold\n%-10s %9s %7s %9s %7s %12s %8s %12s %8s\n",
               config.name.c_str(), bakeResolution, "error px", "conf s", "ratio", "conf cpu",
-              "ratio", "off Embree", "gaps", "tessellated");
+              "ratio", "off Embree", "gaps", "tessellated", "with GS");
   for (double error : sweepThresholds) {
     const Timing t = timeThreshold(options, error, scene, config, map, settings, repeats);
     saveImages(imageDir, error > 0.0 ? "vulkan-" + thresholdName(error) + "px" : "vulkan-untessellated",
@@ -219,10 +219,11 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
     if (embree)
       std::snprintf(offEmbree, sizeof offEmbree, "%.2f%%",
                     100.0 * imageDifference(t.last, *embree));
-    std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %12s %7.2f%% %12zu\n",
+    std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %12s %7.2f%% %12zu %8zu\n",
                 thresholdName(error).c_str(), t.seconds, t.seconds / plain.seconds, t.cpu,
                 t.cpu / plain.cpu, offEmbree, 100.0 * gapFraction(t.last),
-                t.last.stats.value("triangles_tessellated", std::size_t{0}));
+                t.last.stats.value("triangles_tessellated", std::size_t{0}),
+                t.last.stats.value("triangles_through_geometry_shader", std::size_t{0}));
     std::fflush(stdout);
   }
   return plain.last.stats.value("device", "?");

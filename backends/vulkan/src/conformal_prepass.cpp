@@ -11,8 +11,16 @@ namespace confvis::vulkan {
 ConformalPrepass::ConformalPrepass(VulkanContext& context, const Pipelines& pipelines)
     : context_(context), pipelines_(pipelines) {}
 
-VkDeviceSize ConformalPrepass::commandOffset(std::size_t draw, bool tessellated) {
-  return (2 * draw + (tessellated ? 1 : 0)) * sizeof(VkDrawIndexedIndirectCommand);
+VkDeviceSize ConformalPrepass::commandOffset(std::size_t draw, PrepassList list) {
+  return (kPrepassLists * draw + static_cast<std::uint32_t>(list)) *
+         sizeof(VkDrawIndexedIndirectCommand);
+}
+
+VkDrawIndexedIndirectCommand ConformalPrepass::command(std::size_t draw, PrepassList list) const {
+  VkDrawIndexedIndirectCommand c = static_cast<const VkDrawIndexedIndirectCommand*>(
+      commands_.mapped())[commandOffset(draw, list) / sizeof(VkDrawIndexedIndirectCommand)];
+  if (list == PrepassList::Dropping) c.firstIndex = rangeEnds_[draw] - c.indexCount;
+  return c;
 }
 
 void ConformalPrepass::prepare(const GpuScene& scene) {
@@ -25,7 +33,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   flat_ = Buffer(context_, indexBytes, indexUsage, false);
   tessellated_ = Buffer(context_, indexBytes, indexUsage, false);
   // Host-visible: reset from the host before every frame.
-  commands_ = Buffer(context_, commandOffset(scene.draws().size(), false),
+  commands_ = Buffer(context_, commandOffset(scene.draws().size(), PrepassList::Flat),
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                      true);
 
@@ -56,6 +64,9 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       patchLevels_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
+  rangeEnds_.clear();
+  for (const GpuScene::Draw& draw : scene.draws())
+    rangeEnds_.push_back(draw.firstIndex + draw.indexCount);
   sceneId_ = scene.id();
 }
 
@@ -67,8 +78,8 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   auto* commands = static_cast<VkDrawIndexedIndirectCommand*>(commands_.mapped());
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
     const GpuScene::Draw& draw = scene.draws()[d];
-    commands[2 * d] = {0, 1, draw.firstIndex, draw.vertexOffset, 0};
-    commands[2 * d + 1] = commands[2 * d];
+    for (std::uint32_t list = 0; list < kPrepassLists; ++list)
+      commands[kPrepassLists * d + list] = {0, 1, draw.firstIndex, draw.vertexOffset, 0};
   }
 
   // The previous frame's draws read what this frame overwrites.

@@ -1,19 +1,25 @@
 #pragma once
 // The conformal pre-pass, once per frame for all walls and eyes: warps every scene vertex
 // (warp_vertices.comp) and sorts every triangle into "flat" (drawn between its warped corners by
-// a plain vertex shader) or "tessellated" (drawn through the tessellation pipeline, which bends,
-// culls and drops it), writing one compacted index list and one indirect draw command per mesh
-// and kind (classify_triangles.comp), with each distinct edge's level measured once before
-// (classify_edges.comp) and copied next to the tessellated list for warp.tesc. Per-patch
-// tessellation is costly on some devices (lavapipe
-// above all); most triangles of a finely meshed scene need none.
+// a plain vertex shader), "tessellated" (drawn through the tessellation pipeline, which bends and
+// culls it) or "dropping" (tessellation and a geometry shader that drops pieces across the cut or
+// outside the source field), writing one compacted index list and one draw command per mesh and
+// list (classify_triangles.comp), with each distinct edge's level measured once before
+// (classify_edges.comp) and copied next to the tessellated lists for warp.tesc. Per-patch
+// tessellation is costly on some devices (lavapipe above all: its vertex, tessellation and
+// geometry stages run on one thread); most triangles of a finely meshed scene need none, and few
+// of the rest need the geometry shader.
 #include <cstdint>
+#include <vector>
 
 #include "gpu_scene.hpp"
 #include "memory.hpp"
 #include "pipelines.hpp"
 
 namespace confvis::vulkan {
+
+enum class PrepassList : std::uint32_t { Flat = 0, Tessellated = 1, Dropping = 2 };
+constexpr std::uint32_t kPrepassLists = 3;  // commands per mesh, kList* of the shaders
 
 struct PrepassThresholds {
   float maxErrorAngle;    // radians: the smallest over the frame's walls
@@ -32,18 +38,17 @@ class ConformalPrepass {
 
   VkBuffer warped() const { return warped_.get(); }  // vec4 per vertex: warp relative to c, validity
   VkBuffer flatIndices() const { return flat_.get(); }
-  VkBuffer tessellatedIndices() const { return tessellated_.get(); }
+  VkBuffer tessellatedIndices() const { return tessellated_.get(); }  // both tessellated lists
   VkBuffer commands() const { return commands_.get(); }
-  // vec4 per tessellated-list index: level of the edge opposite that corner (warp.tesc).
+  // vec4 per tessellated-lists index: level of the edge opposite that corner (warp.tesc).
   VkBuffer patchLevels() const { return patchLevels_.get(); }
   std::uint64_t sceneId() const { return sceneId_; }  // of the scene the buffers are for
-  // The command as the pre-pass left it; valid once its submission has completed.
-  VkDrawIndexedIndirectCommand command(std::size_t draw, bool tessellated) const {
-    return static_cast<const VkDrawIndexedIndirectCommand*>(commands_.mapped())
-        [2 * draw + (tessellated ? 1 : 0)];
-  }
-  // Byte offset of mesh `draw`'s VkDrawIndexedIndirectCommand of the given kind.
-  static VkDeviceSize commandOffset(std::size_t draw, bool tessellated);
+  // Mesh `draw`'s command for `list` as the pre-pass left it, with the list's true first index
+  // (the dropping list ends where the mesh's range does); valid once its submission has
+  // completed.
+  VkDrawIndexedIndirectCommand command(std::size_t draw, PrepassList list) const;
+  // Byte offset of mesh `draw`'s VkDrawIndexedIndirectCommand for `list`.
+  static VkDeviceSize commandOffset(std::size_t draw, PrepassList list);
 
  private:
   void prepare(const GpuScene& scene);
@@ -51,6 +56,7 @@ class ConformalPrepass {
   VulkanContext& context_;
   const Pipelines& pipelines_;
   std::uint64_t sceneId_ = 0;
+  std::vector<std::uint32_t> rangeEnds_;  // per mesh: one past its last index
   Buffer warped_, flat_, tessellated_, commands_, edgeLevels_, patchLevels_;
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

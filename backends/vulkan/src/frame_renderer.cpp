@@ -13,9 +13,11 @@
 namespace confvis::vulkan {
 namespace {
 
-// Patches per draw of the tessellation pipeline. Mesa's lavapipe 22.3 corrupts the output of a
+// Patches per draw of the tessellation pipelines. Mesa's lavapipe 22.3 corrupts the output of a
 // tessellation + geometry shader draw past about 65536 generated triangles (a stray triangle
-// covering the wall); at the highest level (64) a patch makes 4096 triangles.
+// covering the wall); at the highest level (64) a patch makes 4096 triangles. Tessellation
+// without the geometry shader is hit too (one draw per mesh: 0.48 % instead of 0.32 % gap pixels
+// under the baked cave5 map), so both pipelines split their lists.
 constexpr std::uint32_t kMaxPatchesPerDraw = 16;
 
 std::size_t hashMap(const RetargetMap& map, const std::vector<float>& data) {
@@ -172,41 +174,44 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
   const std::array<VkBuffer, 2> vertexBuffers = {scene.vertexBuffer(), prepass_.warped()};
   const std::array<VkDeviceSize, 2> offsets = {0, 0};
   vkCmdBindVertexBuffers(cmd, 0, request.conformal ? 2 : 1, vertexBuffers.data(), offsets.data());
-  const auto drawAll = [&](VkPipeline pipeline, VkBuffer indices, bool tessellated) {
+  // Tessellated lists: the pre-pass has finished (the frame waited for it), so the host splits
+  // them into draws of a bounded number of patches, each told where its patches' edge levels
+  // start.
+  const auto drawPatches = [&](PushConstants push, const VkDrawIndexedIndirectCommand& c) {
+    constexpr std::uint32_t chunk = 3 * kMaxPatchesPerDraw;  // indices
+    for (std::uint32_t first = 0; first < c.indexCount; first += chunk) {
+      push.firstPatch = (c.firstIndex + first) / 3;
+      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+      vkCmdDrawIndexed(cmd, std::min(chunk, c.indexCount - first), 1, c.firstIndex + first,
+                       c.vertexOffset, 0);
+    }
+  };
+  const auto drawAll = [&](VkPipeline pipeline, VkBuffer indices, PrepassList list) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
     for (std::size_t d = 0; d < scene.draws().size(); ++d) {
       const GpuScene::Draw& draw = scene.draws()[d];
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
                               0, nullptr);
-      PushConstants push{draw.baseColorFactor, request.viewBase, draw.hasNormals ? 1u : 0u, 0u,
-                         0u};
+      const PushConstants push{draw.baseColorFactor, request.viewBase,
+                               draw.hasNormals ? 1u : 0u, 0u, 0u};
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-      if (request.conformal && tessellated) {
-        // The pre-pass has finished (the frame waited for it): split its list into draws of a
-        // bounded number of patches, each told where its patches' edge levels start.
-        const VkDrawIndexedIndirectCommand c = prepass_.command(d, true);
-        constexpr std::uint32_t kChunk = 3 * kMaxPatchesPerDraw;
-        for (std::uint32_t first = 0; first < c.indexCount; first += kChunk) {
-          push.firstPatch = (c.firstIndex + first) / 3;
-          vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-          vkCmdDrawIndexed(cmd, std::min(kChunk, c.indexCount - first), 1, c.firstIndex + first,
-                           c.vertexOffset, 0);
-        }
-      } else if (request.conformal) {  // the pre-pass's list and count
-        vkCmdDrawIndexedIndirect(cmd, prepass_.commands(), ConformalPrepass::commandOffset(d, false),
-                                 1, sizeof(VkDrawIndexedIndirectCommand));
-      } else {
+      if (!request.conformal)
         vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
-      }
+      else if (list == PrepassList::Flat)  // the pre-pass's list and count
+        vkCmdDrawIndexedIndirect(cmd, prepass_.commands(), ConformalPrepass::commandOffset(d, list),
+                                 1, sizeof(VkDrawIndexedIndirectCommand));
+      else
+        drawPatches(push, prepass_.command(d, list));
     }
   };
   if (!request.conformal) {
-    drawAll(pass.plain.get(), scene.indexBuffer(), false);
+    drawAll(pass.plain.get(), scene.indexBuffer(), PrepassList::Flat);
     return;
   }
-  drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), false);
-  drawAll(pass.conformalTessellated.get(), prepass_.tessellatedIndices(), true);
+  drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), PrepassList::Flat);
+  drawAll(pass.conformalTessellated.get(), prepass_.tessellatedIndices(), PrepassList::Tessellated);
+  drawAll(pass.conformalDropping.get(), prepass_.tessellatedIndices(), PrepassList::Dropping);
 }
 
 std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
@@ -224,8 +229,9 @@ FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene)
   PrepassCounts counts;
   counts.seconds = prepassSeconds_;
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
-    counts.flat += prepass_.command(d, false).indexCount / 3;
-    counts.tessellated += prepass_.command(d, true).indexCount / 3;
+    counts.flat += prepass_.command(d, PrepassList::Flat).indexCount / 3;
+    counts.tessellated += prepass_.command(d, PrepassList::Tessellated).indexCount / 3;
+    counts.dropping += prepass_.command(d, PrepassList::Dropping).indexCount / 3;
   }
   return counts;
 }

@@ -29,7 +29,8 @@ class FrameRenderer {
 
   // Triangles the last conformal frame drew flat and through tessellation (the pre-pass's lists).
   struct PrepassCounts {
-    std::size_t flat = 0, tessellated = 0;
+    std::size_t flat = 0, tessellated = 0;  // tessellated: without the geometry shader
+    std::size_t dropping = 0;               // tessellated with the geometry shader
     double seconds = 0.0;  // wall-clock time of the pre-pass submission
   };
   PrepassCounts prepassCounts(const GpuScene& scene) const;

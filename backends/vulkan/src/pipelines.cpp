@@ -15,6 +15,7 @@
 #include "confvis_spirv/scene_vert.h"
 #include "confvis_spirv/warp_geom.h"
 #include "confvis_spirv/warp_tesc.h"
+#include "confvis_spirv/warp_projected_tese.h"
 #include "confvis_spirv/warp_tese.h"
 #include "confvis_spirv/warp_simple_vert.h"
 #include "confvis_spirv/warp_vert.h"
@@ -78,6 +79,7 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   warpVert_ = shaderModule(device, kSpirv_warp_vert);
   warpTesc_ = shaderModule(device, kSpirv_warp_tesc);
   warpTese_ = shaderModule(device, kSpirv_warp_tese);
+  warpProjectedTese_ = shaderModule(device, kSpirv_warp_projected_tese);
   warpGeom_ = shaderModule(device, kSpirv_warp_geom);
 
   frameSetLayout_ = setLayout(
@@ -105,6 +107,7 @@ const Pipelines::Pass& Pipelines::pass(std::uint32_t viewCount) {
   pass.plain = createPipeline(pass.renderPass.get(), Kind::Plain);
   pass.conformalFlat = createPipeline(pass.renderPass.get(), Kind::ConformalFlat);
   pass.conformalTessellated = createPipeline(pass.renderPass.get(), Kind::ConformalTessellated);
+  pass.conformalDropping = createPipeline(pass.renderPass.get(), Kind::ConformalDropping);
   return passes_.emplace(viewCount, std::move(pass)).first->second;
 }
 
@@ -172,7 +175,7 @@ UniqueRenderPass Pipelines::createRenderPass(std::uint32_t viewCount) const {
 }
 
 UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) const {
-  const bool tessellated = kind == Kind::ConformalTessellated;
+  const bool tessellated = kind == Kind::ConformalTessellated || kind == Kind::ConformalDropping;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   switch (kind) {
     case Kind::Plain:
@@ -182,6 +185,11 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
       stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpSimpleVert_)};
       break;
     case Kind::ConformalTessellated:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
+                stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
+                stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpProjectedTese_)};
+      break;
+    case Kind::ConformalDropping:
       stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
                 stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
                 stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpTese_),

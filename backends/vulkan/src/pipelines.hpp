@@ -86,26 +86,28 @@ class Pipelines {
   VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
 
   // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
-  // built on first use. Conformal mode draws with two: conformalFlat for the triangles the
-  // pre-pass found straight enough, conformalTessellated (tessellation + geometry shader) for
-  // the rest.
+  // built on first use. Conformal mode draws with three, one per list of the pre-pass:
+  // conformalFlat for the triangles it found straight enough, conformalTessellated
+  // (tessellation) for the bent ones and conformalDropping (tessellation + the geometry shader
+  // that drops pieces) for those on the cut, at the source's rim or strongly distorted.
   struct Pass {
     UniqueRenderPass renderPass;
     UniquePipeline plain;
     UniquePipeline conformalFlat;
     UniquePipeline conformalTessellated;
+    UniquePipeline conformalDropping;
   };
   const Pass& pass(std::uint32_t viewCount);
 
  private:
-  enum class Kind { Plain, ConformalFlat, ConformalTessellated };
+  enum class Kind { Plain, ConformalFlat, ConformalTessellated, ConformalDropping };
   UniqueRenderPass createRenderPass(std::uint32_t viewCount) const;
   UniquePipeline createPipeline(VkRenderPass renderPass, Kind kind) const;
   void createComputePipelines();  // pipelines_compute.cpp
 
   VulkanContext& context_;
   UniqueShaderModule sceneVert_, sceneFrag_, warpSimpleVert_, warpVert_, warpTesc_, warpTese_,
-      warpGeom_;
+      warpProjectedTese_, warpGeom_;
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;

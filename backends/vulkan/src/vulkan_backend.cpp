@@ -83,7 +83,8 @@ class VulkanBackend final : public RenderBackend {
       result.stats["tessellation"] = options_.tessellate;
       const auto counts = frames_.prepassCounts(*scene_);
       result.stats["triangles_drawn_flat"] = counts.flat;
-      result.stats["triangles_tessellated"] = counts.tessellated;
+      result.stats["triangles_tessellated"] = counts.tessellated + counts.dropping;
+      result.stats["triangles_through_geometry_shader"] = counts.dropping;
       result.stats["prepass_seconds"] = counts.seconds;
     }
     return result;
