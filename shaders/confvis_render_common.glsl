@@ -18,7 +18,7 @@ struct View {
 };
 layout(set = 0, binding = 1, std430) readonly buffer Views { View views[]; };
 
-// Edge levels of the tessellated triangles, 3 per slot of the pre-pass's tessellated list
+// Edge levels of the tessellated triangles, 3 per slot of the pre-pass's tessellated lists
 // (confvis_prepass_common.glsl): xyz = warped edge midpoint relative to c, w = segments.
 layout(set = 0, binding = 2, std430) readonly buffer PatchLevels { vec4 patchLevels[]; };
 
@@ -26,7 +26,7 @@ layout(push_constant) uniform Push {
   vec4 baseColorFactor;
   uint viewBase;    // views[] index of this pass's view 0
   uint hasNormals;
-  uint firstPatch;  // tessellated draws: list slot of the draw's first patch
+  int vertexOffset;  // tessellated draws: the mesh's, added to the indices of the lists
 } push;
 
 View currentView() { return views[push.viewBase + gl_ViewIndex]; }

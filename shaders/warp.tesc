@@ -12,6 +12,7 @@ layout(location = 1) in vec4 inWarped[];
 layout(location = 2) in vec3 inWorld[];
 layout(location = 3) in vec3 inNormal[];
 layout(location = 4) in vec2 inUv[];
+layout(location = 5) flat in uint inSlot[];  // the patch's slot in the pre-pass's lists
 
 layout(location = 0) out vec3 outRelative[];
 layout(location = 1) out vec4 outWarped[];
@@ -22,7 +23,7 @@ layout(location = 4) out vec2 outUv[];
 // Segments of the edge opposite corner k, as the pre-pass measured them once per edge
 // (classify_edges.comp), and its warped midpoint.
 float segments(int k, out vec3 warpedMidpoint) {
-  vec4 level = patchLevels[3u * (push.firstPatch + uint(gl_PrimitiveID)) + uint(k)];
+  vec4 level = patchLevels[3u * inSlot[0] + uint(k)];
   warpedMidpoint = level.xyz;
   return wallView().params.w == 0.0 ? 1.0 : level.w;
 }

@@ -13,13 +13,6 @@
 namespace confvis::vulkan {
 namespace {
 
-// Patches per draw of the tessellation pipelines. Mesa's lavapipe 22.3 corrupts the output of a
-// tessellation + geometry shader draw past about 65536 generated triangles (a stray triangle
-// covering the wall); at the highest level (64) a patch makes 4096 triangles. Tessellation
-// without the geometry shader is hit too (one draw per mesh: 0.48 % instead of 0.32 % gap pixels
-// under the baked cave5 map), so both pipelines split their lists.
-constexpr std::uint32_t kMaxPatchesPerDraw = 16;
-
 std::size_t hashMap(const RetargetMap& map, const std::vector<float>& data) {
   const std::string_view bytes(reinterpret_cast<const char*>(data.data()),
                                data.size() * sizeof(float));
@@ -36,7 +29,7 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 2},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
   }};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -174,27 +167,22 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
   const std::array<VkBuffer, 2> vertexBuffers = {scene.vertexBuffer(), prepass_.warped()};
   const std::array<VkDeviceSize, 2> offsets = {0, 0};
   vkCmdBindVertexBuffers(cmd, 0, request.conformal ? 2 : 1, vertexBuffers.data(), offsets.data());
-  // Tessellated lists: the pre-pass has finished (the frame waited for it), so the host splits
-  // them into draws of a bounded number of patches, each told where its patches' edge levels
-  // start.
+  // Tessellated lists: one draw each, without an index buffer (warp.vert reads the list); the
+  // pre-pass has finished (the frame waited for it), so the host knows where the list lies.
   const auto drawPatches = [&](PushConstants push, const VkDrawIndexedIndirectCommand& c) {
-    constexpr std::uint32_t chunk = 3 * kMaxPatchesPerDraw;  // indices
-    for (std::uint32_t first = 0; first < c.indexCount; first += chunk) {
-      push.firstPatch = (c.firstIndex + first) / 3;
-      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
-      vkCmdDrawIndexed(cmd, std::min(chunk, c.indexCount - first), 1, c.firstIndex + first,
-                       c.vertexOffset, 0);
-    }
+    push.vertexOffset = c.vertexOffset;
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+    if (c.indexCount > 0) vkCmdDraw(cmd, c.indexCount, 1, c.firstIndex, 0);
   };
   const auto drawAll = [&](VkPipeline pipeline, VkBuffer indices, PrepassList list) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
+    if (indices != VK_NULL_HANDLE) vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
     for (std::size_t d = 0; d < scene.draws().size(); ++d) {
       const GpuScene::Draw& draw = scene.draws()[d];
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
                               0, nullptr);
       const PushConstants push{draw.baseColorFactor, request.viewBase,
-                               draw.hasNormals ? 1u : 0u, 0u, 0u};
+                               draw.hasNormals ? 1u : 0u, 0, 0u};
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
       if (!request.conformal)
         vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
@@ -210,8 +198,8 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
     return;
   }
   drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), PrepassList::Flat);
-  drawAll(pass.conformalTessellated.get(), prepass_.tessellatedIndices(), PrepassList::Tessellated);
-  drawAll(pass.conformalDropping.get(), prepass_.tessellatedIndices(), PrepassList::Dropping);
+  drawAll(pass.conformalTessellated.get(), VK_NULL_HANDLE, PrepassList::Tessellated);
+  drawAll(pass.conformalDropping.get(), VK_NULL_HANDLE, PrepassList::Dropping);
 }
 
 std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
@@ -256,12 +244,17 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
       prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
     });
     prepassSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // The tessellation control shader reads the edge levels (set 0, binding 2); the set is idle
-    // now that the pre-pass has completed.
+    // warp.tesc reads the edge levels (set 0, binding 2), warp.vert the tessellated lists, the
+    // scene's vertices and their warps (bindings 3-5); the set is idle now that the pre-pass has
+    // completed.
     if (patchLevelsScene_ != prepass_.sceneId()) {
       patchLevelsScene_ = prepass_.sceneId();
-      writeBufferDescriptor(context_.device(), frameSet_, 2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                            prepass_.patchLevels());
+      const std::array<VkBuffer, 4> buffers = {prepass_.patchLevels(),
+                                               prepass_.tessellatedIndices(),
+                                               scene.vertexBuffer(), prepass_.warped()};
+      for (std::uint32_t i = 0; i < buffers.size(); ++i)
+        writeBufferDescriptor(context_.device(), frameSet_, 2 + i,
+                              VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
     }
   }
   const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());

@@ -87,7 +87,11 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
                 nullptr},
                {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
                {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
-                nullptr}});
+                nullptr},
+               // warp.vert pulls the tessellated lists' vertices itself.
+               {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+               {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+               {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
   warpSetLayout_ =
       setLayout(device, {warpLayoutBinding(kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT)});
   materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
@@ -211,10 +215,12 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
   const bool conformal = kind != Kind::Plain;
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  vertexInput.vertexBindingDescriptionCount = conformal ? 2 : 1;
-  vertexInput.pVertexBindingDescriptions = bindings.data();
-  vertexInput.vertexAttributeDescriptionCount = conformal ? 4 : 3;
-  vertexInput.pVertexAttributeDescriptions = attributes.data();
+  if (!tessellated) {  // tessellated: warp.vert reads its vertices from storage buffers
+    vertexInput.vertexBindingDescriptionCount = conformal ? 2 : 1;
+    vertexInput.pVertexBindingDescriptions = bindings.data();
+    vertexInput.vertexAttributeDescriptionCount = conformal ? 4 : 3;
+    vertexInput.pVertexAttributeDescriptions = attributes.data();
+  }
   VkPipelineInputAssemblyStateCreateInfo assembly{
       VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology =

@@ -35,7 +35,7 @@ struct PushConstants {
   glm::vec4 baseColorFactor;
   std::uint32_t viewBase;
   std::uint32_t hasNormals;
-  std::uint32_t firstPatch;  // tessellated draws: list slot of the first patch
+  std::int32_t vertexOffset;  // tessellated draws: the mesh's (warp.vert reads the indices)
   std::uint32_t padding;
 };
 

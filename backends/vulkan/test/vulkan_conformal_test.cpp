@@ -164,10 +164,12 @@ TEST(VulkanConformal, ConformalZoomMatchesTheClosedForm) {
 
 TEST(VulkanConformal, HeavilyTessellatedDrawsStayCorrect) {
   // A fine sphere under the squeeze at 96 pixels a wall with an eighth-pixel error bound:
-  // thousands of patches subdivided up to level 64. In one draw that is more than lavapipe's
-  // tessellation + geometry path survives (it adds stray triangles covering whole walls), so the
-  // backend splits such draws; the image must match the closed form. Without validation layers:
-  // with them, lavapipe happens to draw even the unsplit case correctly.
+  // thousands of patches subdivided up to level 64, each list in one draw. Lavapipe restarts
+  // gl_PrimitiveID within large indexed tessellation draws (patches then read other patches' edge
+  // levels: cracks, and stray triangles covering whole walls through the geometry shader), so
+  // warp.vert finds the patch's slot from gl_VertexIndex of a non-indexed draw; the image must
+  // match the closed form. Without validation layers: with them, lavapipe happened to draw even
+  // the broken case correctly.
   VulkanOptions options;
   options.device = test::kLavapipe;
   options.tessellationErrorPixels = 0.125;
