@@ -14,11 +14,14 @@
 
 layout(local_size_x = 64) in;
 
+void appendFlat(uint at, uint i0, uint i1, uint i2) {
+  simpleIndices[at] = i0; simpleIndices[at + 1u] = i1; simpleIndices[at + 2u] = i2;
+}
+
 void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
   uint slot = atomicAdd(commands[3u * prepass.mesh + list].indexCount, 3u);
   if (list == kListFlat) {
-    uint at = prepass.firstIndex + slot;
-    simpleIndices[at] = i0; simpleIndices[at + 1u] = i1; simpleIndices[at + 2u] = i2;
+    appendFlat(kFlatCapacity * prepass.firstIndex + slot, i0, i1, i2);
     return;
   }
   // The dropping list fills the mesh's range from its end, back to front.
@@ -26,6 +29,44 @@ void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
                                      : prepass.firstIndex + 3u * prepass.count - 3u - slot;
   complexIndices[at] = i0; complexIndices[at + 1u] = i1; complexIndices[at + 2u] = i2;
   for (uint k = 0u; k < 3u; ++k) patchLevels[at + k] = levels[k];
+}
+
+// Draws a triangle whose edges need two segments at most (edge k, opposite corner k, when
+// split[k]) flat in pieces between its corners and the split edges' midpoints, instead of
+// tessellating it: the midpoints' warps are the pre-pass's (confvis_pulled_vertex.glsl numbers
+// them after the scene's vertices), exactly what tessellation at level 2 places there, without
+// its warped centre and its cost (lavapipe tessellates on one thread; most bent triangles of a
+// finely meshed scene under a baked map bend by two segments).
+void appendSplit(uint i[3], bool split[3], uint edge[3]) {
+  uint m[3];  // index of the midpoint of the edge opposite corner k
+  uint pieces = 1u;
+  for (uint k = 0u; k < 3u; ++k) {
+    m[k] = prepass.midpointBase + edge[k] - uint(prepass.vertexOffset);
+    pieces += split[k] ? 1u : 0u;
+  }
+  uint at = kFlatCapacity * prepass.firstIndex +
+            atomicAdd(commands[3u * prepass.mesh + kListFlat].indexCount, 3u * pieces);
+  if (pieces == 2u) {  // one split edge: its opposite corner fans to its midpoint
+    uint k = split[0] ? 0u : split[1] ? 1u : 2u;
+    uint a = (k + 1u) % 3u, b = (k + 2u) % 3u;  // edge k runs from corner a to corner b
+    appendFlat(at, i[k], i[a], m[k]);
+    appendFlat(at + 3u, i[k], m[k], i[b]);
+    return;
+  }
+  if (pieces == 4u) {
+    appendFlat(at, i[0], m[2], m[1]);
+    appendFlat(at + 3u, i[1], m[0], m[2]);
+    appendFlat(at + 6u, i[2], m[1], m[0]);
+    appendFlat(at + 9u, m[0], m[1], m[2]);
+    return;
+  }
+  // Two split edges, meeting at corner u (opposite the unsplit one): u's corner between their
+  // midpoints cut off, the quad beyond it in two.
+  uint u = !split[0] ? 0u : !split[1] ? 1u : 2u;
+  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;  // m[b] lies on u-a, m[a] on b-u
+  appendFlat(at, i[u], m[b], m[a]);
+  appendFlat(at + 3u, i[a], i[b], m[a]);
+  appendFlat(at + 6u, i[a], m[a], m[b]);
 }
 
 // A triangle that the warp stretches more than 4 times, flips or flattens 4 times.
@@ -67,22 +108,29 @@ void main() {
     w[k] = warped[v];
   }
   if (max(w[0].w, max(w[1].w, w[2].w)) < 0.5) return;  // nothing of it is shown
-  vec4 levels[3];
+  vec4 levels[3], rawLevels[3];  // raw: w < 0 where the edge may lose pieces
   bool drops = confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.minGap);
-  bool bent = false, mayDrop = drops;
+  bool bent = false, mayDrop = drops, split[3];
+  uint edge[3];
   vec3 wm[3];
+  float inner = 1.0;
   for (uint k = 0u; k < 3u; ++k) {
-    levels[k] = edgeLevels[triangleEdges[base + k]];
+    edge[k] = triangleEdges[base + k];
+    rawLevels[k] = levels[k] = edgeLevels[edge[k]];
     mayDrop = mayDrop || levels[k].w < 0.0;
     levels[k].w = abs(levels[k].w);
     bent = bent || levels[k].w > 1.0;
+    split[k] = levels[k].w > 1.0;
+    inner = max(inner, levels[k].w);
     wm[k] = levels[k].xyz;
   }
   mayDrop = mayDrop || (bent && distortedPatch(r, w, wm));
   // Unbent and not dropped as a whole: the dropping pipeline would draw it unchanged.
-  uint list = drops     ? kListDropping
-              : !bent   ? kListFlat
-              : mayDrop ? kListDropping
-                        : kListTessellated;
-  append(list, i[0], i[1], i[2], levels);
+  if (!drops && !bent) {
+    append(kListFlat, i[0], i[1], i[2], levels);
+  } else if (!mayDrop && inner <= 2.0) {
+    appendSplit(i, split, edge);
+  } else {
+    append(mayDrop ? kListDropping : kListTessellated, i[0], i[1], i[2], rawLevels);
+  }
 }

@@ -18,7 +18,11 @@ struct DrawCommand {  // VkDrawIndexedIndirectCommand
 layout(set = 2, binding = 0, std430) readonly buffer Vertices { float vertices[]; };
 layout(set = 2, binding = 1, std430) readonly buffer Indices { uint indices[]; };
 layout(set = 2, binding = 2, std430) buffer Warped { vec4 warped[]; };
+// The flat list: kFlatCapacity index slots per index of the scene, since a triangle split at its
+// edge midpoints makes up to four (classify_triangles.comp); a mesh's part starts at
+// kFlatCapacity times its first index.
 layout(set = 2, binding = 3, std430) writeonly buffer SimpleIndices { uint simpleIndices[]; };
+const uint kFlatCapacity = 4u;
 layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint complexIndices[]; };
 // Three commands per mesh: [3 m] flat, [3 m + 1] tessellated, [3 m + 2] tessellated with the
 // geometry shader that drops pieces (kListFlat... below). Both tessellated lists share
@@ -33,7 +37,8 @@ layout(set = 2, binding = 7, std430) readonly buffer TriangleEdges { uint triang
 // of the edge's triangles may be dropped (classify_edges.comp).
 layout(set = 2, binding = 8, std430) buffer EdgeLevels { vec4 edgeLevels[]; };
 // Per slot of the tessellated lists, laid out like their indices: the edge levels opposite each
-// corner (segments positive), for warp.tesc (confvis_render_common.glsl: set 0, binding 2).
+// corner (w: segments, negative where the edge may lose pieces), for warp.tesc
+// (confvis_render_common.glsl: set 0, binding 2).
 layout(set = 2, binding = 9, std430) writeonly buffer PatchLevels { vec4 patchLevels[]; };
 
 const uint kListFlat = 0u, kListTessellated = 1u, kListDropping = 2u;
@@ -46,6 +51,7 @@ layout(push_constant) uniform Prepass {
   float maxErrorAngle;
   float maxSegmentAngle;
   float minGap;
+  uint midpointBase;  // the scene's vertex count: edge e's midpoint is vertex midpointBase + e
 } prepass;
 
 // Virtual point of vertex v in the physical frame, relative to the map's reference point.

@@ -27,7 +27,6 @@
 #ifndef CONFVIS_WARP_GLSL
 #define CONFVIS_WARP_GLSL
 
-#define CUTT 1.0
 #ifndef CONFVIS_WARP_SET
 #define CONFVIS_WARP_SET 1
 #endif
@@ -126,7 +125,9 @@ float confvisTexelAngle(vec3 v) {
 // lands keeps a gap of half a texel's image. Finer segments only cost: these patches (inner
 // level = longest edge's, so the square of it in triangles) were most of the frame on lavapipe
 // under a baked cave5 map (128 texels a face, 480-pixel walls, two-pixel segments: 4.3 x plain;
-// half-texel segments: 2.7 x, the same pixels off Embree).
+// half-texel segments: 2.7 x, the same pixels off Embree). Texel-sized ones (1.8 x, 1.05 % of
+// the pixels off Embree instead of 1.00 %) left too large gaps at 64 texels a face (the md230x6
+// golden: 2.4 % bad pixels).
 // It is told from a smooth bend by its halves: where T_geom jumps, one warped half spans the jump and is
 // more than three times as long as the other (and longer than eight times maxErrorAngle), while
 // a smooth map stretches both halves of a short edge alike. Symmetric in (a, b), so the two triangles sharing an edge

@@ -15,6 +15,7 @@ layout(location = 1) in vec4 inWarped[];
 layout(location = 2) in vec3 inWorld[];
 layout(location = 3) in vec3 inNormal[];
 layout(location = 4) in vec2 inUv[];
+layout(location = 5) patch in vec4 inEdgeMidpoints[3];  // warp.tesc
 
 struct TessellatedVertex {
   vec3 relative;  // virtual point relative to c
@@ -32,10 +33,14 @@ TessellatedVertex tessellatedVertex() {
   v.uv = b.x * inUv[0] + b.y * inUv[1] + b.z * inUv[2];
   precise vec3 relative = b.x * inRelative[0] + b.y * inRelative[1] + b.z * inRelative[2];
   v.relative = relative;
-  // Corners keep the vertex stage's warp (bitwise equal in every patch that shares them).
+  // Corners keep the vertex stage's warp and edge midpoints the pre-pass's (bitwise equal in
+  // every patch that shares them, and in the flat pieces of split triangles).
   if (b.x == 1.0) v.warped = inWarped[0];
   else if (b.y == 1.0) v.warped = inWarped[1];
   else if (b.z == 1.0) v.warped = inWarped[2];
+  else if (b.x == 0.0 && b.y == 0.5 && inEdgeMidpoints[0].w > 0.0) v.warped = inEdgeMidpoints[0];
+  else if (b.y == 0.0 && b.z == 0.5 && inEdgeMidpoints[1].w > 0.0) v.warped = inEdgeMidpoints[1];
+  else if (b.z == 0.0 && b.x == 0.5 && inEdgeMidpoints[2].w > 0.0) v.warped = inEdgeMidpoints[2];
   else v.warped = confvisWarpRelative(relative);
   return v;
 }

@@ -19,13 +19,17 @@ layout(location = 1) out vec4 outWarped[];
 layout(location = 2) out vec3 outWorld[];
 layout(location = 3) out vec3 outNormal[];
 layout(location = 4) out vec2 outUv[];
+// Per edge (opposite corner k): its warped midpoint as the pre-pass measured it, w = 1 where the
+// edge lies inside the source field (the midpoint's validity is then 1), else 0.
+layout(location = 5) patch out vec4 outEdgeMidpoints[3];
 
 // Segments of the edge opposite corner k, as the pre-pass measured them once per edge
 // (classify_edges.comp), and its warped midpoint.
 float segments(int k, out vec3 warpedMidpoint) {
-  vec4 level = patchLevels[3u * inSlot[0] + uint(k)];
+  vec4 level = patchLevels[3u * inSlot[0] + uint(k)];  // w < 0: the edge may lose pieces
   warpedMidpoint = level.xyz;
-  return wallView().params.w == 0.0 ? 1.0 : level.w;
+  outEdgeMidpoints[k] = vec4(level.xyz, level.w > 0.0 ? 1.0 : 0.0);
+  return wallView().params.w == 0.0 ? 1.0 : abs(level.w);
 }
 
 // Bits of the clip planes (x, y both sides, near) that a point relative to c lies outside of,
@@ -57,14 +61,18 @@ void main() {
   vec3 m0, m1, m2;
   float e0 = segments(0, m0), e1 = segments(1, m1), e2 = segments(2, m2);
   // Patches whose warped corners and edge midpoints all lie beyond one side of this view are
-  // not drawn, unless an edge bends so much (across the cut, for one) that the samples say
-  // little about the curve between them.
+  // not drawn, unless an edge bends so much that the samples say little about the curve between
+  // them. An edge across the cut (or partly outside the source field; w = 0) does not count: its
+  // midpoint lands on one side, its corners on either, and the pieces drawn between them
+  // (warp.geom drops those straddling the cut) stay with their own side's samples. Such patches
+  // were drawn for every wall, most of the geometry shader's work under a baked cave5 map.
   float bendLimit = 16.0 * wallView().params.x;
   bool strongBend = false;
   vec3 m[3] = vec3[3](m0, m1, m2);
   for (int k = 0; k < 3; ++k) {
     vec3 chordMid = 0.5 * (inWarped[(k + 1) % 3].xyz + inWarped[(k + 2) % 3].xyz);
-    strongBend = strongBend || confvisAngle(m[k], chordMid) > bendLimit;
+    strongBend = strongBend ||
+                 (outEdgeMidpoints[k].w > 0.0 && confvisAngle(m[k], chordMid) > bendLimit);
   }
   if (!strongBend && (outside(inWarped[0].xyz) & outside(inWarped[1].xyz) &
                       outside(inWarped[2].xyz) & outside(m0) & outside(m1) & outside(m2)) != 0u) {

@@ -9,11 +9,7 @@
 // 22.3 restarts it within large indexed draws (cracks between patches that read their
 // neighbours' levels, and stray triangles through the geometry shader), which had the lists
 // drawn 16 patches a draw, thousands of draws a frame.
-#include "confvis_render_common.glsl"
-
-layout(set = 0, binding = 3, std430) readonly buffer TessellatedIndices { uint tessellatedIndices[]; };
-layout(set = 0, binding = 4, std430) readonly buffer SceneVertices { float sceneVertices[]; };
-layout(set = 0, binding = 5, std430) readonly buffer Warped { vec4 warped[]; };
+#include "confvis_pulled_vertex.glsl"
 
 layout(location = 0) out vec3 outRelative;  // virtual point in the physical frame, relative to c
 layout(location = 1) out vec4 outWarped;    // warped point relative to c, w = validity
@@ -23,13 +19,11 @@ layout(location = 4) out vec2 outUv;
 layout(location = 5) flat out uint outSlot;
 
 void main() {
-  uint v = uint(int(tessellatedIndices[gl_VertexIndex]) + push.vertexOffset);
-  uint at = 8u * v;  // position, normal, uv
-  vec3 position = vec3(sceneVertices[at], sceneVertices[at + 1u], sceneVertices[at + 2u]);
-  outRelative = (frame.worldToPhysical * vec4(position, 1.0)).xyz - frame.warpCentre.xyz;
-  outWarped = warped[v];
-  outWorld = position;
-  outNormal = vec3(sceneVertices[at + 3u], sceneVertices[at + 4u], sceneVertices[at + 5u]);
-  outUv = vec2(sceneVertices[at + 6u], sceneVertices[at + 7u]);
+  PulledVertex v = sceneVertex(uint(int(tessellatedIndices[gl_VertexIndex]) + push.vertexOffset));
+  outRelative = (frame.worldToPhysical * vec4(v.position, 1.0)).xyz - frame.warpCentre.xyz;
+  outWarped = v.warped;
+  outWorld = v.position;
+  outNormal = v.normal;
+  outUv = v.uv;
   outSlot = uint(gl_VertexIndex) / 3u;
 }

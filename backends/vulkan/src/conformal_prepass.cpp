@@ -30,7 +30,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   warped_ = Buffer(context_, scene.vertexCount() * sizeof(glm::vec4),
                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-  flat_ = Buffer(context_, indexBytes, indexUsage, false);
+  flat_ = Buffer(context_, kFlatCapacity * indexBytes, indexUsage, false);
   tessellated_ = Buffer(context_, indexBytes, indexUsage, false);
   // Host-visible: reset from the host before every frame.
   commands_ = Buffer(context_, commandOffset(scene.draws().size(), PrepassList::Flat),
@@ -80,6 +80,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
     const GpuScene::Draw& draw = scene.draws()[d];
     for (std::uint32_t list = 0; list < kPrepassLists; ++list)
       commands[kPrepassLists * d + list] = {0, 1, draw.firstIndex, draw.vertexOffset, 0};
+    commands[kPrepassLists * d].firstIndex = kFlatCapacity * draw.firstIndex;
   }
 
   // The previous frame's draws read what this frame overwrites.
@@ -94,6 +95,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.maxErrorAngle = thresholds.maxErrorAngle;
   push.maxSegmentAngle = thresholds.maxSegmentAngle;
   push.minGap = thresholds.minGap;
+  push.midpointBase = static_cast<std::uint32_t>(scene.vertexCount());
   constexpr std::uint32_t kGroup = 64;  // local_size_x of the pre-pass shaders
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVertices());
   push.count = static_cast<std::uint32_t>(scene.vertexCount());

@@ -18,6 +18,10 @@
 
 namespace confvis::vulkan {
 
+// Flat-list index slots per index of the scene: a triangle split at its edge midpoints makes up
+// to four (classify_triangles.comp, kFlatCapacity).
+constexpr std::uint32_t kFlatCapacity = 4;
+
 enum class PrepassList : std::uint32_t { Flat = 0, Tessellated = 1, Dropping = 2 };
 constexpr std::uint32_t kPrepassLists = 3;  // commands per mesh, kList* of the shaders
 
@@ -37,11 +41,12 @@ class ConformalPrepass {
               VkDescriptorSet warpSet, const PrepassThresholds& thresholds);
 
   VkBuffer warped() const { return warped_.get(); }  // vec4 per vertex: warp relative to c, validity
-  VkBuffer flatIndices() const { return flat_.get(); }
+  VkBuffer flatIndices() const { return flat_.get(); }  // kFlatCapacity slots per scene index
   VkBuffer tessellatedIndices() const { return tessellated_.get(); }  // both tessellated lists
   VkBuffer commands() const { return commands_.get(); }
   // vec4 per tessellated-lists index: level of the edge opposite that corner (warp.tesc).
   VkBuffer patchLevels() const { return patchLevels_.get(); }
+  VkBuffer edgeLevels() const { return edgeLevels_.get(); }  // vec4 per scene edge
   std::uint64_t sceneId() const { return sceneId_; }  // of the scene the buffers are for
   // Mesh `draw`'s command for `list` as the pre-pass left it, with the list's true first index
   // (the dropping list ends where the mesh's range does); valid once its submission has

@@ -29,7 +29,7 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
   }};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -164,9 +164,11 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
   if (request.conformal)
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kWarpDescriptorSet, 1,
                             &warpSet_, 0, nullptr);
-  const std::array<VkBuffer, 2> vertexBuffers = {scene.vertexBuffer(), prepass_.warped()};
-  const std::array<VkDeviceSize, 2> offsets = {0, 0};
-  vkCmdBindVertexBuffers(cmd, 0, request.conformal ? 2 : 1, vertexBuffers.data(), offsets.data());
+  if (!request.conformal) {  // the conformal vertex shaders read their vertices themselves
+    const VkBuffer vertices = scene.vertexBuffer();
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
+  }
   // Tessellated lists: one draw each, without an index buffer (warp.vert reads the list); the
   // pre-pass has finished (the frame waited for it), so the host knows where the list lies.
   const auto drawPatches = [&](PushConstants push, const VkDrawIndexedIndirectCommand& c) {
@@ -182,7 +184,8 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
                               0, nullptr);
       const PushConstants push{draw.baseColorFactor, request.viewBase,
-                               draw.hasNormals ? 1u : 0u, 0, 0u};
+                               draw.hasNormals ? 1u : 0u, 0,
+                               static_cast<std::uint32_t>(scene.vertexCount())};
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
       if (!request.conformal)
         vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
@@ -244,14 +247,14 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
       prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
     });
     prepassSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // warp.tesc reads the edge levels (set 0, binding 2), warp.vert the tessellated lists, the
-    // scene's vertices and their warps (bindings 3-5); the set is idle now that the pre-pass has
-    // completed.
+    // warp.tesc reads the edge levels (set 0, binding 2), the vertex shaders the tessellated
+    // lists, the scene's vertices, their warps, its edges and their midpoints' warps (bindings
+    // 3-7); the set is idle now that the pre-pass has completed.
     if (patchLevelsScene_ != prepass_.sceneId()) {
       patchLevelsScene_ = prepass_.sceneId();
-      const std::array<VkBuffer, 4> buffers = {prepass_.patchLevels(),
-                                               prepass_.tessellatedIndices(),
-                                               scene.vertexBuffer(), prepass_.warped()};
+      const std::array<VkBuffer, 6> buffers = {
+          prepass_.patchLevels(), prepass_.tessellatedIndices(), scene.vertexBuffer(),
+          prepass_.warped(),      scene.edgeBuffer(),            prepass_.edgeLevels()};
       for (std::uint32_t i = 0; i < buffers.size(); ++i)
         writeBufferDescriptor(context_.device(), frameSet_, 2 + i,
                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);

@@ -88,10 +88,13 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
                {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
                {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
                 nullptr},
-               // warp.vert pulls the tessellated lists' vertices itself.
+               // The conformal vertex shaders read their vertices themselves
+               // (confvis_pulled_vertex.glsl).
                {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
                {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-               {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
+               {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+               {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+               {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
   warpSetLayout_ =
       setLayout(device, {warpLayoutBinding(kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT)});
   materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
@@ -201,24 +204,19 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
       break;
   }
   stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_));
-  // Binding 0: the scene's vertices; binding 1 (conformal): their warps from the pre-pass.
-  const std::array<VkVertexInputBindingDescription, 2> bindings = {{
-      {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
-      {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
-  }};
-  const std::array<VkVertexInputAttributeDescription, 4> attributes = {{
+  // Plain: the scene's vertices. The conformal vertex shaders read theirs from storage buffers.
+  const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
+  const std::array<VkVertexInputAttributeDescription, 3> attributes = {{
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
-      {3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
   }};
-  const bool conformal = kind != Kind::Plain;
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  if (!tessellated) {  // tessellated: warp.vert reads its vertices from storage buffers
-    vertexInput.vertexBindingDescriptionCount = conformal ? 2 : 1;
-    vertexInput.pVertexBindingDescriptions = bindings.data();
-    vertexInput.vertexAttributeDescriptionCount = conformal ? 4 : 3;
+  if (kind == Kind::Plain) {
+    vertexInput.vertexBindingDescriptionCount = 1;
+    vertexInput.pVertexBindingDescriptions = &binding;
+    vertexInput.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(attributes.size());
     vertexInput.pVertexAttributeDescriptions = attributes.data();
   }
   VkPipelineInputAssemblyStateCreateInfo assembly{

@@ -35,8 +35,8 @@ struct PushConstants {
   glm::vec4 baseColorFactor;
   std::uint32_t viewBase;
   std::uint32_t hasNormals;
-  std::int32_t vertexOffset;  // tessellated draws: the mesh's (warp.vert reads the indices)
-  std::uint32_t padding;
+  std::int32_t vertexOffset;   // tessellated draws: the mesh's (warp.vert reads the indices)
+  std::uint32_t midpointBase;  // conformal draws: the scene's vertex count (edge midpoints after)
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
@@ -51,7 +51,7 @@ struct PrepassConstants {
   float maxErrorAngle;
   float maxSegmentAngle;
   float minGap;
-  float padding;
+  std::uint32_t midpointBase;  // the scene's vertex count
 };
 
 // Interleaved vertex as uploaded by GpuScene.
