@@ -14,14 +14,15 @@
 
 layout(local_size_x = 64) in;
 
-void appendFlat(uint at, uint i0, uint i1, uint i2) {
-  simpleIndices[at] = i0; simpleIndices[at + 1u] = i1; simpleIndices[at + 2u] = i2;
+void appendPiece(uint at, uint i0, uint i1, uint i2) {
+  pieceIndices[at] = i0; pieceIndices[at + 1u] = i1; pieceIndices[at + 2u] = i2;
 }
 
 void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
-  uint slot = atomicAdd(commands[3u * prepass.mesh + list].indexCount, 3u);
+  uint slot = atomicAdd(commands[kLists * prepass.mesh + list].indexCount, 3u);
   if (list == kListFlat) {
-    appendFlat(kFlatCapacity * prepass.firstIndex + slot, i0, i1, i2);
+    uint at = prepass.firstIndex + slot;
+    simpleIndices[at] = i0; simpleIndices[at + 1u] = i1; simpleIndices[at + 2u] = i2;
     return;
   }
   // The dropping list fills the mesh's range from its end, back to front.
@@ -32,7 +33,7 @@ void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
 }
 
 // Draws a triangle whose edges need two segments at most (edge k, opposite corner k, when
-// split[k]) flat in pieces between its corners and the split edges' midpoints, instead of
+// split[k]) in flat pieces (the pieces list, warp_pieces.vert) between its corners and the split edges' midpoints, instead of
 // tessellating it: the midpoints' warps are the pre-pass's (confvis_pulled_vertex.glsl numbers
 // them after the scene's vertices), exactly what tessellation at level 2 places there, without
 // its warped centre and its cost (lavapipe tessellates on one thread; most bent triangles of a
@@ -44,29 +45,29 @@ void appendSplit(uint i[3], bool split[3], uint edge[3]) {
     m[k] = prepass.midpointBase + edge[k] - uint(prepass.vertexOffset);
     pieces += split[k] ? 1u : 0u;
   }
-  uint at = kFlatCapacity * prepass.firstIndex +
-            atomicAdd(commands[3u * prepass.mesh + kListFlat].indexCount, 3u * pieces);
+  uint at = kPieceCapacity * prepass.firstIndex +
+            atomicAdd(commands[kLists * prepass.mesh + kListPieces].indexCount, 3u * pieces);
   if (pieces == 2u) {  // one split edge: its opposite corner fans to its midpoint
     uint k = split[0] ? 0u : split[1] ? 1u : 2u;
     uint a = (k + 1u) % 3u, b = (k + 2u) % 3u;  // edge k runs from corner a to corner b
-    appendFlat(at, i[k], i[a], m[k]);
-    appendFlat(at + 3u, i[k], m[k], i[b]);
+    appendPiece(at, i[k], i[a], m[k]);
+    appendPiece(at + 3u, i[k], m[k], i[b]);
     return;
   }
   if (pieces == 4u) {
-    appendFlat(at, i[0], m[2], m[1]);
-    appendFlat(at + 3u, i[1], m[0], m[2]);
-    appendFlat(at + 6u, i[2], m[1], m[0]);
-    appendFlat(at + 9u, m[0], m[1], m[2]);
+    appendPiece(at, i[0], m[2], m[1]);
+    appendPiece(at + 3u, i[1], m[0], m[2]);
+    appendPiece(at + 6u, i[2], m[1], m[0]);
+    appendPiece(at + 9u, m[0], m[1], m[2]);
     return;
   }
   // Two split edges, meeting at corner u (opposite the unsplit one): u's corner between their
   // midpoints cut off, the quad beyond it in two.
   uint u = !split[0] ? 0u : !split[1] ? 1u : 2u;
   uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;  // m[b] lies on u-a, m[a] on b-u
-  appendFlat(at, i[u], m[b], m[a]);
-  appendFlat(at + 3u, i[a], i[b], m[a]);
-  appendFlat(at + 6u, i[a], m[a], m[b]);
+  appendPiece(at, i[u], m[b], m[a]);
+  appendPiece(at + 3u, i[a], i[b], m[a]);
+  appendPiece(at + 6u, i[a], m[a], m[b]);
 }
 
 // A triangle that the warp stretches more than 4 times, flips or flattens 4 times.

@@ -18,14 +18,11 @@ struct DrawCommand {  // VkDrawIndexedIndirectCommand
 layout(set = 2, binding = 0, std430) readonly buffer Vertices { float vertices[]; };
 layout(set = 2, binding = 1, std430) readonly buffer Indices { uint indices[]; };
 layout(set = 2, binding = 2, std430) buffer Warped { vec4 warped[]; };
-// The flat list: kFlatCapacity index slots per index of the scene, since a triangle split at its
-// edge midpoints makes up to four (classify_triangles.comp); a mesh's part starts at
-// kFlatCapacity times its first index.
 layout(set = 2, binding = 3, std430) writeonly buffer SimpleIndices { uint simpleIndices[]; };
-const uint kFlatCapacity = 4u;
 layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint complexIndices[]; };
-// Three commands per mesh: [3 m] flat, [3 m + 1] tessellated, [3 m + 2] tessellated with the
-// geometry shader that drops pieces (kListFlat... below). Both tessellated lists share
+// Four commands per mesh: [4 m] flat, [4 m + 1] tessellated, [4 m + 2] tessellated with the
+// geometry shader that drops pieces, [4 m + 3] flat pieces of split triangles (kListFlat...
+// below). Both tessellated lists share
 // ComplexIndices and PatchLevels: the first fills the mesh's range from its start, the second
 // from its end (its command's firstIndex is left at the range's start; the host knows the count).
 layout(set = 2, binding = 5, std430) buffer Commands { DrawCommand commands[]; };
@@ -41,7 +38,14 @@ layout(set = 2, binding = 8, std430) buffer EdgeLevels { vec4 edgeLevels[]; };
 // (confvis_render_common.glsl: set 0, binding 2).
 layout(set = 2, binding = 9, std430) writeonly buffer PatchLevels { vec4 patchLevels[]; };
 
-const uint kListFlat = 0u, kListTessellated = 1u, kListDropping = 2u;
+// The pieces list: kPieceCapacity index slots per index of the scene, since a triangle split at
+// its edge midpoints makes up to four (classify_triangles.comp); a mesh's part starts at
+// kPieceCapacity times its first index.
+layout(set = 2, binding = 10, std430) writeonly buffer PieceIndices { uint pieceIndices[]; };
+const uint kPieceCapacity = 4u;
+
+const uint kListFlat = 0u, kListTessellated = 1u, kListDropping = 2u, kListPieces = 3u;
+const uint kLists = 4u;
 
 layout(push_constant) uniform Prepass {
   uint count;         // vertices (warp), edges or the mesh's triangles (classify)

@@ -1,18 +1,21 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Conformal mode, triangles the pre-pass found straight enough, and the flat pieces of those it
-// split at their edge midpoints: drawn flat between the warps it measured
-// (warp_vertices.comp, classify_edges.comp), from the vertices this shader reads itself.
-#include "confvis_pulled_vertex.glsl"
+// Conformal mode, triangles the pre-pass found straight enough: drawn flat between the corners
+// it warped (classify_triangles.comp).
+#include "confvis_render_common.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+layout(location = 3) in vec4 inWarped;  // from warp_vertices.comp, relative to c
 
 layout(location = 0) out vec3 outWorld;
 layout(location = 1) out vec3 outNormal;
 layout(location = 2) out vec2 outUv;
 
 void main() {
-  PulledVertex v = pulledVertex(uint(gl_VertexIndex));
-  outWorld = v.position;
-  outNormal = v.normal;
-  outUv = v.uv;
-  gl_Position = currentView().viewProj * vec4(frame.warpCentre.xyz + v.warped.xyz, 1.0);
+  outWorld = inPosition;
+  outNormal = inNormal;
+  outUv = inUv;
+  gl_Position = currentView().viewProj * vec4(frame.warpCentre.xyz + inWarped.xyz, 1.0);
 }

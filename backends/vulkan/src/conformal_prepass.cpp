@@ -30,7 +30,8 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
   warped_ = Buffer(context_, scene.vertexCount() * sizeof(glm::vec4),
                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-  flat_ = Buffer(context_, kFlatCapacity * indexBytes, indexUsage, false);
+  flat_ = Buffer(context_, indexBytes, indexUsage, false);
+  pieces_ = Buffer(context_, kPieceCapacity * indexBytes, indexUsage, false);
   tessellated_ = Buffer(context_, indexBytes, indexUsage, false);
   // Host-visible: reset from the host before every frame.
   commands_ = Buffer(context_, commandOffset(scene.draws().size(), PrepassList::Flat),
@@ -61,7 +62,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       scene.vertexBuffer(), scene.indexBuffer(),         warped_.get(),
       flat_.get(),          tessellated_.get(),          commands_.get(),
       scene.edgeBuffer(),   scene.triangleEdgeBuffer(), edgeLevels_.get(),
-      patchLevels_.get()};
+      patchLevels_.get(),   pieces_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   rangeEnds_.clear();
@@ -80,7 +81,8 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
     const GpuScene::Draw& draw = scene.draws()[d];
     for (std::uint32_t list = 0; list < kPrepassLists; ++list)
       commands[kPrepassLists * d + list] = {0, 1, draw.firstIndex, draw.vertexOffset, 0};
-    commands[kPrepassLists * d].firstIndex = kFlatCapacity * draw.firstIndex;
+    commands[kPrepassLists * d + static_cast<std::uint32_t>(PrepassList::Pieces)].firstIndex =
+        kPieceCapacity * draw.firstIndex;
   }
 
   // The previous frame's draws read what this frame overwrites.

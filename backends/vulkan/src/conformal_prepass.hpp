@@ -18,12 +18,12 @@
 
 namespace confvis::vulkan {
 
-// Flat-list index slots per index of the scene: a triangle split at its edge midpoints makes up
-// to four (classify_triangles.comp, kFlatCapacity).
-constexpr std::uint32_t kFlatCapacity = 4;
+// Pieces-list index slots per index of the scene: a triangle split at its edge midpoints makes
+// up to four (classify_triangles.comp, kPieceCapacity).
+constexpr std::uint32_t kPieceCapacity = 4;
 
-enum class PrepassList : std::uint32_t { Flat = 0, Tessellated = 1, Dropping = 2 };
-constexpr std::uint32_t kPrepassLists = 3;  // commands per mesh, kList* of the shaders
+enum class PrepassList : std::uint32_t { Flat = 0, Tessellated = 1, Dropping = 2, Pieces = 3 };
+constexpr std::uint32_t kPrepassLists = 4;  // commands per mesh, kList* of the shaders
 
 struct PrepassThresholds {
   float maxErrorAngle;    // radians: the smallest over the frame's walls
@@ -41,7 +41,8 @@ class ConformalPrepass {
               VkDescriptorSet warpSet, const PrepassThresholds& thresholds);
 
   VkBuffer warped() const { return warped_.get(); }  // vec4 per vertex: warp relative to c, validity
-  VkBuffer flatIndices() const { return flat_.get(); }  // kFlatCapacity slots per scene index
+  VkBuffer flatIndices() const { return flat_.get(); }
+  VkBuffer pieceIndices() const { return pieces_.get(); }  // kPieceCapacity slots per scene index
   VkBuffer tessellatedIndices() const { return tessellated_.get(); }  // both tessellated lists
   VkBuffer commands() const { return commands_.get(); }
   // vec4 per tessellated-lists index: level of the edge opposite that corner (warp.tesc).
@@ -62,7 +63,7 @@ class ConformalPrepass {
   const Pipelines& pipelines_;
   std::uint64_t sceneId_ = 0;
   std::vector<std::uint32_t> rangeEnds_;  // per mesh: one past its last index
-  Buffer warped_, flat_, tessellated_, commands_, edgeLevels_, patchLevels_;
+  Buffer warped_, flat_, pieces_, tessellated_, commands_, edgeLevels_, patchLevels_;
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

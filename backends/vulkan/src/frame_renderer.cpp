@@ -164,11 +164,10 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
   if (request.conformal)
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, kWarpDescriptorSet, 1,
                             &warpSet_, 0, nullptr);
-  if (!request.conformal) {  // the conformal vertex shaders read their vertices themselves
-    const VkBuffer vertices = scene.vertexBuffer();
-    const VkDeviceSize offset = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &vertices, &offset);
-  }
+  // Plain and conformal flat; the other conformal vertex shaders read their vertices themselves.
+  const std::array<VkBuffer, 2> vertexBuffers = {scene.vertexBuffer(), prepass_.warped()};
+  const std::array<VkDeviceSize, 2> offsets = {0, 0};
+  vkCmdBindVertexBuffers(cmd, 0, request.conformal ? 2 : 1, vertexBuffers.data(), offsets.data());
   // Tessellated lists: one draw each, without an index buffer (warp.vert reads the list); the
   // pre-pass has finished (the frame waited for it), so the host knows where the list lies.
   const auto drawPatches = [&](PushConstants push, const VkDrawIndexedIndirectCommand& c) {
@@ -189,7 +188,7 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
       if (!request.conformal)
         vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
-      else if (list == PrepassList::Flat)  // the pre-pass's list and count
+      else if (list == PrepassList::Flat || list == PrepassList::Pieces)  // its list and count
         vkCmdDrawIndexedIndirect(cmd, prepass_.commands(), ConformalPrepass::commandOffset(d, list),
                                  1, sizeof(VkDrawIndexedIndirectCommand));
       else
@@ -201,6 +200,7 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
     return;
   }
   drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), PrepassList::Flat);
+  drawAll(pass.conformalPieces.get(), prepass_.pieceIndices(), PrepassList::Pieces);
   drawAll(pass.conformalTessellated.get(), VK_NULL_HANDLE, PrepassList::Tessellated);
   drawAll(pass.conformalDropping.get(), VK_NULL_HANDLE, PrepassList::Dropping);
 }
@@ -220,7 +220,8 @@ FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene)
   PrepassCounts counts;
   counts.seconds = prepassSeconds_;
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
-    counts.flat += prepass_.command(d, PrepassList::Flat).indexCount / 3;
+    counts.flat += prepass_.command(d, PrepassList::Flat).indexCount / 3 +
+                   prepass_.command(d, PrepassList::Pieces).indexCount / 3;
     counts.tessellated += prepass_.command(d, PrepassList::Tessellated).indexCount / 3;
     counts.dropping += prepass_.command(d, PrepassList::Dropping).indexCount / 3;
   }

@@ -15,6 +15,7 @@
 #include "confvis_spirv/scene_vert.h"
 #include "confvis_spirv/warp_geom.h"
 #include "confvis_spirv/warp_tesc.h"
+#include "confvis_spirv/warp_pieces_vert.h"
 #include "confvis_spirv/warp_projected_tese.h"
 #include "confvis_spirv/warp_tese.h"
 #include "confvis_spirv/warp_simple_vert.h"
@@ -80,6 +81,7 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   warpTesc_ = shaderModule(device, kSpirv_warp_tesc);
   warpTese_ = shaderModule(device, kSpirv_warp_tese);
   warpProjectedTese_ = shaderModule(device, kSpirv_warp_projected_tese);
+  warpPiecesVert_ = shaderModule(device, kSpirv_warp_pieces_vert);
   warpGeom_ = shaderModule(device, kSpirv_warp_geom);
 
   frameSetLayout_ = setLayout(
@@ -115,6 +117,7 @@ const Pipelines::Pass& Pipelines::pass(std::uint32_t viewCount) {
   pass.conformalFlat = createPipeline(pass.renderPass.get(), Kind::ConformalFlat);
   pass.conformalTessellated = createPipeline(pass.renderPass.get(), Kind::ConformalTessellated);
   pass.conformalDropping = createPipeline(pass.renderPass.get(), Kind::ConformalDropping);
+  pass.conformalPieces = createPipeline(pass.renderPass.get(), Kind::ConformalPieces);
   return passes_.emplace(viewCount, std::move(pass)).first->second;
 }
 
@@ -191,6 +194,9 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
     case Kind::ConformalFlat:
       stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpSimpleVert_)};
       break;
+    case Kind::ConformalPieces:
+      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpPiecesVert_)};
+      break;
     case Kind::ConformalTessellated:
       stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
                 stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
@@ -204,19 +210,25 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
       break;
   }
   stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_));
-  // Plain: the scene's vertices. The conformal vertex shaders read theirs from storage buffers.
-  const VkVertexInputBindingDescription binding{0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX};
-  const std::array<VkVertexInputAttributeDescription, 3> attributes = {{
+  // Binding 0: the scene's vertices; binding 1 (conformal flat): their warps from the pre-pass.
+  // The other conformal vertex shaders read theirs from storage buffers.
+  const std::array<VkVertexInputBindingDescription, 2> bindings = {{
+      {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
+      {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
+  }};
+  const std::array<VkVertexInputAttributeDescription, 4> attributes = {{
       {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
       {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
       {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
+      {3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
   }};
+  const bool flat = kind == Kind::ConformalFlat;
   VkPipelineVertexInputStateCreateInfo vertexInput{
       VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  if (kind == Kind::Plain) {
-    vertexInput.vertexBindingDescriptionCount = 1;
-    vertexInput.pVertexBindingDescriptions = &binding;
-    vertexInput.vertexAttributeDescriptionCount = static_cast<std::uint32_t>(attributes.size());
+  if (kind == Kind::Plain || flat) {
+    vertexInput.vertexBindingDescriptionCount = flat ? 2 : 1;
+    vertexInput.pVertexBindingDescriptions = bindings.data();
+    vertexInput.vertexAttributeDescriptionCount = flat ? 4 : 3;
     vertexInput.pVertexAttributeDescriptions = attributes.data();
   }
   VkPipelineInputAssemblyStateCreateInfo assembly{

@@ -40,7 +40,7 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 10;
+inline constexpr std::uint32_t kPrepassBindings = 11;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -89,25 +89,27 @@ class Pipelines {
   // built on first use. Conformal mode draws with three, one per list of the pre-pass:
   // conformalFlat for the triangles it found straight enough, conformalTessellated
   // (tessellation) for the bent ones and conformalDropping (tessellation + the geometry shader
-  // that drops pieces) for those on the cut, at the source's rim or strongly distorted.
+  // that drops pieces) for those on the cut, at the source's rim or strongly distorted, and
+  // conformalPieces for the flat pieces of the triangles it split at their edge midpoints.
   struct Pass {
     UniqueRenderPass renderPass;
     UniquePipeline plain;
     UniquePipeline conformalFlat;
     UniquePipeline conformalTessellated;
     UniquePipeline conformalDropping;
+    UniquePipeline conformalPieces;
   };
   const Pass& pass(std::uint32_t viewCount);
 
  private:
-  enum class Kind { Plain, ConformalFlat, ConformalTessellated, ConformalDropping };
+  enum class Kind { Plain, ConformalFlat, ConformalTessellated, ConformalDropping, ConformalPieces };
   UniqueRenderPass createRenderPass(std::uint32_t viewCount) const;
   UniquePipeline createPipeline(VkRenderPass renderPass, Kind kind) const;
   void createComputePipelines();  // pipelines_compute.cpp
 
   VulkanContext& context_;
   UniqueShaderModule sceneVert_, sceneFrag_, warpSimpleVert_, warpVert_, warpTesc_, warpTese_,
-      warpProjectedTese_, warpGeom_;
+      warpProjectedTese_, warpGeom_, warpPiecesVert_;
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
