@@ -53,6 +53,7 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
     colours.red[lane] = surface.red[lane] * lambert;
     colours.green[lane] = surface.green[lane] * lambert;
     colours.blue[lane] = surface.blue[lane] * lambert;
+    colours.alpha[lane] = hits.hit[lane] ? 1.0f : 0.0f;
   }
   if (!options.ambientOcclusion || options.occlusionSamples <= 0) return 0;
 

@@ -19,9 +19,9 @@ struct ShadingOptions {
   float surfaceOffset = 1e-4f;     // metres, start of occlusion rays above the surface
 };
 
-// Linear RGB per lane; black where the lane hit nothing.
+// Linear RGB per lane, and alpha 1 where the lane hit something; all zero where it did not.
 struct PacketColours {
-  alignas(32) std::array<float, kPacketSize> red{}, green{}, blue{};
+  alignas(32) std::array<float, kPacketSize> red{}, green{}, blue{}, alpha{};
 };
 
 // Returns the number of occlusion rays cast. `seeds` gives each lane its random stream. Lanes

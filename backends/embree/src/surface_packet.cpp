@@ -1,5 +1,7 @@
 #include "surface_packet.hpp"
 
+#include <algorithm>
+
 namespace confvis::embree {
 
 namespace {
@@ -14,8 +16,16 @@ struct Vertices {
   alignas(32) Lanes n0x, n0y, n0z, n1x, n1y, n1z, n2x, n2y, n2z;
   alignas(32) Lanes s0, t0, s1, t1, s2, t2;
   alignas(32) Lanes width, height;  // of the texture; 0 without one
+  alignas(32) std::array<int, kPacketSize> texelsPerRow;  // of the texture; 0 without one
   alignas(32) Lanes factorRed, factorGreen, factorBlue;
   std::array<const Texture*, kPacketSize> texture;
+};
+
+// Where each lane's texture footprint lies: inside the image (the common case: four texels read
+// directly from `texel` on) or not (untextured, or across the border).
+struct FootprintPlace {
+  alignas(32) std::array<int, kPacketSize> inside, texel;
+  alignas(32) Lanes fx, fy;  // bilinear weights along x and y
 };
 
 // Texels a, b (row y) and c, d (row y + 1) of one channel of each lane's footprint.
@@ -51,6 +61,7 @@ void gatherVertices(const EmbreeScene& scene, const PacketHits& hits, Vertices& 
     g.factorRed[lane] = factor.r, g.factorGreen[lane] = factor.g, g.factorBlue[lane] = factor.b;
     const Texture* texture = mesh ? mesh->texture : nullptr;
     g.texture[lane] = texture;
+    g.texelsPerRow[lane] = texture ? texture->width : 0;
     g.width[lane] = texture ? static_cast<float>(texture->width) : 0.0f;
     g.height[lane] = texture ? static_cast<float>(texture->height) : 0.0f;
     const glm::vec2 none(0.0f);
@@ -62,39 +73,30 @@ void gatherVertices(const EmbreeScene& scene, const PacketHits& hits, Vertices& 
   }
 }
 
-// Texture::sample's footprint at (x, y) = uv * size - 0.5 for every lane: the four texels of
-// each channel and the weights fx, fy. Untextured lanes read white with zero weights (the
-// bilinear blend then gives exactly 1), footprints that leave the image take
+// Texture::sample's footprint for every lane: the four texels of each channel; `place` comes
+// from surfaceOf, and fx, fy are set to 0 where the footprint is not inside. Untextured lanes
+// read white (the bilinear blend then gives exactly 1), footprints that leave the image take
 // Texture::sampleWrapped's colour.
 template <bool kOneTriangle>
-void gatherTexels(const Vertices& g, const Lanes& s, const Lanes& t, const Lanes& x,
-                  const Lanes& y, Footprint (&channels)[3], Lanes& fx, Lanes& fy) {
+void gatherTexels(const Vertices& g, const Lanes& s, const Lanes& t, FootprintPlace& place,
+                  Footprint (&channels)[3]) {
   for (int lane = 0; lane < kPacketSize; ++lane) {
     const int i = kOneTriangle ? 0 : lane;
-    fx[lane] = fy[lane] = 0.0f;
     const Texture* texture = g.texture[i];
-    if (!texture) {
-      for (Footprint& f : channels) f.a[lane] = f.b[lane] = f.c[lane] = f.d[lane] = 1.0f;
-      continue;
-    }
-    if (!(x[lane] >= 0.0f && y[lane] >= 0.0f && x[lane] < g.width[i] - 1.0f &&
-          y[lane] < g.height[i] - 1.0f)) {
-      const glm::vec4 colour = texture->sampleWrapped({s[lane], t[lane]});
+    if (place.inside[lane]) {
+      const float* row0 = texture->rgba.data() + 4 * static_cast<std::size_t>(place.texel[lane]);
+      const float* row1 = row0 + 4 * static_cast<std::size_t>(g.texelsPerRow[i]);
       for (int c = 0; c < 3; ++c) {
         Footprint& f = channels[c];
-        f.a[lane] = f.b[lane] = f.c[lane] = f.d[lane] = colour[c];
+        f.a[lane] = row0[c], f.b[lane] = row0[4 + c], f.c[lane] = row1[c], f.d[lane] = row1[4 + c];
       }
       continue;
     }
-    const int ix = static_cast<int>(x[lane]), iy = static_cast<int>(y[lane]);
-    fx[lane] = x[lane] - static_cast<float>(ix);
-    fy[lane] = y[lane] - static_cast<float>(iy);
-    const float* row0 =
-        texture->rgba.data() + 4 * (static_cast<std::size_t>(iy) * texture->width + ix);
-    const float* row1 = row0 + 4 * static_cast<std::size_t>(texture->width);
+    place.fx[lane] = place.fy[lane] = 0.0f;
+    const glm::vec4 colour = texture ? texture->sampleWrapped({s[lane], t[lane]}) : glm::vec4(1.0f);
     for (int c = 0; c < 3; ++c) {
       Footprint& f = channels[c];
-      f.a[lane] = row0[c], f.b[lane] = row0[4 + c], f.c[lane] = row1[c], f.d[lane] = row1[4 + c];
+      f.a[lane] = f.b[lane] = f.c[lane] = f.d[lane] = colour[c];
     }
   }
 }
@@ -108,7 +110,8 @@ void surfaceOf(const EmbreeScene& scene, const PacketHits& hits, SurfacePacket& 
   const RTCHit8& hit = hits.rayhit.hit;
   Vertices g;
   gatherVertices<kOneTriangle>(scene, hits, g);
-  alignas(32) Lanes s, t, x, y;
+  alignas(32) Lanes s, t;
+  FootprintPlace place;
   for (int lane = 0; lane < kPacketSize; ++lane) {
     const int i = kOneTriangle ? 0 : lane;
     const float u = hit.u[lane], v = hit.v[lane], w = 1.0f - u - v;
@@ -123,12 +126,21 @@ void surfaceOf(const EmbreeScene& scene, const PacketHits& hits, SurfacePacket& 
     out.nz[lane] = keep * nz + (1.0f - keep) * hit.Ng_z[lane];
     s[lane] = w * g.s0[i] + u * g.s1[i] + v * g.s2[i];
     t[lane] = w * g.t0[i] + u * g.t1[i] + v * g.t2[i];
-    x[lane] = s[lane] * g.width[i] - 0.5f;
-    y[lane] = t[lane] * g.height[i] - 0.5f;
+    // Texture::sample: the footprint at (x, y) = uv * size - 0.5 lies inside when x, y >= 0 and
+    // below size - 1 (never without a texture: size 0). Clamped before the integer conversion,
+    // which is then defined on every lane.
+    const float x = s[lane] * g.width[i] - 0.5f, y = t[lane] * g.height[i] - 0.5f;
+    place.inside[lane] =
+        (x >= 0.0f) & (y >= 0.0f) & (x < g.width[i] - 1.0f) & (y < g.height[i] - 1.0f);
+    const int ix = static_cast<int>(std::min(std::max(0.0f, x), g.width[i]));
+    const int iy = static_cast<int>(std::min(std::max(0.0f, y), g.height[i]));
+    place.fx[lane] = x - static_cast<float>(ix);
+    place.fy[lane] = y - static_cast<float>(iy);
+    place.texel[lane] = iy * g.texelsPerRow[i] + ix;
   }
   Footprint channels[3];
-  alignas(32) Lanes fx, fy;
-  gatherTexels<kOneTriangle>(g, s, t, x, y, channels, fx, fy);
+  gatherTexels<kOneTriangle>(g, s, t, place, channels);
+  const Lanes &fx = place.fx, &fy = place.fy;
   for (int lane = 0; lane < kPacketSize; ++lane) {
     const int i = kOneTriangle ? 0 : lane;
     auto bilinear = [&](const Footprint& f) {

@@ -34,7 +34,7 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
       samples.x = x;
       samples.y = y;
       samples.count = std::min(kPacketSize, x1 - x);
-      alignas(32) std::array<float, kPacketSize> red{}, green{}, blue{}, alpha{};
+      PacketColours sum;  // over the samples (several per pixel)
       if (seeded)
         for (int lane = 0; lane < samples.count; ++lane)
           samples.pixelSeeds[lane] = pixelSeed(job, x + lane, y);
@@ -47,20 +47,21 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
         cameraRays += traceCameraPacket(scene, rays, job, samples, hits);
         retraced += static_cast<std::uint64_t>(hits.retraced);
         occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
-        // Lanes without a hit are black (zeros), see shadePacket.
+        if (job.samplesPerPixel == 1) break;  // the colours are the pixels
         for (int lane = 0; lane < kPacketSize; ++lane) {
-          red[lane] += colours.red[lane];
-          green[lane] += colours.green[lane];
-          blue[lane] += colours.blue[lane];
-          alpha[lane] += hits.hit[lane] ? 1.0f : 0.0f;
+          sum.red[lane] += colours.red[lane];
+          sum.green[lane] += colours.green[lane];
+          sum.blue[lane] += colours.blue[lane];
+          sum.alpha[lane] += colours.alpha[lane];
         }
       }
+      const PacketColours& mean = job.samplesPerPixel == 1 ? colours : sum;
       for (int lane = 0; lane < samples.count; ++lane) {
         float* pixel = image.at(x + lane, y);
-        pixel[0] = red[lane] * scale;
-        pixel[1] = green[lane] * scale;
-        pixel[2] = blue[lane] * scale;
-        pixel[3] = alpha[lane] * scale;
+        pixel[0] = mean.red[lane] * scale;
+        pixel[1] = mean.green[lane] * scale;
+        pixel[2] = mean.blue[lane] * scale;
+        pixel[3] = mean.alpha[lane] * scale;
       }
     }
   }
