@@ -33,10 +33,9 @@ void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples
 void tablePacket(const CameraRays& rays, const DirectionTable& table,
                  const PacketSamples& samples, PacketHits& hits) {
   alignas(32) Lanes fx{}, fy{}, fz{};
-  for (int lane = 0; lane < samples.count; ++lane) {
-    const glm::vec3& f = table.at(samples.x + lane, samples.y, samples.sample);
-    fx[lane] = f.x, fy[lane] = f.y, fz[lane] = f.z;
-  }
+  const glm::vec3* run = table.at(samples.x, samples.y, samples.sample);  // a packet: one tile row
+  for (int lane = 0; lane < samples.count; ++lane)
+    fx[lane] = run[lane].x, fy[lane] = run[lane].y, fz[lane] = run[lane].z;
   const glm::mat3& m = rays.rotation();
   RTCRay8& ray = hits.rayhit.ray;
   for (int lane = 0; lane < kPacketSize; ++lane) {
