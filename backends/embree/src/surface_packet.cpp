@@ -138,6 +138,17 @@ void surfaceOf(const EmbreeScene& scene, const PacketHits& hits, SurfacePacket& 
     place.fy[lane] = y - static_cast<float>(iy);
     place.texel[lane] = iy * g.texelsPerRow[i] + ix;
   }
+  const bool textured =
+      std::any_of(g.texture.begin(), g.texture.begin() + (kOneTriangle ? 1 : kPacketSize),
+                  [](const Texture* texture) { return texture != nullptr; });
+  if (!textured) {  // untextured meshes and background: the factor alone
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const int i = kOneTriangle ? 0 : lane;
+      out.red[lane] = g.factorRed[i], out.green[lane] = g.factorGreen[i];
+      out.blue[lane] = g.factorBlue[i];
+    }
+    return;
+  }
   Footprint channels[3];
   gatherTexels<kOneTriangle>(g, s, t, place, channels);
   const Lanes &fx = place.fx, &fy = place.fy;
@@ -157,6 +168,12 @@ void surfaceOf(const EmbreeScene& scene, const PacketHits& hits, SurfacePacket& 
 }  // namespace
 
 void surfaceAt(const EmbreeScene& scene, const PacketHits& hits, SurfacePacket& surface) {
+  if (std::none_of(hits.hit.begin(), hits.hit.end(), [](bool hit) { return hit; })) {
+    for (auto* lanes : {&surface.nx, &surface.ny, &surface.nz, &surface.red, &surface.green,
+                        &surface.blue})
+      lanes->fill(0.0f);  // background only
+    return;
+  }
   if (oneTriangle(hits))
     surfaceOf<true>(scene, hits, surface);
   else
