@@ -62,9 +62,7 @@ int dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengt
   return -1;
 }
 
-int faceFarthestFromBoundary(const TriMesh& mesh) {
-  const auto tri = buildTriangulation(mesh);
-  const auto lengths = embeddedEdgeLengths(tri, mesh);
+int faceFarthestFromBoundary(const IntrinsicTriangulation& tri, const std::vector<double>& lengths) {
   std::vector<int> boundary, parent;
   std::vector<double> dist;
   for (int v = 0; v < tri.vertexCount; ++v)
@@ -141,12 +139,15 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
   return corner;
 }
 
-DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options) {
+DiskMap mapAnnulus(const std::vector<Vec3d>& points,
+                   const std::vector<std::array<int, 3>>& triangles, int removedFace,
+                   const DiskMapOptions& options) {
   DiskMap result;
   result.removedFace = removedFace;
-  IntrinsicTriangulation tri = buildTriangulation(mesh, removedFace);
+  IntrinsicTriangulation tri =
+      buildTriangulation(static_cast<int>(points.size()), triangles, removedFace);
   CirclePackingMetric metric =
-      initialMetric(tri, embeddedEdgeLengths(tri, mesh), options.scheme, Geometry::Euclidean);
+      initialMetric(tri, embeddedEdgeLengths(tri, points), options.scheme, Geometry::Euclidean);
   RicciFlowOptions flowOptions;
   flowOptions.tolerance = options.tolerance;
   flowOptions.maxIterations = options.maxIterations;
@@ -160,9 +161,9 @@ DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& o
   // Inner boundary = the removed face's corners.
   std::vector<char> inner(tri.vertexCount, 0);
   std::vector<int> innerVertices;
-  for (auto v : mesh.fv_range(TriMesh::FaceHandle(removedFace))) {
-    inner[v.idx()] = 1;
-    innerVertices.push_back(v.idx());
+  for (int v : triangles[removedFace]) {
+    inner[v] = 1;
+    innerVertices.push_back(v);
   }
   // Shortest interior edge path from the inner to the outer boundary: the first outer vertex
   // Dijkstra settles.
@@ -220,23 +221,49 @@ DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& o
   return result;
 }
 
-}  // namespace
-
-DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
-  requireDisk(mesh, "mesh");
-  const int removed = options.removedFace >= 0 ? options.removedFace : faceFarthestFromBoundary(mesh);
-  if (removed >= static_cast<int>(mesh.n_faces()))
+// computeDiskMap once the input is known to be a disk (`whole`: its triangulation).
+DiskMap mapDisk(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& triangles,
+                const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
+  const int removed = options.removedFace >= 0
+                          ? options.removedFace
+                          : faceFarthestFromBoundary(whole, embeddedEdgeLengths(whole, points));
+  if (removed >= static_cast<int>(triangles.size()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
-  if (options.flips != FlipPolicy::Auto) return mapAnnulus(mesh, removed, options);
+  if (options.flips != FlipPolicy::Auto) return mapAnnulus(points, triangles, removed, options);
   try {
-    return mapAnnulus(mesh, removed, options);
+    return mapAnnulus(points, triangles, removed, options);
   } catch (const Error& e) {
     // Last resort: a flow that failed without (or with late) flips, tried with flips throughout.
     if (e.code() != ErrorCode::Unreachable) throw;
     DiskMapOptions withFlips = options;
     withFlips.flips = FlipPolicy::On;
-    return mapAnnulus(mesh, removed, withFlips);
+    return mapAnnulus(points, triangles, removed, withFlips);
   }
+}
+
+}  // namespace
+
+DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
+  requireDisk(mesh, "mesh");
+  std::vector<Vec3d> points;
+  points.reserve(mesh.n_vertices());
+  for (int v = 0; v < static_cast<int>(mesh.n_vertices()); ++v) {
+    const auto& p = mesh.point(TriMesh::VertexHandle(v));
+    points.push_back({p[0], p[1], p[2]});
+  }
+  const std::vector<std::array<int, 3>> triangles = meshTriangles(mesh);
+  const IntrinsicTriangulation whole =
+      buildTriangulation(static_cast<int>(points.size()), triangles);
+  return mapDisk(points, triangles, whole, options);
+}
+
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const DiskMapOptions& options) {
+  const IntrinsicTriangulation whole =
+      buildTriangulation(static_cast<int>(points.size()), triangles);
+  requireDisk(whole, "mesh");
+  return mapDisk(points, triangles, whole, options);
 }
 
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {

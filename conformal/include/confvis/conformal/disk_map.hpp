@@ -3,10 +3,12 @@
 // farthest from the boundary, flatten the annulus by Euclidean Ricci flow with zero target
 // curvature everywhere (a flat cylinder with straight boundaries), cut it along a shortest
 // edge path, lay it out, scale the period to 2πi, apply exp, normalise the outer circle to 1.
+#include <array>
 #include <complex>
 #include <functional>
 #include <vector>
 
+#include "confvis/base/vec3.hpp"
 #include "confvis/conformal/mesh.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
 
@@ -37,6 +39,12 @@ struct DiskMap {
 // boundary loops) or too coarse to have a face off the boundary; Error(Unreachable) if the
 // flow fails. The map preserves the input orientation.
 DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options = {});
+// The same for points and counter-clockwise triangles, without building a half-edge mesh (the
+// display map's ~3k-vertex disks are mapped at every re-bake). Also throws Error(InvalidInput)
+// for an edge in more than two triangles or inconsistent orientations.
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const DiskMapOptions& options = {});
 
 // Applies a Möbius alignment sending boundary vertices a, b, c to 1, i, -1.
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c);
