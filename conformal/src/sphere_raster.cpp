@@ -108,12 +108,6 @@ std::vector<std::vector<RasterBinEntry>> binSphereTriangles(
       if (!polygon.empty()) addEntry(f, t);
     }
   }
-  // Left to right within a band: a triangle's first texel then lies near the previous one's,
-  // where the shader's point-location walk starts (triangle order jumps across the face).
-  for (auto& bin : bins)
-    std::stable_sort(bin.begin(), bin.end(), [](const RasterBinEntry& a, const RasterBinEntry& b) {
-      return a.x0 < b.x0;
-    });
   return bins;
 }
 
