@@ -62,6 +62,7 @@ class CameraRays {
   glm::vec3 centreDirection(const glm::vec3& mapDirection) const {
     return glm::normalize(rotationF_ * mapDirection);
   }
+  // The virtual camera's rotation in float (centreDirection turns F with it).
   const glm::mat3& rotation() const { return rotationF_; }
   bool centreEyeConformal() const { return warp_ && eyeAtReference_; }
 
