@@ -43,7 +43,8 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
         std::array<std::uint32_t, kPacketSize> sampleSeeds{};
         if (seeded)
           for (int lane = 0; lane < samples.count; ++lane)
-            sampleSeeds[lane] = hashU32(samples.pixelSeeds[lane] + static_cast<std::uint32_t>(sample));
+            sampleSeeds[lane] =
+                hashU32(samples.pixelSeeds[lane] + static_cast<std::uint32_t>(sample));
         cameraRays += traceCameraPacket(scene, rays, job, samples, hits);
         retraced += static_cast<std::uint64_t>(hits.retraced);
         occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
