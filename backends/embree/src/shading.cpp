@@ -53,8 +53,9 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
     colours.red[lane] = surface.red[lane] * lambert;
     colours.green[lane] = surface.green[lane] * lambert;
     colours.blue[lane] = surface.blue[lane] * lambert;
-    colours.alpha[lane] = hits.hit[lane] ? 1.0f : 0.0f;
   }
+  // Apart: reading the bool array in the loop above keeps GCC from vectorising it.
+  for (int lane = 0; lane < kPacketSize; ++lane) colours.alpha[lane] = hits.hit[lane] ? 1.0f : 0.0f;
   if (!options.ambientOcclusion || options.occlusionSamples <= 0) return 0;
 
   std::array<glm::vec3, kPacketSize> normals{};  // unit, towards the viewer
