@@ -310,7 +310,7 @@ std::vector<double> initialRadii(const IntrinsicTriangulation& tri,
       // (catastrophic on a mesh with centimetre edges). Radii of the mean incident length, the
       // next guess, stalled the flow on every mesh of the robustness sweep; a third of the
       // shortest incident edge, as for inversive distance, converges (measured).
-      for (int v = 0; v < n; ++v) radii[v] = minLength[v] * (getenv("VF") ? atof(getenv("VF")) : 1.0 / 3);
+      for (int v = 0; v < n; ++v) radii[v] = minLength[v] / 3;
       break;
     case Scheme::Mixed:
       for (int v = 0; v < n; ++v)
