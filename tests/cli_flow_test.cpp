@@ -83,6 +83,37 @@ TEST(CliFlow, BadInputGivesOneClearErrorAndNonZeroExit) {
   EXPECT_NE(badScheme.exitCode, 0);
 }
 
+TEST(CliFlow, SphericalAndHyperbolicRoutesEndToEnd) {
+  const fs::path mesh = scratch("hemi-routes.obj");
+  ASSERT_EQ(runCli("mesh hemisphere -n 12 -o " + mesh.string()).exitCode, 0);
+  for (const std::string route : {"spherical", "hyperbolic"}) {
+    const fs::path out = scratch(route + ".obj"), report = scratch(route + ".json");
+    const CliRun run = runCli("flow " + mesh.string() + " --geometry " + route + " -o " +
+                              out.string() + " --report " + report.string() +
+                              " --markers 0,12,168 -q");
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    std::vector<std::complex<double>> uv;
+    std::ifstream in(out);
+    for (std::string line; std::getline(in, line);) {
+      std::istringstream ls(line);
+      std::string tag;
+      double u, v;
+      if (ls >> tag && tag == "vt" && ls >> u >> v) uv.emplace_back(u, v);
+    }
+    ASSERT_EQ(uv.size(), 13u * 13u) << route;
+    for (const auto& z : uv) EXPECT_LE(std::abs(z), 1 + 1e-8) << route;
+    EXPECT_LT(std::abs(uv[12] - std::complex<double>(0, 1)), 1e-9) << route;
+    const auto json = nlohmann::json::parse(std::ifstream(report));
+    EXPECT_EQ(json["geometry"].get<std::string>(), route);
+    EXPECT_LE(json["max_curvature_error"].get<double>(), 1e-9) << route;
+    EXPECT_EQ(json["distortion"]["flipped_faces"].get<int>(), 0) << route;
+  }
+  const CliRun badGeometry = runCli("flow " + mesh.string() + " --geometry elliptic");
+  EXPECT_EQ(badGeometry.exitCode, 2) << badGeometry.output;
+  EXPECT_NE(badGeometry.output.find("unknown geometry 'elliptic'"), std::string::npos)
+      << badGeometry.output;
+}
+
 TEST(CliFlow, EveryCommandHasHelp) {
   for (const char* command : {"", "flow ", "mesh "}) {
     const CliRun run = runCli(std::string(command) + "--help");

@@ -140,17 +140,19 @@ bool cornerAngles(Geometry g, const std::array<double, 3>& l, std::array<double,
   if (g == Geometry::Spherical && !(l[0] + l[1] + l[2] < 2 * std::numbers::pi)) return false;
   for (int c = 0; c < 3; ++c) {
     const double li = l[c], lj = l[(c + 1) % 3], lk = l[(c + 2) % 3];
-    double cosTheta;
-    switch (g) {
-      case Geometry::Euclidean: cosTheta = (lj * lj + lk * lk - li * li) / (2 * lj * lk); break;
-      case Geometry::Hyperbolic:
-        cosTheta = (std::cosh(lj) * std::cosh(lk) - std::cosh(li)) / (std::sinh(lj) * std::sinh(lk));
-        break;
-      default:
-        cosTheta = (std::cos(li) - std::cos(lj) * std::cos(lk)) / (std::sin(lj) * std::sin(lk));
+    if (g == Geometry::Euclidean) {
+      const double cosTheta = (lj * lj + lk * lk - li * li) / (2 * lj * lk);
+      // Valid triangles give |cos| ≤ 1 up to rounding; clamp only that rounding.
+      angles[c] = std::acos(std::clamp(cosTheta, -1.0, 1.0));
+      continue;
     }
-    // Valid triangles give |cos| ≤ 1 up to rounding; clamp only that rounding.
-    angles[c] = std::acos(std::clamp(cosTheta, -1.0, 1.0));
+    // Half-angle formula, tan²(θ_i/2) = s(p - l_j) s(p - l_k) / (s(p) s(p - l_i)) with p the
+    // half perimeter and s = sin or sinh: the cosine law's acos loses half the digits for
+    // small angles (curvature stalled near 1e-8 on slivers of a lopsided disk, measured).
+    const double p = 0.5 * (li + lj + lk);
+    const double ratio = sineOf(g, 0.5 * (li + lk - lj)) * sineOf(g, 0.5 * (li + lj - lk)) /
+                         (sineOf(g, p) * sineOf(g, 0.5 * (lj + lk - li)));
+    angles[c] = 2 * std::atan(std::sqrt(ratio));
   }
   return true;
 }

@@ -7,6 +7,8 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/mobius.hpp"
+#include "disk_map_layout.hpp"
+#include "disk_map_routes.hpp"
 
 namespace confvis::conformal {
 namespace {
@@ -62,9 +64,7 @@ int dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengt
   return -1;
 }
 
-int faceFarthestFromBoundary(const TriMesh& mesh) {
-  const auto tri = buildTriangulation(mesh);
-  const auto lengths = embeddedEdgeLengths(tri, mesh);
+int faceFarthestFromBoundary(const IntrinsicTriangulation& tri, const std::vector<double>& lengths) {
   std::vector<int> boundary, parent;
   std::vector<double> dist;
   for (int v = 0; v < tri.vertexCount; ++v)
@@ -91,12 +91,10 @@ int faceFarthestFromBoundary(const TriMesh& mesh) {
 std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
                                            const std::vector<double>& lengths,
                                            const std::vector<char>& edgeCut) {
-  std::vector<std::array<Complex, 3>> corner(tri.faceCount());
-  std::vector<char> placed(tri.faceCount(), 0);
   // Third corner of face f given corners c1 = c0+1 and c2 = c0+2 already placed (CCW order):
   // in a CCW triangle c0 lies to the right of the ray c2→c1, at distance x along it (cosine
   // law) and height 2·area / |c1 c2| (Heron), so no trigonometry is needed.
-  auto placeThird = [&](int f, int c0) {
+  auto placeThird = [&](int f, int c0, std::array<Complex, 3>& corner) {
     const int c1 = (c0 + 1) % 3, c2 = (c0 + 2) % 3;
     const auto& fe = tri.faceEdges[f];
     const double base = lengths[fe[c0]], toC2 = lengths[fe[c1]], toC1 = lengths[fe[c2]];
@@ -104,55 +102,29 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
                                    (base + toC1 - toC2) * (base + toC2 - toC1));
     if (!(area4 > 0))
       throw Error(ErrorCode::Internal, "flat metric has a degenerate face " + std::to_string(f));
-    const Complex side = corner[f][c1] - corner[f][c2];
+    const Complex side = corner[c1] - corner[c2];
     const Complex direction = side / std::sqrt(std::norm(side));  // not abs: hypot is slow
     const double x = (toC2 * toC2 + base * base - toC1 * toC1) / (2 * base);
     const double y = area4 / (2 * base);
-    corner[f][c0] = corner[f][c2] + direction * Complex(x, -y);
+    corner[c0] = corner[c2] + direction * Complex(x, -y);
   };
-  std::vector<int> queue;  // breadth first: a plain array, faces are queued once
-  queue.reserve(tri.faceCount());
-  {
-    const int f = 0;
-    corner[f][0] = 0;
-    corner[f][1] = lengths[tri.faceEdges[f][2]];  // edge 0-1 is opposite corner 2
-    placeThird(f, 2);
-    placed[f] = 1;
-    queue.push_back(f);
-  }
-  for (std::size_t next = 0; next < queue.size(); ++next) {
-    const int f = queue[next];
-    for (int c = 0; c < 3; ++c) {
-      const int e = tri.faceEdges[f][c];
-      if (edgeCut[e] || tri.edgeOnBoundary(e)) continue;
-      const int g = tri.edgeFaces[e][0] == f ? tri.edgeFaces[e][1] : tri.edgeFaces[e][0];
-      if (placed[g]) continue;
-      const int cg = tri.cornerOpposite(g, e);
-      // Shared edge: in g it runs (cg+1) → (cg+2), the reverse of f's (c+1) → (c+2).
-      corner[g][(cg + 1) % 3] = corner[f][(c + 2) % 3];
-      corner[g][(cg + 2) % 3] = corner[f][(c + 1) % 3];
-      placeThird(g, cg);
-      placed[g] = 1;
-      queue.push_back(g);
-    }
-  }
-  for (char p : placed)
-    if (!p) throw Error(ErrorCode::Internal, "disk map layout did not reach every face");
-  return corner;
+  auto placeFirstEdge = [&](std::array<Complex, 3>& corner) {
+    corner[0] = 0;
+    corner[1] = lengths[tri.faceEdges[0][2]];  // edge 0-1 is opposite corner 2
+  };
+  return detail::developFaces<Complex>(tri, edgeCut, placeFirstEdge, placeThird);
 }
 
-DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options) {
+DiskMap mapAnnulus(const std::vector<Vec3d>& points,
+                   const std::vector<std::array<int, 3>>& triangles, int removedFace,
+                   const DiskMapOptions& options) {
   DiskMap result;
   result.removedFace = removedFace;
-  IntrinsicTriangulation tri = buildTriangulation(mesh, removedFace);
+  IntrinsicTriangulation tri =
+      buildTriangulation(static_cast<int>(points.size()), triangles, removedFace);
   CirclePackingMetric metric =
-      initialMetric(tri, embeddedEdgeLengths(tri, mesh), options.scheme, Geometry::Euclidean);
-  RicciFlowOptions flowOptions;
-  flowOptions.tolerance = options.tolerance;
-  flowOptions.maxIterations = options.maxIterations;
-  flowOptions.delaunayFlips = options.flips == FlipPolicy::On;
-  flowOptions.flipsWhenStuck = options.flips == FlipPolicy::Auto;
-  flowOptions.onIteration = options.onIteration;
+      initialMetric(tri, embeddedEdgeLengths(tri, points), options.scheme, Geometry::Euclidean);
+  const RicciFlowOptions flowOptions = detail::diskMapFlowOptions(options);
   result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
   result.usedFlips = result.flow.flipsStartedAt >= 0;
   const std::vector<double> lengths = metricEdgeLengths(tri, metric);
@@ -160,9 +132,9 @@ DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& o
   // Inner boundary = the removed face's corners.
   std::vector<char> inner(tri.vertexCount, 0);
   std::vector<int> innerVertices;
-  for (auto v : mesh.fv_range(TriMesh::FaceHandle(removedFace))) {
-    inner[v.idx()] = 1;
-    innerVertices.push_back(v.idx());
+  for (int v : triangles[removedFace]) {
+    inner[v] = 1;
+    innerVertices.push_back(v);
   }
   // Shortest interior edge path from the inner to the outer boundary: the first outer vertex
   // Dijkstra settles.
@@ -220,23 +192,71 @@ DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& o
   return result;
 }
 
+// `route` with the options, and if the flow fails with FlipPolicy::Auto, once more with flips
+// throughout (the last resort for a flow that failed without, or with late, flips).
+template <typename Route>
+DiskMap withFlipRetry(const DiskMapOptions& options, Route route) {
+  if (options.flips != FlipPolicy::Auto) return route(options);
+  try {
+    return route(options);
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::Unreachable) throw;
+    DiskMapOptions withFlips = options;
+    withFlips.flips = FlipPolicy::On;
+    return route(withFlips);
+  }
+}
+
+// The Euclidean route once the input is known to be a disk (`whole`: its triangulation).
+DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
+                         const std::vector<std::array<int, 3>>& triangles,
+                         const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
+  const int removed = options.removedFace >= 0
+                          ? options.removedFace
+                          : faceFarthestFromBoundary(whole, embeddedEdgeLengths(whole, points));
+  if (removed >= static_cast<int>(triangles.size()))
+    throw Error(ErrorCode::InvalidInput, "removed face index out of range");
+  return withFlipRetry(options, [&](const DiskMapOptions& o) {
+    return mapAnnulus(points, triangles, removed, o);
+  });
+}
+
 }  // namespace
 
 DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   requireDisk(mesh, "mesh");
-  const int removed = options.removedFace >= 0 ? options.removedFace : faceFarthestFromBoundary(mesh);
-  if (removed >= static_cast<int>(mesh.n_faces()))
-    throw Error(ErrorCode::InvalidInput, "removed face index out of range");
-  if (options.flips != FlipPolicy::Auto) return mapAnnulus(mesh, removed, options);
-  try {
-    return mapAnnulus(mesh, removed, options);
-  } catch (const Error& e) {
-    // Last resort: a flow that failed without (or with late) flips, tried with flips throughout.
-    if (e.code() != ErrorCode::Unreachable) throw;
-    DiskMapOptions withFlips = options;
-    withFlips.flips = FlipPolicy::On;
-    return mapAnnulus(mesh, removed, withFlips);
+  if (options.geometry != Geometry::Euclidean)
+    return withFlipRetry(options, [&](const DiskMapOptions& o) {
+      return o.geometry == Geometry::Spherical ? detail::sphericalDiskMap(mesh, o)
+                                               : detail::hyperbolicDiskMap(mesh, o);
+    });
+  std::vector<Vec3d> points;
+  points.reserve(mesh.n_vertices());
+  for (int v = 0; v < static_cast<int>(mesh.n_vertices()); ++v) {
+    const auto& p = mesh.point(TriMesh::VertexHandle(v));
+    points.push_back({p[0], p[1], p[2]});
   }
+  const std::vector<std::array<int, 3>> triangles = meshTriangles(mesh);
+  const IntrinsicTriangulation whole =
+      buildTriangulation(static_cast<int>(points.size()), triangles);
+  return euclideanDiskMap(points, triangles, whole, options);
+}
+
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const DiskMapOptions& options) {
+  const IntrinsicTriangulation whole =
+      buildTriangulation(static_cast<int>(points.size()), triangles);
+  requireDisk(whole, "mesh");
+  if (options.geometry != Geometry::Euclidean) {  // the curved routes work on a TriMesh
+    TriMesh mesh;
+    std::vector<TriMesh::VertexHandle> handles;
+    for (const Vec3d& p : points) handles.push_back(mesh.add_vertex({p.x, p.y, p.z}));
+    for (const auto& t : triangles)
+      mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+    return computeDiskMap(mesh, options);
+  }
+  return euclideanDiskMap(points, triangles, whole, options);
 }
 
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {

@@ -90,7 +90,7 @@ class NewtonFlow {
 
   IntrinsicTriangulation& tri_;
   CirclePackingMetric& metric_;
-  const std::vector<double>& target_;
+  std::vector<double> target_;      // a copy: options_.updateTarget may change it
   const RicciFlowOptions& options_;
   RicciFlowReport report_;
   RicciFlowReport::Seconds& seconds_ = report_.seconds;
@@ -140,6 +140,8 @@ RicciFlowReport NewtonFlow::run() {
     }
     lastStep_ = stepTaken;
     ++report_.iterations;
+    if (options_.updateTarget && options_.updateTarget(tri_, metric_, eval_.curvature, target_))
+      ++report_.targetUpdates;
     error_ = maxAbsDifference(target_, eval_.curvature);
     report_.errorHistory.push_back(error_);
     if (options_.onIteration) options_.onIteration(report_.iterations, error_);

@@ -1,9 +1,11 @@
 // Ricci flow benchmark (run by hand, never in CI): Riemann disk maps of asymmetric disk meshes
-// for every scheme, against one sparse Cholesky factorisation (symbolic analysis + numeric
-// factorisation) of the same mesh's cotangent Laplacian measured in the same run — the flow's
-// cost as a multiple of that single solve is the headline figure.
+// for every scheme and route (background geometry), against one sparse Cholesky factorisation
+// (symbolic analysis + numeric factorisation) of the same mesh's cotangent Laplacian measured in
+// the same run — the flow's cost as a multiple of that single solve is the headline figure. On
+// the hemisphere mesh it also prints the distance to the stereographic projection.
 //
 //   confvis_bench_flow [--sizes 10k,100k,1m] [--schemes yamabe,inversive,...|all]
+//                      [--geometry euclidean,spherical,hyperbolic|all]
 //                      [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]
 //                      [--mesh lopsided|hemisphere|round] [--breakdown]
 #include <Eigen/SparseCholesky>
@@ -12,11 +14,14 @@
 #include <time.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -110,13 +115,39 @@ std::vector<std::string> splitList(const std::string& s) {
   return out;
 }
 
+// Max distance of the map to the hemisphere's stereographic projection, both aligned at the
+// boundary vertices nearest to azimuths 0°, 120°, 240° (as the DiskMap.Hemisphere* tests do).
+double stereographicError(const TriMesh& mesh, std::vector<std::complex<double>> uv) {
+  std::array<int, 3> marker{};
+  std::array<double, 3> nearest{1e9, 1e9, 1e9};
+  std::vector<std::complex<double>> stereo;
+  for (auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    stereo.emplace_back(p[0] / (1 + p[2]), p[1] / (1 + p[2]));
+    if (!mesh.is_boundary(v)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const double d = std::abs(std::complex<double>(p[0], p[1]) - std::polar(1.0, 2 * std::numbers::pi * k / 3));
+      if (d < nearest[k]) nearest[k] = d, marker[k] = v.idx();
+    }
+  }
+  alignDiskMap(uv, marker[0], marker[1], marker[2]);
+  alignDiskMap(stereo, marker[0], marker[1], marker[2]);
+  double error = 0;
+  for (std::size_t i = 0; i < uv.size(); ++i) error = std::max(error, std::abs(uv[i] - stereo[i]));
+  return error;
+}
+
 [[noreturn]] void usage(int code) {
   std::printf(
       "usage: confvis_bench_flow [--sizes 10k,100k,1m | --with-1m] [--schemes yamabe,...|all]\n"
+      "                          [--geometry euclidean,spherical,hyperbolic|all]\n"
       "                          [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]\n"
       "                          [--mesh lopsided|hemisphere|round] [--breakdown]\n"
       "Disk maps of disk meshes (default lopsided) of about the given vertex counts (default\n"
-      "10k,100k); seconds are the best of N runs (default 3), interleaved with the baseline's;\n"
+      "10k,100k) by each route (default euclidean); seconds are the best of N runs (default 3),\n"
+      "interleaved with the baseline's; 'CPU x Cholesky' is the same ratio in process CPU time\n"
+      "(all threads), steadier on a loaded machine; on --mesh hemisphere, 'stereo' is the max\n"
+      "distance to the stereographic projection after aligning both at three boundary markers;\n"
       "--breakdown prints where the flow's time went and its error history to stderr.\n");
   std::exit(code);
 }
@@ -126,6 +157,7 @@ std::vector<std::string> splitList(const std::string& s) {
 int main(int argc, char** argv) {
   std::vector<int> sizes{10000, 100000};
   std::vector<Scheme> schemes(kAllSchemes.begin(), kAllSchemes.end());
+  std::vector<Geometry> routes{Geometry::Euclidean};
   FlipPolicy flips = FlipPolicy::Auto;
   int repeat = 3;
   double jitter = 0.2;
@@ -153,6 +185,12 @@ int main(int argc, char** argv) {
         schemes.clear();
         for (const auto& s : splitList(value)) schemes.push_back(parseScheme(s));
       }
+    } else if (arg == "--geometry") {
+      routes.assign(kAllGeometries.begin(), kAllGeometries.end());
+      if (value != "all") {
+        routes.clear();
+        for (const auto& g : splitList(value)) routes.push_back(parseGeometry(g));
+      }
     } else if (arg == "--flips") {
       flips = value == "on" ? FlipPolicy::On : value == "off" ? FlipPolicy::Off : FlipPolicy::Auto;
     } else if (arg == "--repeat") {
@@ -168,9 +206,17 @@ int main(int argc, char** argv) {
       usage(2);
     }
   }
-  std::printf("| vertices | scheme | iterations | factorisations | flips | seconds | x Cholesky | "
-              "CPU x Cholesky | peak MiB | max abs(K̄-K) | σ-ratio p50 | p99 | flipped |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  struct Config {
+    Geometry route;
+    Scheme scheme;
+  };
+  std::vector<Config> configs;
+  for (Geometry route : routes)
+    for (Scheme scheme : schemes) configs.push_back({route, scheme});
+  std::printf("| vertices | route | scheme | iterations | factorisations | flips | seconds | "
+              "x Cholesky | CPU x Cholesky | peak MiB | max abs(K̄-K) | σ-ratio p50 | p99 | "
+              "flipped | stereo |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (int count : sizes) {
     const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(count))));
     const TriMesh mesh = shape == "hemisphere" ? makeHemisphere(side, jitter, seed)
@@ -186,12 +232,13 @@ int main(int argc, char** argv) {
       DiskMap map;
       std::string failure;
     };
-    std::vector<Result> results(schemes.size());
+    std::vector<Result> results(configs.size());
     for (int rep = 0; rep < repeat; ++rep) {
       timeCholesky(laplacian, cholesky);
-      for (std::size_t k = 0; k < schemes.size(); ++k) {
+      for (std::size_t k = 0; k < configs.size(); ++k) {
         DiskMapOptions options;
-        options.scheme = schemes[k];
+        options.geometry = configs[k].route;
+        options.scheme = configs[k].scheme;
         options.flips = flips;
         Result& result = results[k];
         if (!result.failure.empty()) continue;
@@ -213,22 +260,29 @@ int main(int argc, char** argv) {
         }
       }
     }
-    std::printf("| %zu | *one cotangent-Laplacian LDLT* | | | | %.4f | 1.0 | 1.0 (%.4f s) | | | | | |\n",
+    std::printf("| %zu | *one cotangent-Laplacian LDLT* | | | | | %.4f | 1.0 | 1.0 (%.4f s) | | | | | | |\n",
                 mesh.n_vertices(), cholesky.seconds, cholesky.cpuSeconds);
-    for (std::size_t k = 0; k < schemes.size(); ++k) {
+    for (std::size_t k = 0; k < configs.size(); ++k) {
       const Result& result = results[k];
-      const char* name = toString(schemes[k]);
+      const char* name = toString(configs[k].scheme);
+      const char* route = toString(configs[k].route);
       if (!result.failure.empty()) {
-        std::printf("| %zu | %s | failed: %s |\n", mesh.n_vertices(), name, result.failure.c_str());
+        std::printf("| %zu | %s | %s | failed: %s |\n", mesh.n_vertices(), route, name,
+                    result.failure.c_str());
         continue;
       }
       const DiskMap& map = result.map;
       const auto stats = measureDistortion(mesh, map.uv);
-      std::printf("| %zu | %s | %d | %d | %d | %.4f | %.2f | %.2f | %.0f | %.1e | %.4f | %.4f | %d |\n",
-                  mesh.n_vertices(), name, map.flow.iterations, map.flow.factorizations,
+      char stereo[32] = "";
+      if (shape == "hemisphere")
+        std::snprintf(stereo, sizeof stereo, "%.2e", stereographicError(mesh, map.uv));
+      std::printf("| %zu | %s | %s | %d | %d | %d | %.4f | %.2f | %.2f | %.0f | %.1e | %.4f | %.4f | "
+                  "%d | %s |\n",
+                  mesh.n_vertices(), route, name, map.flow.iterations, map.flow.factorizations,
                   map.flow.flips, result.timing.seconds, result.timing.seconds / cholesky.seconds,
                   result.timing.cpuSeconds / cholesky.cpuSeconds, result.peak,
-                  map.flow.maxCurvatureError, stats.ratioP50, stats.ratioP99, stats.flippedFaces);
+                  map.flow.maxCurvatureError, stats.ratioP50, stats.ratioP99, stats.flippedFaces,
+                  stereo);
       if (breakdown) {
         const auto& t = map.flow.seconds;
         std::fprintf(stderr,

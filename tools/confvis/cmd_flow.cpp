@@ -43,12 +43,8 @@ std::array<int, 3> parseMarkers(const std::string& text, const TriMesh& mesh) {
 
 int runFlow(const FlowArgs& args) {
   const Geometry geometry = parseGeometry(args.geometry);
-  if (geometry != Geometry::Euclidean)
-    throw Error(ErrorCode::InvalidInput,
-                "the disk map is computed by Euclidean flow on the annulus (dissertation §8.2); "
-                "hyperbolic and spherical flows are available through the library "
-                "(confvis::conformal::runRicciFlow), not as a disk-map route yet");
   DiskMapOptions options;
+  options.geometry = geometry;
   options.scheme = parseScheme(args.scheme);
   options.tolerance = args.tolerance;
   options.maxIterations = args.maxIterations;
@@ -86,6 +82,7 @@ int runFlow(const FlowArgs& args) {
                            {"delaunay_flips", map.flow.flips},
                            {"used_flips", map.usedFlips},
                            {"removed_face", map.removedFace},
+                           {"boundary_updates", map.boundaryUpdates},
                            {"seconds", seconds},
                            {"distortion", toJson(stats)}};
   if (!args.report.empty()) writeTextAtomically(args.report, report.dump(2) + "\n");
@@ -108,8 +105,10 @@ const RegisterCommand registration{Command{
       sub.add_option("--scheme", args->scheme, "Circle packing scheme")
           ->check(CLI::IsMember({"tangential", "thurston", "inversive", "yamabe", "virtual", "mixed"}))
           ->capture_default_str();
-      sub.add_option("--geometry", args->geometry, "Background geometry of the flow")
-          ->check(CLI::IsMember({"euclidean", "hyperbolic", "spherical"}))
+      sub.add_option("--geometry", args->geometry,
+                     "Route: background geometry of the flow (euclidean: annulus flow and exp; "
+                     "spherical: hemisphere and stereographic projection; hyperbolic: boundary "
+                     "iterated to a circle in the Poincaré disk)")
           ->capture_default_str();
       sub.add_option("--tolerance", args->tolerance, "Target max |K̄ - K|")
           ->check(CLI::PositiveNumber)

@@ -1,12 +1,23 @@
 #pragma once
-// The Riemann map of a topological disk onto the unit disk (dissertation §8.2): remove the face
-// farthest from the boundary, flatten the annulus by Euclidean Ricci flow with zero target
-// curvature everywhere (a flat cylinder with straight boundaries), cut it along a shortest
-// edge path, lay it out, scale the period to 2πi, apply exp, normalise the outer circle to 1.
+// The Riemann map of a topological disk onto the unit disk, by one of three routes (the map is
+// unique up to a Möbius map of the disk, so the routes can be compared after alignment):
+// - Euclidean (dissertation §8.2, the default): remove the face farthest from the boundary,
+//   flatten the annulus by Euclidean Ricci flow with zero target curvature everywhere (a flat
+//   cylinder with straight boundaries), cut it along a shortest edge path, lay it out, scale
+//   the period to 2πi, apply exp, normalise the outer circle to 1.
+// - Spherical: spherical flow with zero target curvature everywhere, boundary included; by
+//   Gauss-Bonnet the area is 2π and the boundary a geodesic: a hemisphere. Laid out on the unit
+//   sphere, the boundary's pole turned to +z, stereographic projection onto the unit disk.
+// - Hyperbolic (§6.2 iterated boundary curvature): hyperbolic flow with zero interior target
+//   curvature; the boundary targets are those of a polygon inscribed in a hyperbolic circle
+//   with the current boundary edge lengths, updated until they no longer change. Laid out in
+//   the Poincaré disk, where the boundary circle is a Euclidean one, scaled onto the unit circle.
+#include <array>
 #include <complex>
 #include <functional>
 #include <vector>
 
+#include "confvis/base/vec3.hpp"
 #include "confvis/conformal/mesh.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
 
@@ -18,25 +29,34 @@ namespace confvis::conformal {
 enum class FlipPolicy { Off, On, Auto };
 
 struct DiskMapOptions {
+  Geometry geometry = Geometry::Euclidean;  // the route: background geometry of the flow
   Scheme scheme = Scheme::Yamabe;
   double tolerance = 1e-10;
   int maxIterations = 100;
   FlipPolicy flips = FlipPolicy::Auto;
-  int removedFace = -1;  // face index to remove; -1 = the one farthest from the boundary
+  int removedFace = -1;  // Euclidean route: face to remove; -1 = the one farthest from the boundary
   std::function<void(int, double)> onIteration;
 };
 
 struct DiskMap {
   std::vector<std::complex<double>> uv;  // per input vertex, in the closed unit disk
-  int removedFace = -1;
+  Geometry geometry = Geometry::Euclidean;  // the route taken
+  int removedFace = -1;                     // Euclidean route only
+  int boundaryUpdates = 0;  // hyperbolic route: flows run, one per boundary target update
   bool usedFlips = false;
-  RicciFlowReport flow;
+  RicciFlowReport flow;     // the hyperbolic route's counts and times summed over its flows
 };
 
 // Throws Error(InvalidInput) for a mesh that is not a disk (naming its Euler characteristic and
-// boundary loops) or too coarse to have a face off the boundary; Error(Unreachable) if the
-// flow fails. The map preserves the input orientation.
+// boundary loops) or, for the Euclidean route, too coarse to have a face off the boundary;
+// Error(Unreachable) if the flow fails. The map preserves the input orientation.
 DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options = {});
+// The same for points and counter-clockwise triangles, without building a half-edge mesh (the
+// display map's ~3k-vertex disks are mapped at every re-bake). Also throws Error(InvalidInput)
+// for an edge in more than two triangles or inconsistent orientations.
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const DiskMapOptions& options = {});
 
 // Applies a Möbius alignment sending boundary vertices a, b, c to 1, i, -1.
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c);

@@ -62,6 +62,13 @@ struct RicciFlowOptions {
   bool flipsWhenStuck = false;
   // Called after each Newton iteration with (iteration, max curvature error).
   std::function<void(int, double)> onIteration;
+  // Target curvature that depends on the metric (boundary conditions such as "the boundary is
+  // a circle", dissertation §6.2): called after each Newton iteration, before the convergence
+  // test, with the metric and its curvature; returns true if it changed `target`. The caller
+  // keeps the changed target admissible.
+  std::function<bool(const IntrinsicTriangulation&, const CirclePackingMetric&,
+                     const std::vector<double>& curvature, std::vector<double>& target)>
+      updateTarget;
 };
 
 struct RicciFlowReport {
@@ -75,6 +82,7 @@ struct RicciFlowReport {
   int factorizations = 0;        // numeric LDLᵀ factorisations of the Hessian
   int symbolicAnalyses = 0;      // symbolic analyses (the first also orders the unknowns)
   int cgIterations = 0;          // conjugate-gradient steps preconditioned by a frozen factor
+  int targetUpdates = 0;         // iterations in which options.updateTarget changed the target
   std::vector<double> errorHistory;
   // Where the time went, in seconds.
   struct Seconds {

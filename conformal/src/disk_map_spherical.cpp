@@ -1,0 +1,120 @@
+// The spherical disk-map route: zero target curvature at every vertex, boundary included, makes
+// the mesh a hemisphere (area 2π by Gauss-Bonnet, geodesic boundary: doubled along it, the
+// mesh would be a smooth closed spherical surface, i.e. the round sphere). Developed onto the
+// unit sphere, the boundary lies on a great circle; stereographic projection from the pole
+// outside the mesh sends that hemisphere conformally onto the unit disk.
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <numbers>
+
+#include "confvis/base/error.hpp"
+#include "disk_map_layout.hpp"
+#include "disk_map_routes.hpp"
+
+namespace confvis::conformal::detail {
+namespace {
+
+using Point = Eigen::Vector3d;
+
+// Develops the spherical metric onto the unit sphere, faces counter-clockwise seen from
+// outside.
+std::vector<Point> layOutOnSphere(const IntrinsicTriangulation& tri,
+                                  const std::vector<double>& lengths) {
+  auto placeFirstEdge = [&](std::array<Point, 3>& corner) {
+    const double l = lengths[tri.faceEdges[0][2]];
+    corner[0] = Point(0, 0, 1);
+    corner[1] = Point(std::sin(l), 0, std::cos(l));
+  };
+  // From c2, along the great circle that leaves towards c1 turned clockwise (seen from
+  // outside) by the corner angle at c2, as far as the side c2–c0.
+  auto placeThird = [&](int f, int c0, std::array<Point, 3>& corner) {
+    const int c1 = (c0 + 1) % 3, c2 = (c0 + 2) % 3;
+    const auto& fe = tri.faceEdges[f];
+    const double base = lengths[fe[c0]], toC2 = lengths[fe[c1]], toC1 = lengths[fe[c2]];
+    const double angle = curvedCornerAngle(Geometry::Spherical, toC1, base, toC2);
+    const Point& p2 = corner[c2];
+    const Point tangent = (corner[c1] - corner[c1].dot(p2) * p2).normalized();
+    const Point normal = p2.cross(tangent);  // tangent turned counter-clockwise
+    const Point direction = std::cos(angle) * tangent - std::sin(angle) * normal;
+    corner[c0] = (std::cos(toC2) * p2 + std::sin(toC2) * direction).normalized();
+  };
+  return vertexPositions(tri, developFaces<Point>(tri, {}, placeFirstEdge, placeThird));
+}
+
+// The spherical energy is not convex: from a mesh far from a hemisphere (a lopsided disk) the
+// flow straight to zero curvature can stall in a local minimum of |K̄ - K|. Then the target
+// moves there by continuation, K̄(s) = (1 - s)·K₀ from the initial curvature K₀ (every stage
+// admissible: Σ K̄(s) < 2π), the step in s halved after a stall and doubled after a success,
+// intermediate stages to a loose tolerance.
+RicciFlowReport flowToHemisphere(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
+                                 const RicciFlowOptions& options) {
+  const std::vector<double> initial = vertexCurvature(tri, metric);
+  RicciFlowReport total;
+  double reached = 0, step = 1;
+  while (reached < 1) {
+    const double s = std::min(1.0, reached + step);
+    std::vector<double> target(initial.size());
+    for (std::size_t v = 0; v < target.size(); ++v) target[v] = (1 - s) * initial[v];
+    RicciFlowOptions stage = options;
+    if (s < 1) stage.tolerance = std::max(options.tolerance, 1e-6);
+    const IntrinsicTriangulation savedTri = tri;
+    const CirclePackingMetric savedMetric = metric;
+    try {
+      accumulateFlowReport(total, runRicciFlow(tri, metric, target, stage));
+      reached = s;
+      step *= 2;
+    } catch (const Error& e) {
+      if (e.code() != ErrorCode::Unreachable) throw;
+      tri = savedTri;
+      metric = savedMetric;
+      step /= 4;
+      if (step < 1.0 / 1024)
+        throw Error(ErrorCode::Unreachable,
+                    std::string("spherical disk map: the flow to a hemisphere stalls (") +
+                        e.what() + ") even by continuation from the initial curvature");
+    }
+  }
+  return total;
+}
+
+}  // namespace
+
+DiskMap sphericalDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
+  DiskMap result;
+  result.geometry = Geometry::Spherical;
+  IntrinsicTriangulation tri = buildTriangulation(mesh);
+  CirclePackingMetric metric = initialMetric(
+      tri, lengthsScaledToArea(tri, mesh, 2 * std::numbers::pi), options.scheme,
+      Geometry::Spherical);
+  result.flow = flowToHemisphere(tri, metric, diskMapFlowOptions(options));
+  result.usedFlips = result.flow.flipsStartedAt >= 0;
+  const std::vector<Point> p = layOutOnSphere(tri, metricEdgeLengths(tri, metric));
+
+  // The boundary's great circle: its plane through the centre is the one the boundary
+  // vertices are closest to (least squares); the pole on the mesh's side.
+  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+  Point mean = Point::Zero();
+  for (int v = 0; v < tri.vertexCount; ++v) {
+    if (tri.vertexOnBoundary[v]) scatter += p[v] * p[v].transpose();
+    mean += p[v];
+  }
+  Point pole = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvectors().col(0);
+  if (pole.dot(mean) < 0) pole = -pole;
+  // A right-handed frame (e1, e2, pole): seen from outside above the pole, the projection keeps
+  // the counter-clockwise order.
+  const Point e1 = pole.unitOrthogonal(), e2 = pole.cross(e1);
+  result.uv.resize(tri.vertexCount);
+  for (int v = 0; v < tri.vertexCount; ++v) {
+    const double height = p[v].dot(pole);
+    if (!(height > -0.5))
+      throw Error(ErrorCode::Internal, "spherical layout is not a hemisphere (vertex " +
+                                           std::to_string(v) + ")");
+    result.uv[v] = std::complex<double>(p[v].dot(e1), p[v].dot(e2)) / (1 + height);
+  }
+  return result;
+}
+
+}  // namespace confvis::conformal::detail
