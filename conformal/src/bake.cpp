@@ -62,6 +62,61 @@ void validateMesh(const SphereDiskMesh& mesh, const std::string& name) {
              " of " + std::to_string(vertices));
 }
 
+// A codomain triangle as linear maps of the homogeneous disk point h = (hx, hy, hw): its
+// homogeneous barycentric coordinates l1 = b1 . h, l2 = b2 . h (l0 = hw - l1 - l2) and the
+// unnormalised direction l0 s0 + l1 s1 + l2 s2 = hx dx + hy dy + hw dw. One per codomain
+// triangle, made before the texel loops: texels switch triangles ~2 times per span.
+struct CodomainFrame {
+  double b1[3] = {}, b2[3] = {};
+  Vec3d dx, dy, dw;
+  Vec3d corner;  // s0: the direction written if the sum cancels (antipodal corners only)
+};
+
+std::vector<CodomainFrame> codomainFrames(const SphereDiskMesh& codomain,
+                                          const detail::DiskLocator& disk) {
+  std::vector<CodomainFrame> frames(codomain.triangles.size());
+  for (std::size_t t = 0; t < frames.size(); ++t) {
+    CodomainFrame& f = frames[t];
+    const detail::DiskLocator::Affine& a = disk.affine(static_cast<int>(t));
+    const double b1[3] = {a.m11, a.m12, -(a.m11 * a.x0 + a.m12 * a.y0)};
+    const double b2[3] = {a.m21, a.m22, -(a.m21 * a.x0 + a.m22 * a.y0)};
+    const auto& image = codomain.triangles[t];
+    const Vec3d& s0 = codomain.sphere[image[0]];
+    const Vec3d s1 = codomain.sphere[image[1]] - s0, s2 = codomain.sphere[image[2]] - s0;
+    // direction = hw s0 + l1 (s1 - s0) + l2 (s2 - s0)
+    Vec3d rows[3];
+    for (int c = 0; c < 3; ++c) {
+      f.b1[c] = b1[c];
+      f.b2[c] = b2[c];
+      rows[c] = b1[c] * s1 + b2[c] * s2;
+    }
+    f.dx = rows[0];
+    f.dy = rows[1];
+    f.dw = rows[2] + s0;
+    f.corner = s0;
+  }
+  return frames;
+}
+
+// -1 if h lies in the frame's triangle (tolerant on its edges), else the corner whose
+// coordinate is most negative: the edge crossed is the one opposite it.
+inline int outsideCorner(const CodomainFrame& f, double hx, double hy, double hw) {
+  const double tolerance = -1e-12 * hw;
+  const double l1 = f.b1[0] * hx + f.b1[1] * hy + f.b1[2] * hw;
+  const double l2 = f.b2[0] * hx + f.b2[1] * hy + f.b2[2] * hw;
+  const double l0 = hw - l1 - l2;
+  if (l0 >= tolerance && l1 >= tolerance && l2 >= tolerance) return -1;
+  return l0 <= l1 && l0 <= l2 ? 0 : l1 <= l2 ? 1 : 2;
+}
+
+// Per raster task: the codomain triangle of the last texel shaded (`hint`, for point location)
+// and that of the first texel of the last span, the best start for the next span (the next row
+// of the same domain triangle); -1: none.
+struct ShadeState {
+  int hint = -1;
+  int spanStart = -1;
+};
+
 // One direction map: rasterise `domain` on the sphere, carry each texel through the disks into
 // `codomain`. alpha from the domain triangle's lit flag; `covered` marks every rasterised texel.
 //
@@ -74,13 +129,11 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
                       std::vector<std::uint8_t>& covered, Progress* progress) {
   const int n = out.faceSize;
   covered.assign(6 * static_cast<std::size_t>(n) * n, 0);
+  const std::vector<CodomainFrame> frames = codomainFrames(codomain, codomainDisk);
   const std::function<void()> onTaskDone = [progress] {
     if (progress) progress->advance();
   };
-  // hints[0]: the codomain triangle of the last texel shaded; hints[1]: that of the first texel
-  // of the last span, the best start for the next span (the next row of the same triangle).
-  auto shadeSpan = [&](const detail::RasterSpan& span, std::array<int, 2>& hints) {
-    int& hint = hints[0];
+  auto shadeSpan = [&](const detail::RasterSpan& span, ShadeState& state) {
     const auto& tri = domain.triangles[span.triangle];
     const std::complex<double> z0 = domain.disk[tri[0]], z1 = domain.disk[tri[1]],
                                z2 = domain.disk[tri[2]];
@@ -91,73 +144,70 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
     };
     const std::array<double, 3> h0 = homogeneous(span.w), dh = homogeneous(span.step);
     const float alpha = domain.lit.empty() || domain.lit[span.triangle] ? 1.0f : 0.0f;
-    float* texel = out.face(span.face).at(span.xBegin, span.y);
-    std::uint8_t* mark = &covered[detail::texelIndex(span.face, span.xBegin, span.y, n)];
-    // The codomain triangle the texels are in, as linear maps of h = (hx, hy, hw): its
-    // homogeneous barycentric coordinates l1, l2 (l0 = hw - l1 - l2) and the unnormalised
-    // direction l0 s0 + l1 s1 + l2 s2 (rows of a 3 x 3 matrix).
-    int current = -1;
-    std::array<double, 3> row1{}, row2{};
-    std::array<Vec3d, 3> toDirection{};
-    auto select = [&](int triangle) {
-      current = triangle;
-      if (triangle < 0) return;
-      const detail::DiskLocator::Affine& a = codomainDisk.affine(triangle);
-      row1 = {a.m11, a.m12, -(a.m11 * a.x0 + a.m12 * a.y0)};
-      row2 = {a.m21, a.m22, -(a.m21 * a.x0 + a.m22 * a.y0)};
-      const auto& image = codomain.triangles[triangle];
-      const Vec3d& s0 = codomain.sphere[image[0]];
-      const Vec3d s1 = codomain.sphere[image[1]] - s0, s2 = codomain.sphere[image[2]] - s0;
-      // direction = hw s0 + l1 (s1 - s0) + l2 (s2 - s0)
-      for (int c = 0; c < 3; ++c) toDirection[c] = row1[c] * s1 + row2[c] * s2;
-      toDirection[2] = toDirection[2] + s0;
-    };
-    select(hints[1] >= 0 ? hints[1] : hint);
-    for (int x = span.xBegin; x <= span.xEnd; ++x, texel += 4, ++mark) {
-      const double k = x - span.xBegin;
+    float* const texels = out.face(span.face).at(span.xBegin, span.y);
+    const int count = span.xEnd - span.xBegin + 1;
+    // The codomain triangle of the texel before (-1: none, or clamped outside the disk).
+    int current = state.spanStart >= 0 ? state.spanStart : state.hint;
+    // Texel k when it may have left f: the neighbour across the crossed edge, else a point
+    // location.
+    auto shadeAnyway = [&](int k) {
       const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
-      const double tolerance = -1e-12 * hw;
-      // Homogeneous barycentric coordinates in `current`; the most negative names the edge
-      // crossed.
-      auto outsideCorner = [&] {
-        const double l1 = row1[0] * hx + row1[1] * hy + row1[2] * hw;
-        const double l2 = row2[0] * hx + row2[1] * hy + row2[2] * hw;
-        const double l0 = hw - l1 - l2;
-        if (l0 >= tolerance && l1 >= tolerance && l2 >= tolerance) return -1;
-        return l0 <= l1 && l0 <= l2 ? 0 : l1 <= l2 ? 1 : 2;
-      };
       bool inside = false;
       if (current >= 0) {
-        const int crossed = outsideCorner();
+        const int crossed = outsideCorner(frames[current], hx, hy, hw);
         inside = crossed < 0;
-        // A texel that left the triangle is most often in the neighbour across the edge it
-        // crossed: test that one before a full point location.
         const int next = inside ? -1 : codomainDisk.neighbour(current, crossed);
         if (next >= 0 && codomainDisk.affine(next).valid) {
-          select(next);
-          inside = outsideCorner() < 0;
-          if (inside) hint = next;
+          current = next;
+          inside = outsideCorner(frames[current], hx, hy, hw) < 0;
+          if (inside) state.hint = next;
         }
       }
       if (inside) {
-        const Vec3d sum = hx * toDirection[0] + hy * toDirection[1] + hw * toDirection[2];
-        writeDirection(texel, sum, codomain.sphere[codomain.triangles[current][0]], alpha);
-      } else {
-        const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, hint);
-        const auto& image = codomain.triangles[hit.triangle];
-        const std::array<double, 3>& l = hit.barycentric;
-        const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
-                          l[2] * codomain.sphere[image[2]];
-        writeDirection(texel, sum, codomain.sphere[image[0]], alpha);
-        select(hit.inside ? hit.triangle : -1);  // outside: clamped, not linear in x
-        hint = hit.triangle;
+        const CodomainFrame& f = frames[current];
+        writeDirection(texels + 4 * k, hx * f.dx + hy * f.dy + hw * f.dw, f.corner, alpha);
+        return;
       }
-      *mark = 1;
-      if (x == span.xBegin) hints[1] = current;
+      const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, state.hint);
+      const auto& image = codomain.triangles[hit.triangle];
+      const std::array<double, 3>& l = hit.barycentric;
+      const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
+                        l[2] * codomain.sphere[image[2]];
+      writeDirection(texels + 4 * k, sum, codomain.sphere[image[0]], alpha);
+      // Outside: clamped, not linear in x.
+      current = hit.inside ? hit.triangle : -1;
+      state.hint = hit.triangle;
+    };
+    // Texels k, k+1, ... while they stay in triangle `current`: there the barycentric
+    // coordinates and the direction are linear in k. Returns the first texel that left it.
+    auto shadeWhileInside = [&](int k) {
+      const CodomainFrame& f = frames[current];
+      const double l1Start = f.b1[0] * h0[0] + f.b1[1] * h0[1] + f.b1[2] * h0[2];
+      const double l1Step = f.b1[0] * dh[0] + f.b1[1] * dh[1] + f.b1[2] * dh[2];
+      const double l2Start = f.b2[0] * h0[0] + f.b2[1] * h0[1] + f.b2[2] * h0[2];
+      const double l2Step = f.b2[0] * dh[0] + f.b2[1] * dh[1] + f.b2[2] * dh[2];
+      const Vec3d start = h0[0] * f.dx + h0[1] * f.dy + h0[2] * f.dw;
+      const Vec3d step = dh[0] * f.dx + dh[1] * f.dy + dh[2] * f.dw;
+      for (; k < count; ++k) {
+        const double hw = h0[2] + k * dh[2];
+        const double l1 = l1Start + k * l1Step, l2 = l2Start + k * l2Step, l0 = hw - l1 - l2;
+        const double tolerance = -1e-12 * hw;
+        if (!(l0 >= tolerance && l1 >= tolerance && l2 >= tolerance)) break;
+        writeDirection(texels + 4 * k, start + k * step, f.corner, alpha);
+      }
+      return k;
+    };
+    shadeAnyway(0);
+    state.spanStart = current;
+    for (int k = 1; k < count;) {
+      if (current >= 0) k = shadeWhileInside(k);
+      if (k < count) shadeAnyway(k++);
     }
-    if (current >= 0) hint = current;
+    if (current >= 0) state.hint = current;
+    std::fill_n(&covered[detail::texelIndex(span.face, span.xBegin, span.y, n)], count, 1);
   };
-  detail::rasterizeSphereMesh(domain.sphere, domain.triangles, n, threads, onTaskDone, shadeSpan);
+  detail::rasterizeSphereMesh<ShadeState>(domain.sphere, domain.triangles, n, threads, onTaskDone,
+                                          shadeSpan);
 }
 
 }  // namespace
@@ -218,17 +268,21 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
     const std::vector<std::uint8_t>& covered = which == 0 ? rayCovered : geomCovered;
     detail::extendPastBoundary(cube, covered);
     // Uncovered texels are invalid; a reused map may hold an earlier bake's alpha there.
+    // Never NaN: every path above normalises a non-zero vector, but a broken invariant must not
+    // reach a renderer. v - v is 0 for a finite v and NaN otherwise, so `probe` stays 0 exactly
+    // when every direction is finite (alpha is 0 or 1); the same pass as alpha, unlike a
+    // separate isfinite scan of all four channels.
     const std::size_t perFace = static_cast<std::size_t>(resolution) * resolution;
+    float probe = 0.0f;
     for (int f = 0; f < 6; ++f) {
       float* texel = cube.faces[f].pixels.data();
       const std::uint8_t* mark = covered.data() + f * perFace;
-      for (std::size_t i = 0; i < perFace; ++i)
-        if (!mark[i]) texel[4 * i + 3] = 0.0f;
+      for (std::size_t i = 0; i < perFace; ++i, texel += 4) {
+        if (!mark[i]) texel[3] = 0.0f;
+        probe += (texel[0] - texel[0]) + (texel[1] - texel[1]) + (texel[2] - texel[2]);
+      }
     }
-    // Never NaN: every path above normalises a non-zero vector, but a broken invariant must not
-    // reach a renderer.
-    for (const ImageRGBA& face : cube.faces)
-      if (!face.allFinite()) throw Error(ErrorCode::Internal, "bake produced a non-finite texel");
+    if (probe != 0.0f) throw Error(ErrorCode::Internal, "bake produced a non-finite texel");
   });
   t.extend = secondsSince(stage);
   if (progress) progress->finish();

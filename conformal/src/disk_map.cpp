@@ -64,9 +64,7 @@ int dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengt
   return -1;
 }
 
-int faceFarthestFromBoundary(const TriMesh& mesh) {
-  const auto tri = buildTriangulation(mesh);
-  const auto lengths = embeddedEdgeLengths(tri, mesh);
+int faceFarthestFromBoundary(const IntrinsicTriangulation& tri, const std::vector<double>& lengths) {
   std::vector<int> boundary, parent;
   std::vector<double> dist;
   for (int v = 0; v < tri.vertexCount; ++v)
@@ -117,12 +115,15 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
   return detail::developFaces<Complex>(tri, edgeCut, placeFirstEdge, placeThird);
 }
 
-DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& options) {
+DiskMap mapAnnulus(const std::vector<Vec3d>& points,
+                   const std::vector<std::array<int, 3>>& triangles, int removedFace,
+                   const DiskMapOptions& options) {
   DiskMap result;
   result.removedFace = removedFace;
-  IntrinsicTriangulation tri = buildTriangulation(mesh, removedFace);
+  IntrinsicTriangulation tri =
+      buildTriangulation(static_cast<int>(points.size()), triangles, removedFace);
   CirclePackingMetric metric =
-      initialMetric(tri, embeddedEdgeLengths(tri, mesh), options.scheme, Geometry::Euclidean);
+      initialMetric(tri, embeddedEdgeLengths(tri, points), options.scheme, Geometry::Euclidean);
   const RicciFlowOptions flowOptions = detail::diskMapFlowOptions(options);
   result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
   result.usedFlips = result.flow.flipsStartedAt >= 0;
@@ -131,9 +132,9 @@ DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& o
   // Inner boundary = the removed face's corners.
   std::vector<char> inner(tri.vertexCount, 0);
   std::vector<int> innerVertices;
-  for (auto v : mesh.fv_range(TriMesh::FaceHandle(removedFace))) {
-    inner[v.idx()] = 1;
-    innerVertices.push_back(v.idx());
+  for (int v : triangles[removedFace]) {
+    inner[v] = 1;
+    innerVertices.push_back(v);
   }
   // Shortest interior edge path from the inner to the outer boundary: the first outer vertex
   // Dijkstra settles.
@@ -191,33 +192,71 @@ DiskMap mapAnnulus(const TriMesh& mesh, int removedFace, const DiskMapOptions& o
   return result;
 }
 
-}  // namespace
-
-DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
-  requireDisk(mesh, "mesh");
-  int removed = -1;
-  if (options.geometry == Geometry::Euclidean) {
-    removed = options.removedFace >= 0 ? options.removedFace : faceFarthestFromBoundary(mesh);
-    if (removed >= static_cast<int>(mesh.n_faces()))
-      throw Error(ErrorCode::InvalidInput, "removed face index out of range");
-  }
-  auto route = [&](const DiskMapOptions& o) {
-    switch (o.geometry) {
-      case Geometry::Spherical: return detail::sphericalDiskMap(mesh, o);
-      case Geometry::Hyperbolic: return detail::hyperbolicDiskMap(mesh, o);
-      default: return mapAnnulus(mesh, removed, o);
-    }
-  };
+// `route` with the options, and if the flow fails with FlipPolicy::Auto, once more with flips
+// throughout (the last resort for a flow that failed without, or with late, flips).
+template <typename Route>
+DiskMap withFlipRetry(const DiskMapOptions& options, Route route) {
   if (options.flips != FlipPolicy::Auto) return route(options);
   try {
     return route(options);
   } catch (const Error& e) {
-    // Last resort: a flow that failed without (or with late) flips, tried with flips throughout.
     if (e.code() != ErrorCode::Unreachable) throw;
     DiskMapOptions withFlips = options;
     withFlips.flips = FlipPolicy::On;
     return route(withFlips);
   }
+}
+
+// The Euclidean route once the input is known to be a disk (`whole`: its triangulation).
+DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
+                         const std::vector<std::array<int, 3>>& triangles,
+                         const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
+  const int removed = options.removedFace >= 0
+                          ? options.removedFace
+                          : faceFarthestFromBoundary(whole, embeddedEdgeLengths(whole, points));
+  if (removed >= static_cast<int>(triangles.size()))
+    throw Error(ErrorCode::InvalidInput, "removed face index out of range");
+  return withFlipRetry(options, [&](const DiskMapOptions& o) {
+    return mapAnnulus(points, triangles, removed, o);
+  });
+}
+
+}  // namespace
+
+DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
+  requireDisk(mesh, "mesh");
+  if (options.geometry != Geometry::Euclidean)
+    return withFlipRetry(options, [&](const DiskMapOptions& o) {
+      return o.geometry == Geometry::Spherical ? detail::sphericalDiskMap(mesh, o)
+                                               : detail::hyperbolicDiskMap(mesh, o);
+    });
+  std::vector<Vec3d> points;
+  points.reserve(mesh.n_vertices());
+  for (int v = 0; v < static_cast<int>(mesh.n_vertices()); ++v) {
+    const auto& p = mesh.point(TriMesh::VertexHandle(v));
+    points.push_back({p[0], p[1], p[2]});
+  }
+  const std::vector<std::array<int, 3>> triangles = meshTriangles(mesh);
+  const IntrinsicTriangulation whole =
+      buildTriangulation(static_cast<int>(points.size()), triangles);
+  return euclideanDiskMap(points, triangles, whole, options);
+}
+
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const DiskMapOptions& options) {
+  const IntrinsicTriangulation whole =
+      buildTriangulation(static_cast<int>(points.size()), triangles);
+  requireDisk(whole, "mesh");
+  if (options.geometry != Geometry::Euclidean) {  // the curved routes work on a TriMesh
+    TriMesh mesh;
+    std::vector<TriMesh::VertexHandle> handles;
+    for (const Vec3d& p : points) handles.push_back(mesh.add_vertex({p.x, p.y, p.z}));
+    for (const auto& t : triangles)
+      mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
+    return computeDiskMap(mesh, options);
+  }
+  return euclideanDiskMap(points, triangles, whole, options);
 }
 
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {

@@ -35,18 +35,6 @@ SphereDiskMesh projectToSphere(const TemplateMesh& mesh, const glm::dvec3& refer
   return out;
 }
 
-conformal::TriMesh toTriMesh(const SphereDiskMesh& mesh) {
-  conformal::TriMesh tri;
-  std::vector<conformal::TriMesh::VertexHandle> handles;
-  handles.reserve(mesh.sphere.size());
-  for (const Vec3d& p : mesh.sphere) handles.push_back(tri.add_vertex({p.x, p.y, p.z}));
-  for (const auto& t : mesh.triangles)
-    if (!tri.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid())
-      throw Error(ErrorCode::Internal,
-                  "display map: template triangle rejected by the half-edge mesh");
-  return tri;
-}
-
 // The face the Riemann map removes (dissertation 8.3.3: "at the center of the mesh, or farthest
 // from the original boundary"), among faces of at least a quarter of the median area: a tiny
 // bezel-corner face at the centre of a tiled wall would make the annulus extremely thin inside
@@ -106,7 +94,7 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
   // Newton converges in under 10 iterations here; one that needs more is stuck on a mesh only
   // Delaunay flips can flatten (thin bezel strips), so give up early and retry with flips.
   options.maxIterations = 30;
-  result.map = conformal::computeDiskMap(toTriMesh(mesh), options);
+  result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, options);
   result.seconds = secondsSince(start);
   progress.advance();
   return result;

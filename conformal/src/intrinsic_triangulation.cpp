@@ -1,6 +1,8 @@
 #include "confvis/conformal/intrinsic_triangulation.hpp"
 
+#include <algorithm>
 #include <array>
+#include <numeric>
 
 #include "confvis/base/error.hpp"
 
@@ -36,37 +38,70 @@ void IntrinsicTriangulation::flip(int e) {
   replaceFace(e_rp, f0, f1);
 }
 
-IntrinsicTriangulation buildTriangulation(const TriMesh& mesh, int skipFace) {
-  IntrinsicTriangulation t;
-  t.vertexCount = static_cast<int>(mesh.n_vertices());
-  const int faces = static_cast<int>(mesh.n_faces()) - (skipFace >= 0 && skipFace < static_cast<int>(mesh.n_faces()));
-  t.faceVertices.resize(faces);
-  t.faceEdges.resize(faces);
-  t.edgeVertices.reserve(mesh.n_edges());
-  t.edgeFaces.reserve(mesh.n_edges());
-  // OpenMesh's own edge indices identify the edges (no hashing); ours are numbered in order of
-  // first appearance, so edges that only the skipped face had are left out.
-  std::vector<int> edgeIndex(mesh.n_edges(), -1);
-  int f = 0;
+std::vector<std::array<int, 3>> meshTriangles(const TriMesh& mesh) {
+  std::vector<std::array<int, 3>> triangles(mesh.n_faces());
   // Plain handles, not OpenMesh's smart ranges: those validate every step out of line.
-  for (int meshFace = 0; meshFace < static_cast<int>(mesh.n_faces()); ++meshFace) {
-    if (meshFace == skipFace) continue;
-    // Corner c is the target of the c-th half-edge; the edge opposite corner c is the
-    // half-edge two further on.
+  for (int face = 0; face < static_cast<int>(mesh.n_faces()); ++face) {
+    // Corner c is the target of the c-th half-edge from the face's own.
     std::array<TriMesh::HalfedgeHandle, 3> h;
-    h[0] = mesh.halfedge_handle(TriMesh::FaceHandle(meshFace));
+    h[0] = mesh.halfedge_handle(TriMesh::FaceHandle(face));
     h[1] = mesh.next_halfedge_handle(h[0]);
     h[2] = mesh.next_halfedge_handle(h[1]);
     if (mesh.next_halfedge_handle(h[2]) != h[0])
       throw Error(ErrorCode::InvalidInput, "mesh has a non-triangular face");
-    for (int c = 0; c < 3; ++c) t.faceVertices[f][c] = mesh.to_vertex_handle(h[c]).idx();
+    for (int c = 0; c < 3; ++c) triangles[face][c] = mesh.to_vertex_handle(h[c]).idx();
+  }
+  return triangles;
+}
+
+IntrinsicTriangulation buildTriangulation(const TriMesh& mesh, int skipFace) {
+  return buildTriangulation(static_cast<int>(mesh.n_vertices()), meshTriangles(mesh), skipFace);
+}
+
+IntrinsicTriangulation buildTriangulation(int vertexCount,
+                                          const std::vector<std::array<int, 3>>& triangles,
+                                          int skipFace) {
+  const int total = static_cast<int>(triangles.size());
+  IntrinsicTriangulation t;
+  t.vertexCount = vertexCount;
+  const int faces = total - (skipFace >= 0 && skipFace < total);
+  t.faceVertices.resize(faces);
+  t.faceEdges.resize(faces);
+  t.edgeVertices.reserve(3 * static_cast<std::size_t>(faces) / 2 + 2);
+  t.edgeFaces.reserve(t.edgeVertices.capacity());
+  auto fail = [](int face, const std::string& what) {
+    throw Error(ErrorCode::InvalidInput, "triangle " + std::to_string(face) + " " + what);
+  };
+  // Edges listed by their smaller vertex (a linked list through `nextEdge`): a vertex has ~6.
+  std::vector<int> firstEdge(vertexCount, -1), nextEdge;
+  nextEdge.reserve(t.edgeVertices.capacity());
+  int f = 0;
+  for (int face = 0; face < total; ++face) {
+    if (face == skipFace) continue;
+    const std::array<int, 3>& v = triangles[face];
+    for (int c = 0; c < 3; ++c)
+      if (v[c] < 0 || v[c] >= vertexCount)
+        fail(face, "refers to vertex " + std::to_string(v[c]) + " of " +
+                       std::to_string(vertexCount));
+    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) fail(face, "repeats a corner");
+    t.faceVertices[f] = v;
     for (int c = 0; c < 3; ++c) {
-      const int meshEdge = mesh.edge_handle(h[(c + 2) % 3]).idx();
-      int& e = edgeIndex[meshEdge];
+      const int a = v[(c + 1) % 3], b = v[(c + 2) % 3];
+      const int low = std::min(a, b), high = std::max(a, b);
+      int e = firstEdge[low];
+      while (e >= 0 && t.edgeVertices[e][0] + t.edgeVertices[e][1] - low != high) e = nextEdge[e];
       if (e < 0) {
         e = t.edgeCount();
-        t.edgeVertices.push_back({t.faceVertices[f][(c + 1) % 3], t.faceVertices[f][(c + 2) % 3]});
+        t.edgeVertices.push_back({a, b});
         t.edgeFaces.push_back({f, -1});
+        nextEdge.push_back(firstEdge[low]);
+        firstEdge[low] = e;
+      } else if (t.edgeFaces[e][1] >= 0) {
+        fail(face, "shares edge (" + std::to_string(a) + ", " + std::to_string(b) +
+                       ") with two other triangles");
+      } else if (t.edgeVertices[e][0] != b) {
+        fail(face, "runs edge (" + std::to_string(a) + ", " + std::to_string(b) +
+                       ") the same way as its neighbour: orientations differ");
       } else {
         t.edgeFaces[e][1] = f;
       }
@@ -81,6 +116,57 @@ IntrinsicTriangulation buildTriangulation(const TriMesh& mesh, int skipFace) {
       t.vertexOnBoundary[t.edgeVertices[e][1]] = 1;
     }
   return t;
+}
+
+void requireDisk(const IntrinsicTriangulation& tri, const std::string& what) {
+  const int n = tri.vertexCount;
+  std::vector<int> parent(n), boundaryParent(n), faces(n, 0), interior(n, 0), boundary(n, 0);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::iota(boundaryParent.begin(), boundaryParent.end(), 0);
+  auto find = [](std::vector<int>& p, int x) {
+    while (p[x] != x) x = p[x] = p[p[x]];
+    return x;
+  };
+  for (const auto& fv : tri.faceVertices)
+    for (int v : fv) ++faces[v];
+  for (int e = 0; e < tri.edgeCount(); ++e) {
+    const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+    parent[find(parent, a)] = find(parent, b);
+    if (tri.edgeOnBoundary(e)) {
+      ++boundary[a], ++boundary[b];
+      boundaryParent[find(boundaryParent, a)] = find(boundaryParent, b);
+    } else {
+      ++interior[a], ++interior[b];
+    }
+  }
+  int components = 0, loops = 0;
+  for (int v = 0; v < n; ++v) {
+    components += find(parent, v) == v;
+    loops += boundary[v] > 0 && find(boundaryParent, v) == v;
+    // A single fan: closed (as many triangles as interior edges) or open between two boundary
+    // edges (one triangle more).
+    const bool fan = boundary[v] == 0 ? faces[v] > 0 && faces[v] == interior[v]
+                                      : boundary[v] == 2 && faces[v] == interior[v] + 1;
+    if (!fan)
+      throw Error(ErrorCode::InvalidInput,
+                  what + " is not a topological disk: vertex " + std::to_string(v) + " is in " +
+                      std::to_string(faces[v]) + " triangles and " +
+                      std::to_string(boundary[v]) + " boundary edges, not one fan");
+  }
+  if (components != 1 || loops != 1 || tri.eulerCharacteristic() != 1)
+    throw Error(ErrorCode::InvalidInput,
+                what + " is not a topological disk (expected 1 component, 1 boundary loop, "
+                       "Euler characteristic 1; found " + std::to_string(components) +
+                    " components, " + std::to_string(loops) + " boundary loops, Euler "
+                    "characteristic " + std::to_string(tri.eulerCharacteristic()) + ")");
+}
+
+std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri,
+                                        const std::vector<Vec3d>& points) {
+  std::vector<double> lengths(tri.edgeCount());
+  for (int e = 0; e < tri.edgeCount(); ++e)
+    lengths[e] = norm(points[tri.edgeVertices[e][0]] - points[tri.edgeVertices[e][1]]);
+  return lengths;
 }
 
 std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri, const TriMesh& mesh) {

@@ -245,6 +245,12 @@ void NewtonFlow::solveNewtonSystem() {
   ScopedTimer timer(seconds_.solve);
   factored_ = factor_.info() == Eigen::Success;
   if (factored_) {
+    // With a fresh factor, CG preconditioned by its single-precision copy meets the tolerance
+    // in one to three steps, cheaper than Eigen's double-precision triangular solves; those
+    // remain for a factor CG cannot use (an indefinite spherical Hessian).
+    const auto cg = detail::preconditionedCg(*system_, factor_, rhs_, cgTolerance, 4, delta_);
+    report_.cgIterations += cg.iterations;
+    if (cg.converged) return;
     delta_ = factor_.solve(rhs_);
     factored_ = delta_.allFinite();
   }

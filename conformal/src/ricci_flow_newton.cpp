@@ -188,48 +188,15 @@ double PreorderedLDLT::solveFlops() const {
 }
 
 void PreorderedLDLT::preparePreconditioner() {
-  const int n = static_cast<int>(m_diag.size());
-  const int* outer = m_matrix.outerIndexPtr();
-  const int* inner = m_matrix.innerIndexPtr();
-  const double* values = m_matrix.valuePtr();
-  columnStart_.assign(n + 1, 0);
-  rows_.clear();
-  values_.clear();
-  rows_.reserve(m_matrix.nonZeros());
-  values_.reserve(m_matrix.nonZeros());
-  inverseDiagonal_.resize(n);
-  for (int j = 0; j < n; ++j) {
-    inverseDiagonal_[j] = 1 / m_diag[j];
-    for (int p = outer[j]; p < outer[j] + m_nonZerosPerCol[j]; ++p) {
-      rows_.push_back(inner[p]);
-      values_.push_back(static_cast<float>(values[p]));
-    }
-    columnStart_[j + 1] = static_cast<int>(rows_.size());
-  }
-}
-
-void PreorderedLDLT::applyPreconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
-  const int n = static_cast<int>(inverseDiagonal_.size());
-  z = r;
-  double* x = z.data();
-  const int* start = columnStart_.data();
-  const int* rows = rows_.data();
-  const float* values = values_.data();
-  for (int j = 0; j < n; ++j) {  // L y = r, by columns
-    const double xj = x[j];
-    for (int p = start[j]; p < start[j + 1]; ++p) x[rows[p]] -= values[p] * xj;
-  }
-  for (int j = 0; j < n; ++j) x[j] *= inverseDiagonal_[j];
-  for (int j = n - 1; j >= 0; --j) {  // Lᵀ x = D⁻¹ y, by rows of Lᵀ
-    double s0 = 0, s1 = 0;
-    int p = start[j];
-    for (; p + 2 <= start[j + 1]; p += 2) {
-      s0 += values[p] * x[rows[p]];
-      s1 += values[p + 1] * x[rows[p + 1]];
-    }
-    if (p < start[j + 1]) s0 += values[p] * x[rows[p]];
-    x[j] -= s0 + s1;
-  }
+  StrictlyLowerFactor L;
+  L.size = static_cast<int>(m_diag.size());
+  L.start = m_matrix.outerIndexPtr();
+  L.count = m_nonZerosPerCol.data();
+  L.rows = m_matrix.innerIndexPtr();
+  L.values = m_matrix.valuePtr();
+  L.diagonal = m_diag.data();
+  L.parent = m_parent.data();
+  preconditioner_.build(L);
 }
 
 CgResult preconditionedCg(const NewtonSystem& system, const PreorderedLDLT& factor,

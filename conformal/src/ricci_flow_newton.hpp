@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "metric_evaluation.hpp"
+#include "supernodal_preconditioner.hpp"
 
 namespace confvis::conformal::detail {
 
@@ -63,17 +64,17 @@ class PreorderedLDLT
   double solveFlops() const;
   double factorNonZeros() const;  // of L, after analyze()
 
-  // z = (L D Lᵀ)⁻¹ r with a single-precision copy of L: the triangular solves are bound by
-  // memory traffic, and CG needs no more accuracy from a preconditioner (27% faster than
-  // Eigen's double solve at 100k unknowns, measured). Dropping small entries of L was measured
-  // too: half the entries at 1e-3, but twice the CG steps.
+  // z = (L D Lᵀ)⁻¹ r with a single-precision, supernodal copy of L: the triangular solves are
+  // bound by memory traffic, and CG needs no more accuracy from a preconditioner. Dropping
+  // small entries of L was measured too: half the entries at 1e-3, but twice the CG steps.
   void preparePreconditioner();
-  void applyPreconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const;
+  void applyPreconditioner(const Eigen::VectorXd& r, Eigen::VectorXd& z) const {
+    preconditioner_.apply(r, z);
+  }
+  const SupernodalPreconditioner& preconditioner() const { return preconditioner_; }
 
  private:
-  std::vector<int> columnStart_, rows_;
-  std::vector<float> values_;
-  std::vector<double> inverseDiagonal_;
+  SupernodalPreconditioner preconditioner_;
 };
 
 // Solves H δ = b to relative residual `tolerance` (2-norm) by conjugate gradients

@@ -1,16 +1,16 @@
 #pragma once
 // Rasterises a triangle mesh on the unit sphere into the texels of a cube map (EXR layout,
 // confvis/base/cube_map.hpp): for every row span of texels covered by a triangle, calls
-// shadeSpan(span, hint) (RasterSpan below). The triangles are the flat chords between
+// shadeSpan(span, state) (RasterSpan below). The triangles are the flat chords between
 // their unit-vector corners, so d is inside triangle (a, b, c) exactly when the triple products
 // det(d, b, c), det(d, c, a), det(d, a, b) share det(a, b, c)'s sign, and those products,
 // normalised, are the barycentric coordinates of the point where the ray along d meets the chord
 // triangle: the piecewise-linear map's own coordinates, so coverage and values are exact.
 //
 // Work is split into (face, band of rows) tasks run in parallel; each texel belongs to one task,
-// so shaders write their texels without synchronisation. `hints` are two ints per task, for
-// the shader's point-location walk (consecutive texels of a triangle land close together); a
-// triangle's spans come row after row.
+// so shaders write their texels without synchronisation. `state` is a TaskState per task,
+// value-initialised, for the shader's point-location walk (consecutive texels of a triangle land
+// close together); a triangle's spans come row after row.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -50,7 +50,7 @@ struct RasterBinEntry {
 std::vector<std::vector<RasterBinEntry>> binSphereTriangles(
     const std::vector<Vec3d>& sphere, const std::vector<std::array<int, 3>>& triangles, int n);
 
-template <class ShadeSpan>
+template <class TaskState, class ShadeSpan>
 void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
                          const std::vector<std::array<int, 3>>& triangles, int n, int threads,
                          const std::function<void()>& onTaskDone, ShadeSpan&& shadeSpan) {
@@ -74,7 +74,7 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
     const int band = static_cast<int>(task % bands);
     const int bandY0 = band * kRasterBandRows, bandY1 = std::min(n, bandY0 + kRasterBandRows) - 1;
     const CubeFaceFrame frame = cubeFaceFrame(face);
-    std::array<int, 2> hints{-1, -1};
+    TaskState state{};
     for (const RasterBinEntry& entry : bins[task]) {
       const Edges& tri = edges[entry.triangle];
       if (tri.sign == 0) continue;
@@ -121,7 +121,7 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
         span.xBegin = first;
         span.xEnd = last;
         span.w = wFirst;
-        shadeSpan(span, hints);
+        shadeSpan(span, state);
       }
     }
     if (onTaskDone) onTaskDone();

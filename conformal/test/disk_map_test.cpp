@@ -9,6 +9,7 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/distortion.hpp"
+#include "confvis/conformal/intrinsic_triangulation.hpp"
 #include "confvis/conformal/mesh_generators.hpp"
 #include "confvis/conformal/mobius.hpp"
 
@@ -142,6 +143,71 @@ TEST(DiskMap, NonDiskInputIsRejectedWithItsTopology) {
   }
   EXPECT_THROW(computeDiskMap(makeDiskWithTwoHoles(8)), Error);
   EXPECT_THROW(computeDiskMap(makeGridDisk(1)), Error);  // every face touches the boundary
+}
+
+// Points and triangles read off a mesh give the TriMesh route's map bit for bit (the display
+// map uses the list route); malformed lists are rejected naming the triangle or vertex.
+TEST(DiskMap, TriangleListGivesTheMeshMapAndRejectsMalformedLists) {
+  const TriMesh mesh = makeLopsidedDisk(12, 0.2, 3);
+  std::vector<Vec3d> points;
+  for (auto v : mesh.vertices())
+    points.push_back({mesh.point(v)[0], mesh.point(v)[1], mesh.point(v)[2]});
+  std::vector<std::array<int, 3>> triangles = meshTriangles(mesh);
+  const DiskMap fromMesh = computeDiskMap(mesh);
+  const DiskMap fromList = computeDiskMap(points, triangles);
+  ASSERT_EQ(fromList.uv.size(), fromMesh.uv.size());
+  for (std::size_t v = 0; v < fromMesh.uv.size(); ++v) ASSERT_EQ(fromList.uv[v], fromMesh.uv[v]);
+  EXPECT_EQ(fromList.removedFace, fromMesh.removedFace);
+
+  auto rejection = [&](const std::vector<std::array<int, 3>>& list) {
+    try {
+      computeDiskMap(points, list);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidInput) << e.what();
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  auto flipped = triangles;
+  std::swap(flipped[5][1], flipped[5][2]);
+  EXPECT_NE(rejection(flipped).find("orientations differ"), std::string::npos);
+  auto third = triangles;  // a third triangle on the first triangle's first edge
+  third.push_back({third[0][2], third[0][1], static_cast<int>(points.size()) - 1});
+  EXPECT_NE(rejection(third).find("two other triangles"), std::string::npos);
+  auto outOfRange = triangles;
+  outOfRange[7][0] = static_cast<int>(points.size());
+  EXPECT_NE(rejection(outOfRange).find("triangle 7 refers to vertex"), std::string::npos);
+  // Two copies of the disk sharing one boundary vertex: one component and Euler
+  // characteristic 1, but not a disk at that vertex.
+  int shared = 0;
+  for (auto v : mesh.vertices())
+    if (mesh.is_boundary(v)) shared = v.idx();
+  auto bowtie = triangles;
+  const int n = static_cast<int>(points.size());
+  for (const auto& t : triangles) {
+    std::array<int, 3> copy;
+    for (int c = 0; c < 3; ++c) copy[c] = t[c] == shared ? shared : t[c] + n;
+    bowtie.push_back(copy);
+  }
+  std::vector<Vec3d> twice = points;
+  twice.insert(twice.end(), points.begin(), points.end());
+  try {
+    computeDiskMap(twice, bowtie);
+    ADD_FAILURE() << "bowtie accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vertex " + std::to_string(shared)), std::string::npos)
+        << e.what();
+  }
+  const TriMesh sphere = makeIcosphere(1);
+  std::vector<Vec3d> spherePoints;
+  for (auto v : sphere.vertices())
+    spherePoints.push_back({sphere.point(v)[0], sphere.point(v)[1], sphere.point(v)[2]});
+  try {
+    computeDiskMap(spherePoints, meshTriangles(sphere));
+    ADD_FAILURE() << "sphere accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("0 boundary loops"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Mobius, AlignsMarkersAndKeepsTheDisk) {

@@ -8,6 +8,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "../../backends/embree/src/affine_directions.hpp"
 #include "confvis/engine/view.hpp"
 
 namespace confvis::bench {
@@ -25,11 +26,11 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
     const double sy = static_cast<double>(wall.height) / height;
     const glm::vec3 origin(view.eye_position);
     // The direction is affine in the wall-pixel position; like the renderer's plain rays
-    // (CameraRays), evaluate it in float and normalise per ray.
+    // (CameraRays), evaluate it in float and normalise per ray, a packet at a time.
     const glm::dvec3 base = view.rayDirection(0.0, 0.0);
-    const glm::vec3 directionBase(base);
-    const glm::vec3 stepX(view.rayDirection(1.0, 0.0) - base);
-    const glm::vec3 stepY(view.rayDirection(0.0, 1.0) - base);
+    const embree::AffineDirections directions{glm::vec3(base),
+                                              glm::vec3(view.rayDirection(1.0, 0.0) - base),
+                                              glm::vec3(view.rayDirection(0.0, 1.0) - base)};
     const int across = (width + kTile - 1) / kTile, tiles = across * ((height + kTile - 1) / kTile);
     // The renderer's layout: tiles in parallel, within a tile rows of 8-pixel packets.
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
@@ -43,17 +44,18 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
           for (int x = x0; x < std::min(x0 + kTile, width); x += 8) {
             alignas(32) int valid[8];
             alignas(32) RTCRayHit8 rh;
-            const auto py = static_cast<float>((y + 0.5) * sy);
+            alignas(32) std::array<float, 8> px{}, py{};
+            const int end = std::min(x0 + kTile, width);
             for (int lane = 0; lane < 8; ++lane) {
-              valid[lane] = x + lane < std::min(x0 + kTile, width) ? -1 : 0;
-              const auto px = static_cast<float>((x + lane + 0.5) * sx);
-              const glm::vec3 d = glm::normalize(directionBase + px * stepX + py * stepY);
+              valid[lane] = x + lane < end ? -1 : 0;
+              px[lane] = static_cast<float>((std::min(x + lane, end - 1) + 0.5) * sx);
+              py[lane] = static_cast<float>((y + 0.5) * sy);
+            }
+            directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+            for (int lane = 0; lane < 8; ++lane) {
               rh.ray.org_x[lane] = origin.x;
               rh.ray.org_y[lane] = origin.y;
               rh.ray.org_z[lane] = origin.z;
-              rh.ray.dir_x[lane] = d.x;
-              rh.ray.dir_y[lane] = d.y;
-              rh.ray.dir_z[lane] = d.z;
               rh.ray.tnear[lane] = 0.0f;
               rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
               rh.ray.time[lane] = 0.0f;

@@ -23,6 +23,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/display_template.hpp"
+#include "confvis/engine/builtin_scenes.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "image_based_retarget.hpp"
 #include "raw_intersect_loop.hpp"
@@ -103,6 +104,11 @@ int main(int argc, char** argv) {
   int repeats = 3;
   app.add_option("--config", configPath, "Display config")->capture_default_str();
   app.add_option("--scene", sceneName, "Built-in scene or scene file")->capture_default_str();
+  int subdivision = 0;
+  app.add_option("--subdivision", subdivision,
+                 "Built-in scene's mesh density (BuiltinSceneOptions::subdivision; checker-sphere: "
+                 "12 n^2 triangles, 289 for ~1M); 0 = the scene's default")
+      ->capture_default_str();
   app.add_option("--scale", scale, "Output resolution / wall resolution")->capture_default_str();
   app.add_option("--map", mapDirectory,
                  "Baked map directory; default: identity for a full-sphere display, otherwise "
@@ -130,7 +136,10 @@ int main(int argc, char** argv) {
       map = ceilinglessDilationMap(lambda, config.cubeResolution, config.reference);
       mapName = "analytic ceilingless dilation, lambda " + std::to_string(lambda);
     }
-    const Scene scene = sceneByNameOrFile(sceneName);
+    BuiltinSceneOptions sceneOptions;
+    sceneOptions.subdivision = subdivision;
+    const Scene scene =
+        subdivision > 0 ? builtinScene(sceneName, sceneOptions) : sceneByNameOrFile(sceneName);
     EmbreeBackend backend;
     backend.setScene(scene);
     EmbreeDevice rawDevice;

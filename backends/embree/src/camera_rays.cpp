@@ -57,9 +57,8 @@ CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
       rotation_(camera.rotation()),
       placedEye_(place(view.eye_position)),
       rotationF_(rotation_),
-      turnedBase_(rotation_ * directionBase_),
-      turnedStepX_(rotation_ * directionStepX_),
-      turnedStepY_(rotation_ * directionStepY_) {}
+      plain_{rotation_ * directionBase_, rotation_ * directionStepX_,
+             rotation_ * directionStepY_} {}
 
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
                        const ConformalWarp& warp, const WallMapGrid& grid, StereoRays stereoRays,
@@ -82,32 +81,41 @@ glm::vec3 CameraRays::place(const glm::dvec3& p) const {
 
 glm::vec3 CameraRays::turn(const glm::dvec3& d) const { return glm::vec3(rotation_ * d); }
 
-void CameraRays::make(double px, double py, RayPath& path) const {
-  path.lit = true;
-  path.vertexCount = 1;
-  path.vertices[0] = placedEye_;
+bool CameraRays::straightDirection(double px, double py, glm::vec3& direction) const {
   const auto fx = static_cast<float>(px), fy = static_cast<float>(py);
   if (!warp_) {
-    path.tail = glm::normalize(turnedBase_ + fx * turnedStepX_ + fy * turnedStepY_);
-    return;
+    direction = plain_.at(fx, fy);
+    return true;
   }
   const WallMapGrid::Sample pixel = grid_->at(fx, fy);
-  path.lit = pixel.alpha >= 0.5f;
-  if (!path.lit) return;
+  if (!(pixel.alpha >= 0.5f)) return false;
   if (eyeAtReference_) {
-    path.tail = glm::normalize(rotationF_ * pixel.direction);
+    direction = centreDirection(pixel.direction);
+    return true;
+  }
+  // Fast stereo: from the eye towards W(p), p = eye + toWall on the wall (WallView::rayDirection
+  // is affine in px, py).
+  const glm::dvec3 eye = view_.eye_position;
+  const glm::dvec3 wallPoint = eye + directionBase_ + px * directionStepX_ + py * directionStepY_;
+  const glm::dvec3 target = reference_ + glm::length(wallPoint - reference_) *
+                                             glm::normalize(glm::dvec3(pixel.direction));  // W(p)
+  direction = turn(glm::normalize(target - eye));
+  return true;
+}
+
+void CameraRays::make(double px, double py, RayPath& path) const {
+  path.vertexCount = 1;
+  path.vertices[0] = placedEye_;
+  if (straight()) {
+    path.lit = straightDirection(px, py, path.tail);
     return;
   }
+  const WallMapGrid::Sample pixel = grid_->at(static_cast<float>(px), static_cast<float>(py));
+  path.lit = pixel.alpha >= 0.5f;
+  if (!path.lit) return;
   const glm::dvec3 eye = view_.eye_position;
   // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)
   const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
-  const glm::dvec3 wallPoint = eye + toWall;
-  if (stereoRays_ == StereoRays::Fast) {
-    const glm::dvec3 target = reference_ + glm::length(wallPoint - reference_) *
-                                               glm::normalize(glm::dvec3(pixel.direction));  // W(p)
-    path.tail = turn(glm::normalize(target - eye));
-    return;
-  }
   std::array<glm::dvec3, kMaxCurvedSegments + 2> vertices;
   glm::dvec3 tail;
   path.vertexCount =

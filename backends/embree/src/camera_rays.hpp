@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "affine_directions.hpp"
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/engine/view.hpp"
@@ -46,14 +47,23 @@ class CameraRays {
 
   // The path through pixel-space point (px, py) of the wall (see WallView::rayDirection).
   void make(double px, double py, RayPath& path) const;
-  // Conformal centre eye only (centreEyeConformal()): the path for a sample whose map direction
-  // F (unnormalised, zero = unlit) is already known; the same path make() builds from it.
-  void makeCentre(const glm::vec3& mapDirection, RayPath& path) const {
-    path.vertexCount = 1;
-    path.vertices[0] = placedEye_;
-    path.lit = mapDirection != glm::vec3(0.0f);
-    if (path.lit) path.tail = glm::normalize(rotationF_ * mapDirection);
+
+  // Straight cameras trace one unbounded ray per sample, from origin(): plain, conformal centre
+  // eye and fast stereo rays (exact stereo rays bend).
+  bool straight() const { return !warp_ || eyeAtReference_ || stereoRays_ == StereoRays::Fast; }
+  const glm::vec3& origin() const { return placedEye_; }
+  // Straight cameras: the unit direction through (px, py); false where the sample is unlit.
+  bool straightDirection(double px, double py, glm::vec3& direction) const;
+  bool plain() const { return !warp_; }
+  // Plain cameras: the direction through (px, py) is affine in the position (evaluated in float).
+  const AffineDirections& plainDirections() const { return plain_; }
+  // Conformal centre eye only (centreEyeConformal()): the unit direction of a sample whose map
+  // direction F (unnormalised) is already known, the direction straightDirection() gives.
+  glm::vec3 centreDirection(const glm::vec3& mapDirection) const {
+    return glm::normalize(rotationF_ * mapDirection);
   }
+  // The virtual camera's rotation in float (centreDirection turns F with it).
+  const glm::mat3& rotation() const { return rotationF_; }
   bool centreEyeConformal() const { return warp_ && eyeAtReference_; }
 
  private:
@@ -69,7 +79,7 @@ class CameraRays {
   glm::vec3 placedEye_;
   glm::mat3 rotationF_;
   // The same affine direction, turned by the camera, in float: plain rays need nothing else.
-  glm::vec3 turnedBase_, turnedStepX_, turnedStepY_;
+  AffineDirections plain_;
   const ConformalWarp* warp_ = nullptr;
   const WallMapGrid* grid_ = nullptr;
   StereoRays stereoRays_ = StereoRays::Exact;

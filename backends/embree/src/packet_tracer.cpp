@@ -25,21 +25,37 @@ void setRay(RTCRay8& ray, int lane, const glm::vec3& origin, const glm::vec3& di
   ray.flags[lane] = 0;
 }
 
-// Copies lane's hit into `hits`; false when the lane missed.
-bool recordHit(const RTCRayHit8& rayhit, int lane, PacketHits& hits) {
-  if (rayhit.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) return false;
-  const glm::vec3 direction(rayhit.ray.dir_x[lane], rayhit.ray.dir_y[lane],
-                            rayhit.ray.dir_z[lane]);
-  const glm::vec3 origin(rayhit.ray.org_x[lane], rayhit.ray.org_y[lane], rayhit.ray.org_z[lane]);
-  hits.hit[lane] = true;
-  hits.geomID[lane] = rayhit.hit.geomID[lane];
-  hits.primID[lane] = rayhit.hit.primID[lane];
-  hits.barycentrics[lane] = {rayhit.hit.u[lane], rayhit.hit.v[lane]};
-  hits.geometricNormal[lane] = {rayhit.hit.Ng_x[lane], rayhit.hit.Ng_y[lane],
-                                rayhit.hit.Ng_z[lane]};
-  hits.point[lane] = origin + rayhit.ray.tfar[lane] * direction;
-  hits.direction[lane] = direction;
-  return true;
+// The fields every camera ray shares, for all lanes (Embree ignores the invalid ones): unbounded,
+// no hit yet.
+void resetRays(RTCRayHit8& rayhit) {
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    rayhit.ray.tnear[lane] = 0.0f;
+    rayhit.ray.tfar[lane] = kInfinity;
+    rayhit.ray.time[lane] = 0.0f;
+    rayhit.ray.mask[lane] = ~0u;
+    rayhit.ray.id[lane] = static_cast<unsigned>(lane);
+    rayhit.ray.flags[lane] = 0;
+    rayhit.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+}
+
+// Copies lane's ray and hit record from one packet into another.
+void copyLane(const RTCRayHit8& from, int lane, RTCRayHit8& to) {
+  to.ray.org_x[lane] = from.ray.org_x[lane];
+  to.ray.org_y[lane] = from.ray.org_y[lane];
+  to.ray.org_z[lane] = from.ray.org_z[lane];
+  to.ray.dir_x[lane] = from.ray.dir_x[lane];
+  to.ray.dir_y[lane] = from.ray.dir_y[lane];
+  to.ray.dir_z[lane] = from.ray.dir_z[lane];
+  to.ray.tfar[lane] = from.ray.tfar[lane];
+  to.hit.u[lane] = from.hit.u[lane];
+  to.hit.v[lane] = from.hit.v[lane];
+  to.hit.Ng_x[lane] = from.hit.Ng_x[lane];
+  to.hit.Ng_y[lane] = from.hit.Ng_y[lane];
+  to.hit.Ng_z[lane] = from.hit.Ng_z[lane];
+  to.hit.geomID[lane] = from.hit.geomID[lane];
+  to.hit.primID[lane] = from.hit.primID[lane];
 }
 
 // How far a retried tail turns: far below a pixel (~1e-3 rad on a CAVE wall), far above float
@@ -55,6 +71,20 @@ glm::vec3 nudged(const glm::vec3& direction) {
   return glm::normalize(direction + kRetryAngle * (0.8f * a + 0.6f * b));
 }
 
+// Zero barycentrics, normal, direction and hit distance on the lanes without a hit, so shading
+// can run branch-free over all eight lanes.
+void clearMissedLanes(PacketHits& hits) {
+  RTCRayHit8& r = hits.rayhit;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    if (hits.hit[lane]) continue;
+    r.ray.org_x[lane] = r.ray.org_y[lane] = r.ray.org_z[lane] = 0.0f;
+    r.ray.dir_x[lane] = r.ray.dir_y[lane] = r.ray.dir_z[lane] = 0.0f;
+    r.ray.tfar[lane] = 0.0f;
+    r.hit.u[lane] = r.hit.v[lane] = 0.0f;
+    r.hit.Ng_x[lane] = r.hit.Ng_y[lane] = r.hit.Ng_z[lane] = 0.0f;
+  }
+}
+
 bool isLoneMiss(const PacketHits& hits, const std::array<bool, kPacketSize>& missed, int lane,
                 int count) {
   if (!missed[lane] || count < 2) return false;
@@ -63,12 +93,80 @@ bool isLoneMiss(const PacketHits& hits, const std::array<bool, kPacketSize>& mis
   return left && right;
 }
 
-}  // namespace
-
-std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, PacketHits& hits) {
+RTCIntersectContext coherentContext() {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  return context;
+}
+
+// Traces the lone misses among `missed` (lanes traced without a hit) once more from origins[lane]
+// along tails[lane] turned by kRetryAngle; records their hits. Returns the number retried.
+int retryLoneMisses(RTCScene scene, int count, const std::array<bool, kPacketSize>& missed,
+                    const std::array<glm::vec3, kPacketSize>& origins,
+                    const std::array<glm::vec3, kPacketSize>& tails, PacketHits& hits) {
+  alignas(32) int valid[kPacketSize];
+  alignas(32) RTCRayHit8 retry;
+  int retried = 0;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    valid[lane] = 0;
+    if (!isLoneMiss(hits, missed, lane, count)) continue;
+    setRay(retry.ray, lane, origins[lane], nudged(tails[lane]), kInfinity);
+    retry.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+    retry.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+    valid[lane] = -1;
+    ++retried;
+  }
+  if (retried == 0) return 0;
+  RTCIntersectContext context = coherentContext();
+  rtcIntersect8(valid, scene, &context, &retry);
+  for (int lane = 0; lane < kPacketSize; ++lane)
+    if (valid[lane] && retry.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID) {
+      copyLane(retry, lane, hits.rayhit);
+      hits.hit[lane] = true;
+    }
+  return retried;
+}
+
+}  // namespace
+
+std::uint64_t traceStraight(RTCScene scene, int count, PacketHits& hits) {
+  hits.retraced = 0;
+  int rays = 0;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    hits.hit[lane] = false;
+    rays += hits.valid[lane] != 0;
+  }
+  if (rays == 0) {
+    clearMissedLanes(hits);
+    return 0;
+  }
+  resetRays(hits.rayhit);
+  RTCIntersectContext context = coherentContext();
+  rtcIntersect8(hits.valid.data(), scene, &context, &hits.rayhit);
+  std::array<bool, kPacketSize> missed{};
+  bool anyMissed = false;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    hits.hit[lane] = hits.valid[lane] && hits.rayhit.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
+    missed[lane] = hits.valid[lane] && !hits.hit[lane];
+    anyMissed |= missed[lane];
+  }
+  if (anyMissed) {
+    std::array<glm::vec3, kPacketSize> origins{}, tails{};
+    for (int lane = 0; lane < kPacketSize; ++lane)
+      if (missed[lane]) {
+        origins[lane] = {hits.rayhit.ray.org_x[lane], hits.rayhit.ray.org_y[lane],
+                         hits.rayhit.ray.org_z[lane]};
+        tails[lane] = hits.direction(lane);
+      }
+    hits.retraced = retryLoneMisses(scene, count, missed, origins, tails, hits);
+  }
+  clearMissedLanes(hits);
+  return static_cast<std::uint64_t>(rays + hits.retraced);
+}
+
+std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, PacketHits& hits) {
+  RTCIntersectContext context = coherentContext();
   std::array<bool, kPacketSize> active{};
   int maxVertices = 0;
   for (int lane = 0; lane < kPacketSize; ++lane) {
@@ -105,33 +203,27 @@ std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, Packet
     if (!any) continue;
     rtcIntersect8(valid, scene, &context, &rayhit);
     for (int lane = 0; lane < kPacketSize; ++lane) {
-      if (!valid[lane]) continue;
-      if (recordHit(rayhit, lane, hits)) active[lane] = false;
+      if (!valid[lane] || rayhit.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID) continue;
+      copyLane(rayhit, lane, hits.rayhit);
+      hits.hit[lane] = true;
+      active[lane] = false;
     }
   }
-  // Retry lone misses along their tail (they are still `active`: lit, no hit).
-  alignas(32) int valid[kPacketSize];
-  alignas(32) RTCRayHit8 rayhit;
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    valid[lane] = 0;
-    if (!isLoneMiss(hits, active, lane, count)) continue;
-    const RayPath& path = paths[lane];
-    setRay(rayhit.ray, lane, path.vertices[path.vertexCount - 1], nudged(path.tail), kInfinity);
-    rayhit.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
-    valid[lane] = -1;
-    ++hits.retraced;
-  }
-  if (hits.retraced == 0) return rays;
-  rtcIntersect8(valid, scene, &context, &rayhit);
+  // Lanes still `active` are lit and missed; retry the lone ones along their tail.
+  std::array<glm::vec3, kPacketSize> origins{}, tails{};
   for (int lane = 0; lane < kPacketSize; ++lane)
-    if (valid[lane]) recordHit(rayhit, lane, hits);
+    if (active[lane]) {
+      origins[lane] = paths[lane].vertices[paths[lane].vertexCount - 1];
+      tails[lane] = paths[lane].tail;
+    }
+  hits.retraced = retryLoneMisses(scene, count, active, origins, tails, hits);
+  clearMissedLanes(hits);
   return rays + static_cast<std::uint64_t>(hits.retraced);
 }
 
 std::uint64_t traceOcclusion(RTCScene scene, OcclusionPacket& packet) {
   RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  rtcInitIntersectContext(&context);  // incoherent: hemisphere directions
   alignas(32) int valid[kPacketSize];
   alignas(32) RTCRay8 ray;
   std::uint64_t rays = 0;

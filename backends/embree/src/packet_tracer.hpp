@@ -1,6 +1,7 @@
 #pragma once
-// Tracing in packets of 8 (rtcIntersect8 / rtcOccluded8): primary paths segment by segment, and
-// shadow-style occlusion rays for ambient occlusion.
+// Tracing in packets of 8 (rtcIntersect8 / rtcOccluded8): straight camera rays written straight
+// into the packet, bent paths segment by segment, and shadow-style occlusion rays for ambient
+// occlusion.
 #include <embree3/rtcore.h>
 
 #include <array>
@@ -14,21 +15,45 @@ namespace confvis::embree {
 
 inline constexpr int kPacketSize = 8;
 
+// One packet of camera samples. The camera fills the rays; tracing fills the hits. Per lane,
+// rayhit holds the ray (segment) that ended the path: unit direction, tfar at the hit, and
+// Embree's hit record, so shading reads Embree's structure-of-arrays layout as it is.
 struct PacketHits {
+  alignas(32) RTCRayHit8 rayhit;
+  alignas(32) std::array<int, kPacketSize> valid{};  // traceStraight input: -1 = trace the lane
   std::array<bool, kPacketSize> hit{};
-  std::array<unsigned, kPacketSize> geomID{}, primID{};
-  std::array<glm::vec2, kPacketSize> barycentrics{};
-  std::array<glm::vec3, kPacketSize> geometricNormal{}, point{};
-  std::array<glm::vec3, kPacketSize> direction{};  // unit direction of the segment that hit
-  int retraced = 0;  // lanes traced a second time (see tracePaths)
+  int retraced = 0;  // lanes traced a second time (see traceStraight)
+
+  void setStraightRay(int lane, const glm::vec3& origin, const glm::vec3& unitDirection) {
+    rayhit.ray.org_x[lane] = origin.x;
+    rayhit.ray.org_y[lane] = origin.y;
+    rayhit.ray.org_z[lane] = origin.z;
+    rayhit.ray.dir_x[lane] = unitDirection.x;
+    rayhit.ray.dir_y[lane] = unitDirection.y;
+    rayhit.ray.dir_z[lane] = unitDirection.z;
+    valid[lane] = -1;
+  }
+  glm::vec3 direction(int lane) const {
+    return {rayhit.ray.dir_x[lane], rayhit.ray.dir_y[lane], rayhit.ray.dir_z[lane]};
+  }
+  glm::vec3 point(int lane) const {  // where the lane hit
+    const glm::vec3 origin(rayhit.ray.org_x[lane], rayhit.ray.org_y[lane],
+                           rayhit.ray.org_z[lane]);
+    return origin + rayhit.ray.tfar[lane] * direction(lane);
+  }
 };
 
-// Traces `count` (<= 8) paths: every lane's segments in order until one hits. Unlit paths are
-// not traced. A lane that misses while its packet neighbours (both, or the only one) hit is
-// traced once more with its tail turned by 1e-5 rad: Embree's robust mode closes shared edges,
-// but a ray exactly through a shared vertex can still slip between the triangles around it
-// (hits.retraced counts these). Returns the number of rays cast (one per lane and segment,
-// retries included).
+// Traces the lanes whose `valid` is set (origin and unit direction already in hits.rayhit, see
+// setStraightRay) as unbounded rays. A lane that misses while its packet neighbours (both, or
+// the only one at a packet end of `count` lanes) hit is traced once more turned by 1e-5 rad:
+// Embree's robust mode closes shared edges, but a ray exactly through a shared vertex can still
+// slip between the triangles around it (hits.retraced counts these). Returns the number of
+// rays cast, retries included.
+std::uint64_t traceStraight(RTCScene scene, int count, PacketHits& hits);
+
+// Traces `count` (<= 8) bent paths: every lane's segments in order until one hits, then the
+// lone-miss retry of traceStraight along the tail. Unlit paths are not traced. Returns the
+// number of rays cast (one per lane and segment, retries included).
 std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, PacketHits& hits);
 
 struct OcclusionPacket {

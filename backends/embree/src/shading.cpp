@@ -5,6 +5,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "sampling.hpp"
+#include "surface_packet.hpp"
 
 namespace confvis::embree {
 
@@ -27,40 +28,42 @@ glm::vec3 cosineSample(const glm::vec3& n, float u1, float u2) {
 std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
                           const ShadingOptions& options,
                           const std::array<std::uint32_t, kPacketSize>& seeds,
-                          std::array<glm::vec3, kPacketSize>& colours) {
-  // Structure of arrays: the gathers (normals, texels) per lane first, then the arithmetic
-  // (normalisation, headlight Lambert) over all 8 lanes without branches, which the compiler
-  // turns into vector sqrt and divide instead of one dependent chain per lane. Missed lanes
-  // carry zeros through and come out black.
-  alignas(32) std::array<float, kPacketSize> nx{}, ny{}, nz{}, dx{}, dy{}, dz{};
-  alignas(32) std::array<float, kPacketSize> red{}, green{}, blue{};
+                          PacketColours& colours) {
+  // The surface per lane (gathers, then vectorised arithmetic), then the headlight over all 8
+  // lanes without branches; lanes without a hit carry zeros through and come out black.
+  const RTCRayHit8& r = hits.rayhit;
+  SurfacePacket surface;
+  surfaceAt(scene, hits, surface);
+  const auto &nx = surface.nx, &ny = surface.ny, &nz = surface.nz;
+  alignas(32) std::array<float, kPacketSize> towardsViewer;  // -1 or 1 / |n|, see below
   for (int lane = 0; lane < kPacketSize; ++lane) {
-    if (!hits.hit[lane]) continue;
-    const float u = hits.barycentrics[lane].x, v = hits.barycentrics[lane].y;
-    glm::vec3 n = scene.interpolatedNormal(hits.geomID[lane], hits.primID[lane], u, v);
-    if (!(glm::dot(n, n) > 1e-40f)) n = hits.geometricNormal[lane];  // none, or degenerate
-    nx[lane] = n.x, ny[lane] = n.y, nz[lane] = n.z;
-    const glm::vec3& d = hits.direction[lane];
-    dx[lane] = d.x, dy[lane] = d.y, dz[lane] = d.z;
-    const glm::vec4 base = scene.baseColor(hits.geomID[lane], hits.primID[lane], u, v);
-    red[lane] = base.r, green[lane] = base.g, blue[lane] = base.b;
-  }
-  alignas(32) std::array<float, kPacketSize> towardsViewer{};  // -1 or 1 / |n|, see below
-  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const float dx = r.ray.dir_x[lane], dy = r.ray.dir_y[lane], dz = r.ray.dir_z[lane];
     const float lengthSquared = nx[lane] * nx[lane] + ny[lane] * ny[lane] + nz[lane] * nz[lane];
-    const float facing = nx[lane] * dx[lane] + ny[lane] * dy[lane] + nz[lane] * dz[lane];
-    const float inverseLength = lengthSquared > 0.0f ? 1.0f / std::sqrt(lengthSquared) : 0.0f;
+    const float facing = nx[lane] * dx + ny[lane] * dy + nz[lane] * dz;
+    // 1 / |n|, 0 for a zero normal (a missed lane); computed unconditionally so that the loop
+    // vectorises (the compiler may not speculate a division by zero).
+    const bool nonzero = lengthSquared > 0.0f;
+    const float root = std::sqrt(nonzero ? lengthSquared : 1.0f);
+    const float inverse = 1.0f / root;
+    const float inverseLength = nonzero ? inverse : 0.0f;
     // Two-sided: the normal turned towards the viewer, so files with either winding shade alike;
     // Lambert with the headlight is then |n . d| / |n|.
     towardsViewer[lane] = facing > 0.0f ? -inverseLength : inverseLength;
     const float lambert = std::abs(facing) * inverseLength;
-    colours[lane] = glm::vec3(red[lane] * lambert, green[lane] * lambert, blue[lane] * lambert);
+    colours.red[lane] = surface.red[lane] * lambert;
+    colours.green[lane] = surface.green[lane] * lambert;
+    colours.blue[lane] = surface.blue[lane] * lambert;
   }
+  // Apart: reading the bool array in the loop above keeps GCC from vectorising it.
+  for (int lane = 0; lane < kPacketSize; ++lane) colours.alpha[lane] = hits.hit[lane] ? 1.0f : 0.0f;
   if (!options.ambientOcclusion || options.occlusionSamples <= 0) return 0;
 
   std::array<glm::vec3, kPacketSize> normals{};  // unit, towards the viewer
   for (int lane = 0; lane < kPacketSize; ++lane)
     normals[lane] = towardsViewer[lane] * glm::vec3(nx[lane], ny[lane], nz[lane]);
+  std::array<glm::vec3, kPacketSize> points{};
+  for (int lane = 0; lane < kPacketSize; ++lane)
+    if (hits.hit[lane]) points[lane] = hits.point(lane);
   std::uint64_t rays = 0;
   std::array<int, kPacketSize> open{};
   std::array<Random, kPacketSize> rngs;
@@ -75,7 +78,7 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
       const float u1 = (static_cast<float>(k) + rngs[lane].next()) / static_cast<float>(n);
       const float u2 = rngs[lane].next();
       packet.direction[lane] = cosineSample(normals[lane], u1, u2);
-      packet.origin[lane] = hits.point[lane] + options.surfaceOffset * normals[lane];
+      packet.origin[lane] = points[lane] + options.surfaceOffset * normals[lane];
       packet.distance[lane] = options.occlusionDistance;
     }
     rays += traceOcclusion(scene.handle(), packet);
@@ -83,7 +86,10 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
       if (packet.active[lane] && !packet.occluded[lane]) ++open[lane];
   }
   for (int lane = 0; lane < kPacketSize; ++lane)
-    if (hits.hit[lane]) colours[lane] *= static_cast<float>(open[lane]) / static_cast<float>(n);
+    if (hits.hit[lane]) {
+      const float visible = static_cast<float>(open[lane]) / static_cast<float>(n);
+      colours.red[lane] *= visible, colours.green[lane] *= visible, colours.blue[lane] *= visible;
+    }
   return rays;
 }
 

@@ -19,10 +19,16 @@ struct ShadingOptions {
   float surfaceOffset = 1e-4f;     // metres, start of occlusion rays above the surface
 };
 
-// Returns the number of occlusion rays cast. `seeds` gives each lane its random stream.
+// Linear RGB per lane, and alpha 1 where the lane hit something; all zero where it did not.
+struct PacketColours {
+  alignas(32) std::array<float, kPacketSize> red{}, green{}, blue{}, alpha{};
+};
+
+// Returns the number of occlusion rays cast. `seeds` gives each lane its random stream. Lanes
+// without a hit must carry zero barycentrics, normal and direction (as the tracers leave them).
 std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
                           const ShadingOptions& options,
                           const std::array<std::uint32_t, kPacketSize>& seeds,
-                          std::array<glm::vec3, kPacketSize>& colours);
+                          PacketColours& colours);
 
 }  // namespace confvis::embree

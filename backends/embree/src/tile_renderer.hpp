@@ -8,6 +8,7 @@
 #include "confvis/backends/embree/embree_scene.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/base/progress.hpp"
+#include "sampling.hpp"
 #include "shading.hpp"
 
 namespace confvis::embree {
@@ -32,9 +33,22 @@ struct TileJob {
   const DirectionTable* directions = nullptr;
 };
 
+// The seed of output pixel (x, y)'s random streams (sub-pixel positions, occlusion rays).
+inline std::uint32_t pixelSeed(const TileJob& job, int x, int y) {
+  return hashU32(job.seed ^ hashU32(static_cast<std::uint32_t>(y) * 0x9e3779b1u +
+                                    static_cast<std::uint32_t>(x)));
+}
+
 // Wall-pixel position of sample `sample` of output pixel (x, y): the stratified sub-pixel
 // offset (seeded per pixel and image) scaled to wall pixels.
-glm::dvec2 samplePosition(const TileJob& job, int x, int y, int sample);
+inline glm::dvec2 samplePosition(const TileJob& job, int x, int y, int sample,
+                                 std::uint32_t seed) {
+  const glm::dvec2 offset = stratifiedSample(sample, job.samplesPerPixel, seed);
+  return {(x + offset.x) * job.pixelToWall.x, (y + offset.y) * job.pixelToWall.y};
+}
+inline glm::dvec2 samplePosition(const TileJob& job, int x, int y, int sample) {
+  return samplePosition(job, x, y, sample, pixelSeed(job, x, y));
+}
 
 // Renders into `image` (width x height, resized here): linear RGB averaged over the samples,
 // alpha = fraction of samples that hit something. Calls progress.advance() once per tile.

@@ -12,10 +12,12 @@
 //   curvature; the boundary targets are those of a polygon inscribed in a hyperbolic circle
 //   with the current boundary edge lengths, updated until they no longer change. Laid out in
 //   the Poincaré disk, where the boundary circle is a Euclidean one, scaled onto the unit circle.
+#include <array>
 #include <complex>
 #include <functional>
 #include <vector>
 
+#include "confvis/base/vec3.hpp"
 #include "confvis/conformal/mesh.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
 
@@ -49,6 +51,12 @@ struct DiskMap {
 // boundary loops) or, for the Euclidean route, too coarse to have a face off the boundary;
 // Error(Unreachable) if the flow fails. The map preserves the input orientation.
 DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options = {});
+// The same for points and counter-clockwise triangles, without building a half-edge mesh (the
+// display map's ~3k-vertex disks are mapped at every re-bake). Also throws Error(InvalidInput)
+// for an edge in more than two triangles or inconsistent orientations.
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const DiskMapOptions& options = {});
 
 // Applies a Möbius alignment sending boundary vertices a, b, c to 1, i, -1.
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c);

@@ -3,7 +3,10 @@
 // loop touches every face each iteration; OpenMesh handles are too slow there). Supports edge
 // flips, which keep the triangulation (power) Delaunay during the flow.
 #include <array>
+#include <string>
 #include <vector>
+
+#include "confvis/base/vec3.hpp"
 
 #include "confvis/conformal/mesh.hpp"
 
@@ -34,7 +37,26 @@ struct IntrinsicTriangulation {
 // Vertex indices are OpenMesh's; faces keep OpenMesh order (minus the skipped one).
 IntrinsicTriangulation buildTriangulation(const TriMesh& mesh, int skipFace = -1);
 
+// The faces of `mesh` as corner triples in half-edge order (corner c: target of the c-th
+// half-edge from the face's own), the order buildTriangulation uses.
+std::vector<std::array<int, 3>> meshTriangles(const TriMesh& mesh);
+
+// buildTriangulation from an indexed triangle list (corners in the given order), without a
+// half-edge mesh: edges are numbered in order of first appearance, so a list read off a TriMesh
+// in its faces' half-edge order gives exactly buildTriangulation(mesh, skipFace). Throws
+// Error(InvalidInput) naming the triangle for an index out of range, a repeated corner, an edge
+// in more than two triangles or two triangles of opposite orientation.
+IntrinsicTriangulation buildTriangulation(int vertexCount,
+                                          const std::vector<std::array<int, 3>>& triangles,
+                                          int skipFace = -1);
+
 // Euclidean edge lengths of `mesh` in the triangulation's edge order.
 std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri, const TriMesh& mesh);
+std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri,
+                                        const std::vector<Vec3d>& points);
+
+// requireDisk for a triangulation: one component, one boundary loop, Euler characteristic 1,
+// every vertex a single fan of triangles. Throws Error(InvalidInput) naming `what`.
+void requireDisk(const IntrinsicTriangulation& tri, const std::string& what);
 
 }  // namespace confvis::conformal

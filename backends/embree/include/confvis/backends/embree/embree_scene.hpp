@@ -25,26 +25,8 @@ class EmbreeScene {
   const Scene& scene() const { return source_; }
   // Length of the bounding-box diagonal, metres (a scale for ambient-occlusion distances).
   double diagonal() const { return diagonal_; }
-  // The vertex normals interpolated at a hit, not normalised; zero where the mesh has none.
-  glm::vec3 interpolatedNormal(unsigned geomID, unsigned primID, float u, float v) const {
-    const ShadingMesh& mesh = shadingMeshes_[geomID];
-    if (!mesh.normals) return glm::vec3(0.0f);
-    const glm::uvec3 t = mesh.triangles[primID];
-    return (1.0f - u - v) * mesh.normals[t.x] + u * mesh.normals[t.y] + v * mesh.normals[t.z];
-  }
-  // Scene::baseColorAt for a hit, from the flattened per-mesh data (no bounds checks: geomID and
-  // primID come from Embree).
-  glm::vec4 baseColor(unsigned geomID, unsigned primID, float u, float v) const {
-    const ShadingMesh& mesh = shadingMeshes_[geomID];
-    if (!mesh.texture) return mesh.factor;
-    const glm::uvec3 t = mesh.triangles[primID];
-    const glm::vec2 uv = (1.0f - u - v) * mesh.uvs[t.x] + u * mesh.uvs[t.y] + v * mesh.uvs[t.z];
-    return mesh.factor * mesh.texture->sample(uv);
-  }
-  double buildSeconds() const { return buildSeconds_; }
-
- private:
-  // What shading reads per hit, one per mesh, pointing into source_.
+  // What shading reads per hit, one per mesh (geomID), pointing into scene(): Scene::baseColorAt
+  // is factor x texture sampled at the uvs interpolated with Embree's barycentrics.
   struct ShadingMesh {
     const glm::uvec3* triangles = nullptr;
     const glm::vec3* normals = nullptr;  // null: the mesh has none
@@ -52,6 +34,11 @@ class EmbreeScene {
     const Texture* texture = nullptr;    // null: no texture, or no uvs to look it up with
     glm::vec4 factor{1.0f};              // material base colour factor (white without one)
   };
+  // No bounds check: geomID comes from Embree.
+  const ShadingMesh& shadingMesh(unsigned geomID) const { return shadingMeshes_[geomID]; }
+  double buildSeconds() const { return buildSeconds_; }
+
+ private:
   std::vector<ShadingMesh> shadingMeshes_;
   RTCScene scene_ = nullptr;
   Scene source_;

@@ -1,0 +1,98 @@
+#include "camera_packet.hpp"
+
+#include "direction_table.hpp"
+
+namespace confvis::embree {
+
+namespace {
+
+using Lanes = std::array<float, kPacketSize>;
+
+glm::dvec2 lanePosition(const TileJob& job, const PacketSamples& samples, int lane) {
+  return samplePosition(job, samples.x + lane, samples.y, samples.sample,
+                        samples.pixelSeeds[static_cast<std::size_t>(lane)]);
+}
+
+// Plain rays: the affine directions of the whole packet at once.
+void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
+                 PacketHits& hits) {
+  alignas(32) Lanes px{}, py{};
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const glm::dvec2 p = lanePosition(job, samples, std::min(lane, samples.count - 1));
+    px[lane] = static_cast<float>(p.x);
+    py[lane] = static_cast<float>(p.y);
+    hits.valid[lane] = lane < samples.count ? -1 : 0;
+  }
+  RTCRay8& ray = hits.rayhit.ray;
+  rays.plainDirections().at(px, py, ray.dir_x, ray.dir_y, ray.dir_z);
+}
+
+// Conformal centre eye with a direction table: the map directions turned by the camera and
+// normalised, as CameraRays::centreDirection does (glm's order of operations), for the whole
+// packet at once. Unlit samples hold F = 0.
+void tablePacket(const CameraRays& rays, const DirectionTable& table,
+                 const PacketSamples& samples, PacketHits& hits) {
+  alignas(32) Lanes fx{}, fy{}, fz{};
+  const glm::vec3* run = table.at(samples.x, samples.y, samples.sample);  // a packet: one tile row
+  for (int lane = 0; lane < samples.count; ++lane)
+    fx[lane] = run[lane].x, fy[lane] = run[lane].y, fz[lane] = run[lane].z;
+  const glm::mat3& m = rays.rotation();
+  RTCRay8& ray = hits.rayhit.ray;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const float x = m[0][0] * fx[lane] + m[1][0] * fy[lane] + m[2][0] * fz[lane];
+    const float y = m[0][1] * fx[lane] + m[1][1] * fy[lane] + m[2][1] * fz[lane];
+    const float z = m[0][2] * fx[lane] + m[1][2] * fy[lane] + m[2][2] * fz[lane];
+    // Unlit (F = 0) lanes are not traced; their direction only has to stay finite (a blend, not
+    // a select, so that the loop vectorises).
+    const float unlit = fx[lane] == 0.0f && fy[lane] == 0.0f && fz[lane] == 0.0f ? 1.0f : 0.0f;
+    const float inverseLength = 1.0f / std::sqrt(x * x + y * y + z * z + unlit);
+    ray.dir_x[lane] = x * inverseLength;
+    ray.dir_y[lane] = y * inverseLength;
+    ray.dir_z[lane] = z * inverseLength;
+  }
+  for (int lane = 0; lane < samples.count; ++lane)
+    hits.valid[lane] = fx[lane] != 0.0f || fy[lane] != 0.0f || fz[lane] != 0.0f ? -1 : 0;
+  for (int lane = samples.count; lane < kPacketSize; ++lane) hits.valid[lane] = 0;
+}
+
+std::uint64_t traceStraightPacket(const EmbreeScene& scene, const CameraRays& rays,
+                                  const TileJob& job, const PacketSamples& samples,
+                                  PacketHits& hits) {
+  RTCRay8& ray = hits.rayhit.ray;
+  const glm::vec3& origin = rays.origin();
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    ray.org_x[lane] = origin.x;
+    ray.org_y[lane] = origin.y;
+    ray.org_z[lane] = origin.z;
+  }
+  if (job.directions) {
+    tablePacket(rays, *job.directions, samples, hits);
+  } else if (rays.plain()) {
+    plainPacket(rays, job, samples, hits);
+  } else {  // a map lookup per sample
+    hits.valid.fill(0);
+    for (int lane = 0; lane < samples.count; ++lane) {
+      const glm::dvec2 p = lanePosition(job, samples, lane);
+      glm::vec3 direction;
+      if (rays.straightDirection(p.x, p.y, direction))
+        hits.setStraightRay(lane, origin, direction);
+    }
+  }
+  return traceStraight(scene.handle(), samples.count, hits);
+}
+
+}  // namespace
+
+std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays,
+                                const TileJob& job, const PacketSamples& samples,
+                                PacketHits& hits) {
+  if (rays.straight()) return traceStraightPacket(scene, rays, job, samples, hits);
+  std::array<RayPath, kPacketSize> paths;
+  for (int lane = 0; lane < samples.count; ++lane) {
+    const glm::dvec2 p = lanePosition(job, samples, lane);
+    rays.make(p.x, p.y, paths[static_cast<std::size_t>(lane)]);
+  }
+  return tracePaths(scene.handle(), paths.data(), samples.count, hits);
+}
+
+}  // namespace confvis::embree
