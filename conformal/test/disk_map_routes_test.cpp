@@ -10,6 +10,7 @@
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/distortion.hpp"
 #include "confvis/conformal/mesh_generators.hpp"
+#include "disk_map_test_support.hpp"
 
 using namespace confvis;
 using namespace confvis::conformal;
@@ -32,31 +33,11 @@ std::array<int, 3> boundaryMarkers(const TriMesh& mesh) {
   return {loop[0], loop[2 * n / 3], loop[n / 3]};
 }
 
-// Boundary vertices nearest to azimuths 0°, 120°, 240° of a mesh around the z axis (as the
-// DiskMap.Hemisphere* tests align).
-std::array<int, 3> azimuthMarkers(const TriMesh& mesh) {
-  std::array<int, 3> best{-1, -1, -1};
-  std::array<double, 3> bestDist{1e9, 1e9, 1e9};
-  for (auto v : mesh.vertices()) {
-    if (!mesh.is_boundary(v)) continue;
-    const auto& p = mesh.point(v);
-    for (int k = 0; k < 3; ++k) {
-      const double d = std::abs(Complex(p[0], p[1]) - std::polar(1.0, 2 * std::numbers::pi * k / 3));
-      if (d < bestDist[k]) bestDist[k] = d, best[k] = v.idx();
-    }
-  }
-  return best;
-}
-
 // Max distance between two maps after aligning both at the same markers.
 double alignedDistance(const TriMesh& mesh, std::vector<Complex> a, std::vector<Complex> b,
                        bool byAzimuth = false) {
-  const auto m = byAzimuth ? azimuthMarkers(mesh) : boundaryMarkers(mesh);
-  alignDiskMap(a, m[0], m[1], m[2]);
-  alignDiskMap(b, m[0], m[1], m[2]);
-  double d = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
-  return d;
+  return test::alignedDistance(std::move(a), std::move(b),
+                               byAzimuth ? test::azimuthMarkers(mesh) : boundaryMarkers(mesh));
 }
 
 void expectValidDiskMap(const TriMesh& mesh, const DiskMap& map, Geometry route) {

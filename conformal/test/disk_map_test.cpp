@@ -12,6 +12,7 @@
 #include "confvis/conformal/intrinsic_triangulation.hpp"
 #include "confvis/conformal/mesh_generators.hpp"
 #include "confvis/conformal/mobius.hpp"
+#include "disk_map_test_support.hpp"
 
 using namespace confvis;
 using namespace confvis::conformal;
@@ -19,33 +20,9 @@ using Complex = std::complex<double>;
 
 namespace {
 
-// Boundary vertices nearest to azimuths 0°, 120°, 240° (counter-clockwise seen from +z).
-std::array<int, 3> markers(const TriMesh& mesh) {
-  std::array<int, 3> best{-1, -1, -1};
-  std::array<double, 3> bestDist{1e9, 1e9, 1e9};
-  for (auto v : mesh.vertices()) {
-    if (!mesh.is_boundary(v)) continue;
-    const auto& p = mesh.point(v);
-    for (int k = 0; k < 3; ++k) {
-      const double a = 2 * std::numbers::pi * k / 3;
-      const double d = std::hypot(p[0] - std::cos(a), p[1] - std::sin(a));
-      if (d < bestDist[k]) {
-        bestDist[k] = d;
-        best[k] = v.idx();
-      }
-    }
-  }
-  return best;
-}
-
 // Max distance between the computed map and a reference, both aligned at the same markers.
 double alignedError(const TriMesh& mesh, std::vector<Complex> uv, std::vector<Complex> reference) {
-  const auto m = markers(mesh);
-  alignDiskMap(uv, m[0], m[1], m[2]);
-  alignDiskMap(reference, m[0], m[1], m[2]);
-  double err = 0;
-  for (std::size_t i = 0; i < uv.size(); ++i) err = std::max(err, std::abs(uv[i] - reference[i]));
-  return err;
+  return test::alignedDistance(std::move(uv), std::move(reference), test::azimuthMarkers(mesh));
 }
 
 double hemisphereError(int n) {
