@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <queue>
+#include <algorithm>
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/mobius.hpp"
@@ -16,6 +16,72 @@ namespace {
 using Complex = std::complex<double>;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Min-heap of vertices keyed by (distance, index), with decrease-key: a vertex sits in it at
+// most once (a lazy std::priority_queue holds one entry per improvement) and the heap is 4-ary,
+// so sifts are shallow. Ties settle by index, as with std::priority_queue over pairs, so the
+// paths found do not depend on the heap.
+class VertexHeap {
+ public:
+  explicit VertexHeap(int vertexCount) : slot_(vertexCount, -1) { heap_.reserve(vertexCount); }
+  bool empty() const { return heap_.empty(); }
+  // Inserts v with key d, or lowers its key to d.
+  void decrease(int v, double d) {
+    int i = slot_[v];
+    if (i < 0) {
+      i = static_cast<int>(heap_.size());
+      heap_.push_back({d, v});
+    }
+    siftUp(i, {d, v});
+  }
+  int pop() {
+    const int top = heap_[0].vertex;
+    slot_[top] = -1;
+    const Entry last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) siftDown(last);
+    return top;
+  }
+
+ private:
+  struct Entry {
+    double key;
+    int vertex;
+    bool operator<(const Entry& o) const {
+      return key < o.key || (key == o.key && vertex < o.vertex);
+    }
+  };
+  void place(int i, const Entry& entry) {
+    heap_[i] = entry;
+    slot_[entry.vertex] = i;
+  }
+  void siftUp(int i, const Entry& entry) {
+    while (i > 0) {
+      const int parent = (i - 1) / 4;
+      if (!(entry < heap_[parent])) break;
+      place(i, heap_[parent]);
+      i = parent;
+    }
+    place(i, entry);
+  }
+  void siftDown(const Entry& entry) {  // `entry` goes in at the root
+    const int n = static_cast<int>(heap_.size());
+    int i = 0;
+    for (;;) {
+      const int first = 4 * i + 1;
+      if (first >= n) break;
+      int best = first;
+      for (int c = first + 1; c < std::min(first + 4, n); ++c)
+        if (heap_[c] < heap_[best]) best = c;
+      if (!(heap_[best] < entry)) break;
+      place(i, heap_[best]);
+      i = best;
+    }
+    place(i, entry);
+  }
+  std::vector<Entry> heap_;
+  std::vector<int> slot_;  // position in heap_, -1 when not in it
+};
+
 // Shortest distances along edges from a set of source vertices. `blocked(v)` vertices are
 // never expanded (they may still be reached); `edgeAllowed(e)` filters edges. Stops when a
 // vertex with `stop(v)` is settled (pass `stop` false everywhere for all distances); returns
@@ -24,40 +90,43 @@ template <typename Blocked, typename EdgeAllowed, typename Stop>
 int dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengths,
              const std::vector<int>& sources, std::vector<double>& dist,
              std::vector<int>& parentEdge, Blocked blocked, EdgeAllowed edgeAllowed, Stop stop) {
-  // Incident edges per vertex, compressed (one allocation, not one per vertex).
-  std::vector<int> offset(tri.vertexCount + 1, 0), incident(2 * tri.edgeCount());
+  // Incident edges per vertex with the far end and length beside each (one allocation, and
+  // no look-up of the edge's vertices while relaxing), in increasing edge order.
+  struct Step {
+    int edge, to;
+    double length;
+  };
+  std::vector<int> offset(tri.vertexCount + 1, 0);
+  std::vector<Step> steps(2 * tri.edgeCount());
   for (const auto& ev : tri.edgeVertices) ++offset[ev[0] + 1], ++offset[ev[1] + 1];
   for (int v = 0; v < tri.vertexCount; ++v) offset[v + 1] += offset[v];
   {
     std::vector<int> fill(offset.begin(), offset.end() - 1);
-    for (int e = 0; e < tri.edgeCount(); ++e)
-      for (int v : tri.edgeVertices[e]) incident[fill[v]++] = e;
+    for (int e = 0; e < tri.edgeCount(); ++e) {
+      const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+      steps[fill[a]++] = {e, b, lengths[e]};
+      steps[fill[b]++] = {e, a, lengths[e]};
+    }
   }
   dist.assign(tri.vertexCount, kInf);
   parentEdge.assign(tri.vertexCount, -1);
-  using Item = std::pair<double, int>;
-  std::vector<Item> heap;
-  heap.reserve(tri.vertexCount);
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue(std::greater<>(),
-                                                                     std::move(heap));
+  VertexHeap queue(tri.vertexCount);
   for (int s : sources) {
     dist[s] = 0;
-    queue.push({0.0, s});
+    queue.decrease(s, 0.0);
   }
   while (!queue.empty()) {
-    auto [d, v] = queue.top();
-    queue.pop();
-    if (d > dist[v]) continue;
+    const int v = queue.pop();
+    const double d = dist[v];
     if (stop(v)) return v;
     if (blocked(v)) continue;
     for (int k = offset[v]; k < offset[v + 1]; ++k) {
-      const int e = incident[k];
-      if (!edgeAllowed(e)) continue;
-      const int w = tri.edgeVertices[e][0] == v ? tri.edgeVertices[e][1] : tri.edgeVertices[e][0];
-      if (d + lengths[e] < dist[w]) {
-        dist[w] = d + lengths[e];
-        parentEdge[w] = e;
-        queue.push({dist[w], w});
+      const Step& step = steps[k];
+      if (!edgeAllowed(step.edge)) continue;
+      if (d + step.length < dist[step.to]) {
+        dist[step.to] = d + step.length;
+        parentEdge[step.to] = step.edge;
+        queue.decrease(step.to, dist[step.to]);
       }
     }
   }
