@@ -184,13 +184,14 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
   return detail::developFaces<Complex>(tri, edgeCut, placeFirstEdge, placeThird);
 }
 
+// `whole`: the unflipped triangulation of `triangles`.
 DiskMap mapAnnulus(const std::vector<Vec3d>& points,
-                   const std::vector<std::array<int, 3>>& triangles, int removedFace,
+                   const std::vector<std::array<int, 3>>& triangles,
+                   const IntrinsicTriangulation& whole, int removedFace,
                    const DiskMapOptions& options) {
   DiskMap result;
   result.removedFace = removedFace;
-  IntrinsicTriangulation tri =
-      buildTriangulation(static_cast<int>(points.size()), triangles, removedFace);
+  IntrinsicTriangulation tri = withoutFace(whole, removedFace);
   CirclePackingMetric metric =
       initialMetric(tri, embeddedEdgeLengths(tri, points), options.scheme, Geometry::Euclidean);
   const RicciFlowOptions flowOptions = detail::diskMapFlowOptions(options);
@@ -286,7 +287,7 @@ DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
   if (removed >= static_cast<int>(triangles.size()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
   return withFlipRetry(options, [&](const DiskMapOptions& o) {
-    return mapAnnulus(points, triangles, removed, o);
+    return mapAnnulus(points, triangles, whole, removed, o);
   });
 }
 

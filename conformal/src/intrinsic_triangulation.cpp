@@ -58,6 +58,19 @@ IntrinsicTriangulation buildTriangulation(const TriMesh& mesh, int skipFace) {
   return buildTriangulation(static_cast<int>(mesh.n_vertices()), meshTriangles(mesh), skipFace);
 }
 
+namespace {
+
+void markBoundaryVertices(IntrinsicTriangulation& t) {
+  t.vertexOnBoundary.assign(t.vertexCount, 0);
+  for (int e = 0; e < t.edgeCount(); ++e)
+    if (t.edgeOnBoundary(e)) {
+      t.vertexOnBoundary[t.edgeVertices[e][0]] = 1;
+      t.vertexOnBoundary[t.edgeVertices[e][1]] = 1;
+    }
+}
+
+}  // namespace
+
 IntrinsicTriangulation buildTriangulation(int vertexCount,
                                           const std::vector<std::array<int, 3>>& triangles,
                                           int skipFace) {
@@ -109,12 +122,41 @@ IntrinsicTriangulation buildTriangulation(int vertexCount,
     }
     ++f;
   }
-  t.vertexOnBoundary.assign(t.vertexCount, 0);
-  for (int e = 0; e < t.edgeCount(); ++e)
-    if (t.edgeOnBoundary(e)) {
-      t.vertexOnBoundary[t.edgeVertices[e][0]] = 1;
-      t.vertexOnBoundary[t.edgeVertices[e][1]] = 1;
+  markBoundaryVertices(t);
+  return t;
+}
+
+IntrinsicTriangulation withoutFace(const IntrinsicTriangulation& whole, int face) {
+  if (face < 0 || face >= whole.faceCount())
+    throw Error(ErrorCode::InvalidInput, "face " + std::to_string(face) + " out of range");
+  IntrinsicTriangulation t;
+  t.vertexCount = whole.vertexCount;
+  t.faceVertices.reserve(whole.faceCount() - 1);
+  t.faceEdges.resize(whole.faceCount() - 1);
+  t.edgeVertices.reserve(whole.edgeCount());
+  t.edgeFaces.reserve(whole.edgeCount());
+  // As buildTriangulation: an edge is numbered, and runs as, in the first face that has it;
+  // without `face` that is the other face for the edges `face` came to first.
+  std::vector<int> renumbered(whole.edgeCount(), -1);
+  int g = 0;
+  for (int f = 0; f < whole.faceCount(); ++f) {
+    if (f == face) continue;
+    const std::array<int, 3>& v = whole.faceVertices[f];
+    t.faceVertices.push_back(v);
+    for (int c = 0; c < 3; ++c) {
+      int& e = renumbered[whole.faceEdges[f][c]];
+      if (e < 0) {
+        e = t.edgeCount();
+        t.edgeVertices.push_back({v[(c + 1) % 3], v[(c + 2) % 3]});
+        t.edgeFaces.push_back({g, -1});
+      } else {
+        t.edgeFaces[e][1] = g;
+      }
+      t.faceEdges[g][c] = e;
     }
+    ++g;
+  }
+  markBoundaryVertices(t);
   return t;
 }
 

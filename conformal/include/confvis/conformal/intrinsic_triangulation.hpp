@@ -50,6 +50,10 @@ IntrinsicTriangulation buildTriangulation(int vertexCount,
                                           const std::vector<std::array<int, 3>>& triangles,
                                           int skipFace = -1);
 
+// buildTriangulation(vertexCount, triangles, face) from `whole` = buildTriangulation(vertexCount,
+// triangles) (unflipped), with the same numbering, without searching for each edge again.
+IntrinsicTriangulation withoutFace(const IntrinsicTriangulation& whole, int face);
+
 // Euclidean edge lengths of `mesh` in the triangulation's edge order.
 std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri, const TriMesh& mesh);
 std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri,
