@@ -39,10 +39,27 @@ layout(set = 2, binding = 8, std430) buffer EdgeLevels { vec4 edgeLevels[]; };
 layout(set = 2, binding = 9, std430) writeonly buffer PatchLevels { vec4 patchLevels[]; };
 
 // The pieces list: kPieceCapacity index slots per index of the scene, since a triangle split at
-// its edge midpoints makes up to four (classify_triangles.comp); a mesh's part starts at
+// its edge midpoints makes up to four (classify_bent_triangles.comp); a mesh's part starts at
 // kPieceCapacity times its first index.
 layout(set = 2, binding = 10, std430) writeonly buffer PieceIndices { uint pieceIndices[]; };
 const uint kPieceCapacity = 4u;
+
+// Per mesh: the indirect dispatch of classify_bent_triangles.comp (VkDispatchIndirectCommand,
+// groupsX grown by classify_triangles.comp; reset to 0, 1, 1 from the host) and the length of
+// the mesh's part of the bent list.
+struct BentDispatch {
+  uint groupsX;
+  uint groupsY;
+  uint groupsZ;
+  uint count;
+};
+layout(set = 2, binding = 11, std430) buffer BentDispatches { BentDispatch bentDispatch[]; };
+// The bent list: per triangle that classify_triangles.comp could not draw flat, its number in
+// its mesh, kBentDrops set where confvisDropTriangle drops it whole; a mesh's part starts at its
+// first index / 3.
+layout(set = 2, binding = 12, std430) buffer BentTriangles { uint bentTriangles[]; };
+const uint kBentDrops = 0x80000000u;
+const uint kBentGroup = 64u;  // local_size_x of classify_bent_triangles.comp
 
 const uint kListFlat = 0u, kListTessellated = 1u, kListDropping = 2u, kListPieces = 3u;
 const uint kLists = 4u;
@@ -62,6 +79,17 @@ layout(push_constant) uniform Prepass {
 vec3 vertexRelative(uint v) {
   vec3 p = vec3(vertices[8u * v], vertices[8u * v + 1u], vertices[8u * v + 2u]);
   return (frame.worldToPhysical * vec4(p, 1.0)).xyz - frame.warpCentre.xyz;
+}
+
+// The triangle whose indices start at `base`: its vertex indices, virtual points relative to c
+// and warps (warp_vertices.comp).
+void loadTriangle(uint base, out uint i[3], out vec3 r[3], out vec4 w[3]) {
+  for (uint k = 0u; k < 3u; ++k) {
+    i[k] = indices[base + k];
+    uint v = uint(prepass.vertexOffset) + i[k];
+    r[k] = vertexRelative(v);
+    w[k] = warped[v];
+  }
 }
 
 #endif

@@ -3,7 +3,7 @@
 // are the scene's vertices with the pre-pass's warps, number midpointBase + e is the midpoint of
 // the scene's edge e with the warp the pre-pass measured for it (classify_edges.comp). The
 // pre-pass splits triangles that bend by two segments at most into flat pieces between corners
-// and edge midpoints (classify_triangles.comp); the tessellation stages use the same midpoint
+// and edge midpoints (classify_bent_triangles.comp); the tessellation stages use the same midpoint
 // warps, so both ways of drawing an edge meet bit for bit.
 #ifndef CONFVIS_PULLED_VERTEX_GLSL
 #define CONFVIS_PULLED_VERTEX_GLSL
@@ -42,7 +42,7 @@ PulledVertex pulledVertex(uint v) {
   m.position = 0.5 * (a.position + b.position);
   m.normal = 0.5 * (a.normal + b.normal);
   m.uv = 0.5 * (a.uv + b.uv);
-  // Split triangles lie inside the source field (classify_triangles.comp).
+  // Split triangles lie inside the source field (classify_bent_triangles.comp).
   m.warped = vec4(edgeLevels[e].xyz, 1.0);
   return m;
 }

@@ -7,6 +7,16 @@
 #include "vk_check.hpp"
 
 namespace confvis::vulkan {
+namespace {
+
+// BentDispatch of confvis_prepass_common.glsl: VkDispatchIndirectCommand and the list's length.
+struct BentDispatch {
+  VkDispatchIndirectCommand dispatch;
+  std::uint32_t count;
+};
+static_assert(sizeof(BentDispatch) == 16);
+
+}  // namespace
 
 ConformalPrepass::ConformalPrepass(VulkanContext& context, const Pipelines& pipelines)
     : context_(context), pipelines_(pipelines) {}
@@ -38,6 +48,13 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                      true);
 
+  bentDispatch_ = Buffer(context_, scene.draws().size() * sizeof(BentDispatch),
+                         VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                         true);
+  bentTriangles_ =
+      Buffer(context_, std::max<std::size_t>(scene.triangleCount(), 1) * sizeof(std::uint32_t),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+
   const VkDevice device = context_.device();
   edgeLevels_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(glm::vec4),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
@@ -62,7 +79,8 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       scene.vertexBuffer(), scene.indexBuffer(),         warped_.get(),
       flat_.get(),          tessellated_.get(),          commands_.get(),
       scene.edgeBuffer(),   scene.triangleEdgeBuffer(), edgeLevels_.get(),
-      patchLevels_.get(),   pieces_.get()};
+      patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
+      bentTriangles_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   rangeEnds_.clear();
@@ -84,6 +102,8 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
     commands[kPrepassLists * d + static_cast<std::uint32_t>(PrepassList::Pieces)].firstIndex =
         kPieceCapacity * draw.firstIndex;
   }
+  auto* bent = static_cast<BentDispatch*>(bentDispatch_.mapped());
+  for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = {0, 1, 1, 0};
 
   // The previous frame's draws read what this frame overwrites.
   vkCmdPipelineBarrier(cmd,
@@ -119,16 +139,33 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &warpedReady, 0, nullptr, 0,
                        nullptr);
 
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyTriangles());
-  for (std::size_t d = 0; d < scene.draws().size(); ++d) {
-    const GpuScene::Draw& draw = scene.draws()[d];
-    push.count = draw.indexCount / 3;
-    push.mesh = static_cast<std::uint32_t>(d);
-    push.firstIndex = draw.firstIndex;
-    push.vertexOffset = draw.vertexOffset;
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-    vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
-  }
+  // Per mesh: its triangles, directly (first pass) or over its bent list (second pass).
+  const auto classifyMeshes = [&](VkPipeline pipeline, bool bentList) {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+      const GpuScene::Draw& draw = scene.draws()[d];
+      push.count = draw.indexCount / 3;
+      push.mesh = static_cast<std::uint32_t>(d);
+      push.firstIndex = draw.firstIndex;
+      push.vertexOffset = draw.vertexOffset;
+      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
+      if (bentList)
+        vkCmdDispatchIndirect(cmd, bentDispatch_.get(), d * sizeof(BentDispatch));
+      else
+        vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
+    }
+  };
+  classifyMeshes(pipelines_.classifyTriangles(), false);
+
+  // The bent lists and their dispatches are ready; the second pass appends to the same lists.
+  VkMemoryBarrier bentReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  bentReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  bentReady.dstAccessMask =
+      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                       0, 1, &bentReady, 0, nullptr, 0, nullptr);
+  classifyMeshes(pipelines_.classifyBentTriangles(), true);
 
   VkMemoryBarrier listsReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   listsReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;

@@ -4,7 +4,8 @@
 // a plain vertex shader), "tessellated" (drawn through the tessellation pipeline, which bends and
 // culls it) or "dropping" (tessellation and a geometry shader that drops pieces across the cut or
 // outside the source field), writing one compacted index list and one draw command per mesh and
-// list (classify_triangles.comp), with each distinct edge's level measured once before
+// list (classify_triangles.comp: the flat test over every triangle, then
+// classify_bent_triangles.comp, dispatched indirectly over the rest only), with each distinct edge's level measured once before
 // (classify_edges.comp) and copied next to the tessellated lists for warp.tesc. Per-patch
 // tessellation is costly on some devices (lavapipe above all: its vertex, tessellation and
 // geometry stages run on one thread); most triangles of a finely meshed scene need none, and few
@@ -19,7 +20,7 @@
 namespace confvis::vulkan {
 
 // Pieces-list index slots per index of the scene: a triangle split at its edge midpoints makes
-// up to four (classify_triangles.comp, kPieceCapacity).
+// up to four (classify_bent_triangles.comp, kPieceCapacity).
 constexpr std::uint32_t kPieceCapacity = 4;
 
 enum class PrepassList : std::uint32_t { Flat = 0, Tessellated = 1, Dropping = 2, Pieces = 3 };
@@ -64,6 +65,9 @@ class ConformalPrepass {
   std::uint64_t sceneId_ = 0;
   std::vector<std::uint32_t> rangeEnds_;  // per mesh: one past its last index
   Buffer warped_, flat_, pieces_, tessellated_, commands_, edgeLevels_, patchLevels_;
+  // Per mesh: VkDispatchIndirectCommand and bent-list length (BentDispatch of the shaders).
+  Buffer bentDispatch_;
+  Buffer bentTriangles_;  // uint per scene triangle
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

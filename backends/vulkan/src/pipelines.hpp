@@ -40,7 +40,7 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 11;
+inline constexpr std::uint32_t kPrepassBindings = 13;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -84,6 +84,7 @@ class Pipelines {
   VkPipeline warpVertices() const { return warpVertices_.get(); }
   VkPipeline classifyEdges() const { return classifyEdges_.get(); }
   VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
+  VkPipeline classifyBentTriangles() const { return classifyBentTriangles_.get(); }
 
   // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
   // built on first use. Conformal mode draws with three, one per list of the pre-pass:
@@ -113,7 +114,7 @@ class Pipelines {
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
-  UniquePipeline warpVertices_, classifyEdges_, classifyTriangles_;
+  UniquePipeline warpVertices_, classifyEdges_, classifyTriangles_, classifyBentTriangles_;
   std::map<std::uint32_t, Pass> passes_;
 };
 

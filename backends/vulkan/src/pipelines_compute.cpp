@@ -1,10 +1,11 @@
 // The conformal pre-pass compute pipelines (warp_vertices.comp, classify_edges.comp,
-// classify_triangles.comp) and their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
+// classify_triangles.comp, classify_bent_triangles.comp) and their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
 #include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
 
 #include "pipelines.hpp"
 #include "vk_check.hpp"
 
+#include "confvis_spirv/classify_bent_triangles_comp.h"
 #include "confvis_spirv/classify_edges_comp.h"
 #include "confvis_spirv/classify_triangles_comp.h"
 #include "confvis_spirv/warp_vertices_comp.h"
@@ -45,6 +46,8 @@ void Pipelines::createComputePipelines() {
   warpVertices_ = computePipeline(device, layout, warp);
   classifyEdges_ = computePipeline(device, layout, edges);
   classifyTriangles_ = computePipeline(device, layout, classify);
+  const UniqueShaderModule bent = shaderModule(device, kSpirv_classify_bent_triangles_comp);
+  classifyBentTriangles_ = computePipeline(device, layout, bent);
 }
 
 }  // namespace confvis::vulkan

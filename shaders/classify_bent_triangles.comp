@@ -1,0 +1,132 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Conformal pre-pass, second pass (indirect dispatch over the bent list that
+// classify_triangles.comp fills): sorts the triangles that are not flat as they are into those
+// drawn in flat pieces between their corners and edge midpoints, those that need tessellation
+// only (tessellation pipeline without a geometry shader) and those that may lose pieces to
+// confvisDropTriangle: on or next to the cut, partly outside the source field or strongly
+// distorted (tessellation and the geometry shader that drops pieces, exactly as if it drew
+// everything; lavapipe runs it in its single-threaded draw stage, so only these pay for it).
+// A pass of its own because lavapipe evaluates both sides of a branch for all SIMD lanes: in one
+// pass every triangle of the scene paid for the tests below. Tessellated triangles copy their
+// edge levels next to their indices for warp.tesc.
+#include "confvis_warp.glsl"
+#include "confvis_prepass_common.glsl"
+
+layout(local_size_x = 64) in;
+
+void appendPiece(uint at, uint i0, uint i1, uint i2) {
+  pieceIndices[at] = i0; pieceIndices[at + 1u] = i1; pieceIndices[at + 2u] = i2;
+}
+
+// Appends to the tessellated or the dropping list.
+void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
+  uint slot = atomicAdd(commands[kLists * prepass.mesh + list].indexCount, 3u);
+  // The dropping list fills the mesh's range from its end, back to front.
+  uint at = list == kListTessellated ? prepass.firstIndex + slot
+                                     : prepass.firstIndex + 3u * prepass.count - 3u - slot;
+  complexIndices[at] = i0; complexIndices[at + 1u] = i1; complexIndices[at + 2u] = i2;
+  for (uint k = 0u; k < 3u; ++k) patchLevels[at + k] = levels[k];
+}
+
+// Draws a triangle whose edges need two segments at most (edge k, opposite corner k, when
+// split[k]) in flat pieces (the pieces list, warp_pieces.vert) between its corners and the split edges' midpoints, instead of
+// tessellating it: the midpoints' warps are the pre-pass's (confvis_pulled_vertex.glsl numbers
+// them after the scene's vertices), exactly what tessellation at level 2 places there, without
+// its warped centre and its cost (lavapipe tessellates on one thread; most bent triangles of a
+// finely meshed scene under a baked map bend by two segments).
+void appendSplit(uint i[3], bool split[3], uint edge[3]) {
+  uint m[3];  // index of the midpoint of the edge opposite corner k
+  uint pieces = 1u;
+  for (uint k = 0u; k < 3u; ++k) {
+    m[k] = prepass.midpointBase + edge[k] - uint(prepass.vertexOffset);
+    pieces += split[k] ? 1u : 0u;
+  }
+  uint at = kPieceCapacity * prepass.firstIndex +
+            atomicAdd(commands[kLists * prepass.mesh + kListPieces].indexCount, 3u * pieces);
+  if (pieces == 2u) {  // one split edge: its opposite corner fans to its midpoint
+    uint k = split[0] ? 0u : split[1] ? 1u : 2u;
+    uint a = (k + 1u) % 3u, b = (k + 2u) % 3u;  // edge k runs from corner a to corner b
+    appendPiece(at, i[k], i[a], m[k]);
+    appendPiece(at + 3u, i[k], m[k], i[b]);
+    return;
+  }
+  if (pieces == 4u) {
+    appendPiece(at, i[0], m[2], m[1]);
+    appendPiece(at + 3u, i[1], m[0], m[2]);
+    appendPiece(at + 6u, i[2], m[1], m[0]);
+    appendPiece(at + 9u, m[0], m[1], m[2]);
+    return;
+  }
+  // Two split edges, meeting at corner u (opposite the unsplit one): u's corner between their
+  // midpoints cut off, the quad beyond it in two.
+  uint u = !split[0] ? 0u : !split[1] ? 1u : 2u;
+  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;  // m[b] lies on u-a, m[a] on b-u
+  appendPiece(at, i[u], m[b], m[a]);
+  appendPiece(at + 3u, i[a], i[b], m[a]);
+  appendPiece(at + 6u, i[a], m[a], m[b]);
+}
+
+// A triangle that the warp stretches more than 4 times, flips or flattens 4 times. Chords
+// instead of angles (the warp keeps distances to c, so they compare alike) and no branches worth
+// skipping: lavapipe runs both sides of a branch for its SIMD lanes (in one pass over every
+// triangle, atan-based angles cost about 0.05 s of pre-pass a frame at 1M triangles).
+bool distorted(vec3 r0, vec3 r1, vec3 r2, vec3 w0, vec3 w1, vec3 w2) {
+  vec3 rab = r1 - r0, rbc = r2 - r1, rca = r0 - r2;
+  vec3 wab = w1 - w0, wbc = w2 - w1, wca = w0 - w2;
+  float virtualSize = max(dot(rab, rab), max(dot(rbc, rbc), dot(rca, rca)));
+  float warpedSize = max(dot(wab, wab), max(dot(wbc, wbc), dot(wca, wca)));
+  bool flipped = dot(cross(rab, -rca), r0 + r1 + r2) * dot(cross(wab, -wca), w0 + w1 + w2) < 0.0;
+  return warpedSize > 16.0 * virtualSize || flipped ||
+         4.0 * confvisRoundness(w0, w1, w2) < confvisRoundness(r0, r1, r2);
+}
+
+// A patch distorted as a whole or in one of the four halves-sized triangles between its corners
+// and edge midpoints (m[k]: midpoint of the edge opposite corner k, wm[k] its warp): next to a
+// singular point or the cut (near the ends of a cut, where the jump is too small for the edge
+// test), where its tessellated pieces may meet confvisDropTriangle's 16-times rules even though
+// the patch's edges do not.
+bool distortedPatch(vec3 r[3], vec4 w[3], vec3 wm[3]) {
+  vec3 m[3] = vec3[3](0.5 * (r[1] + r[2]), 0.5 * (r[2] + r[0]), 0.5 * (r[0] + r[1]));
+  bool any = distorted(r[0], r[1], r[2], w[0].xyz, w[1].xyz, w[2].xyz) ||
+             distorted(m[0], m[1], m[2], wm[0], wm[1], wm[2]);
+  for (int k = 0; k < 3; ++k) {
+    int i = (k + 1) % 3, j = (k + 2) % 3;  // corner k with the midpoints of its two edges
+    any = any || distorted(r[k], m[j], m[i], w[k].xyz, wm[j], wm[i]);
+  }
+  return any;
+}
+
+void main() {
+  uint slot = gl_GlobalInvocationID.x;
+  if (slot >= bentDispatch[prepass.mesh].count) return;
+  uint entry = bentTriangles[prepass.firstIndex / 3u + slot];
+  uint t = entry & ~kBentDrops;
+  bool drops = (entry & kBentDrops) != 0u;
+  uint base = prepass.firstIndex + 3u * t;
+  uint i[3];
+  vec3 r[3];
+  vec4 w[3];
+  loadTriangle(base, i, r, w);
+  vec4 levels[3], rawLevels[3];  // raw: w < 0 where the edge may lose pieces
+  bool bent = false, mayDrop = drops, split[3];
+  uint edge[3];
+  vec3 wm[3];
+  float inner = 1.0;
+  for (uint k = 0u; k < 3u; ++k) {
+    edge[k] = triangleEdges[base + k];
+    rawLevels[k] = levels[k] = edgeLevels[edge[k]];
+    mayDrop = mayDrop || levels[k].w < 0.0;
+    levels[k].w = abs(levels[k].w);
+    bent = bent || levels[k].w > 1.0;
+    split[k] = levels[k].w > 1.0;
+    inner = max(inner, levels[k].w);
+    wm[k] = levels[k].xyz;
+  }
+  mayDrop = mayDrop || (bent && distortedPatch(r, w, wm));
+  if (!mayDrop && inner <= 2.0) {
+    appendSplit(i, split, edge);
+  } else {
+    append(mayDrop ? kListDropping : kListTessellated, i[0], i[1], i[2], rawLevels);
+  }
+}
