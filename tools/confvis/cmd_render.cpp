@@ -120,11 +120,13 @@ int runRender(const RenderArgs& args) {
                    {"render_seconds", renderSeconds},
                    {"seconds_before_writing", secondsSince(start)}}}};
   writeRenderOutput(output, config, settings, result, extra);  // adds write_seconds
+  // Rays per second only where rays were traced (a rasterizer reports none).
   const double raysPerSecond = result.stats.value("rays_per_second", 0.0);
-  std::printf("%s: %zu images (%s, %s) of '%s' in %.2f s, %.1f Mrays/s -> %s\n",
-              config.name.c_str(), result.images.size(), modeName(settings.mode),
-              args.eyes.c_str(), scene.name.c_str(), renderSeconds, raysPerSecond * 1e-6,
-              output.string().c_str());
+  char rate[48] = "";
+  if (raysPerSecond > 0) std::snprintf(rate, sizeof rate, ", %.1f Mrays/s", raysPerSecond * 1e-6);
+  std::printf("%s: %zu images (%s, %s) of '%s' in %.2f s%s -> %s\n", config.name.c_str(),
+              result.images.size(), modeName(settings.mode), args.eyes.c_str(),
+              scene.name.c_str(), renderSeconds, rate, output.string().c_str());
   return 0;
 }
 
