@@ -30,11 +30,12 @@ void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
 }
 
 // Draws a triangle whose edges need two segments at most (edge k, opposite corner k, when
-// split[k]) in flat pieces (the pieces list, warp_pieces.vert) between its corners and the split edges' midpoints, instead of
-// tessellating it: the midpoints' warps are the pre-pass's (confvis_pulled_vertex.glsl numbers
-// them after the scene's vertices), exactly what tessellation at level 2 places there, without
-// its warped centre and its cost (lavapipe tessellates on one thread; most bent triangles of a
-// finely meshed scene under a baked map bend by two segments).
+// split[k]) in flat pieces (the pieces list, warp_pieces.vert) between its corners and the split
+// edges' midpoints, instead of tessellating it: the midpoints' warps are the pre-pass's
+// (confvis_pulled_vertex.glsl numbers them after the scene's vertices), exactly what
+// tessellation at level 2 places there, without its warped centre and its cost (lavapipe
+// tessellates on one thread; most bent triangles of a finely meshed scene under a baked map bend
+// by two segments).
 void appendSplit(uint i[3], bool split[3], uint edge[3]) {
   uint m[3];  // index of the midpoint of the edge opposite corner k
   uint pieces = 1u;
