@@ -7,6 +7,7 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/mobius.hpp"
+#include "disk_map_initial_guess.hpp"
 #include "disk_map_layout.hpp"
 #include "disk_map_routes.hpp"
 
@@ -187,8 +188,10 @@ DiskMap mapAnnulus(const std::vector<Vec3d>& points,
   DiskMap result;
   result.removedFace = removedFace;
   IntrinsicTriangulation tri = withoutFace(whole, removedFace);
-  CirclePackingMetric metric =
-      initialMetric(tri, embeddedEdgeLengths(tri, points), options.scheme, Geometry::Euclidean);
+  const std::vector<double> embedded = embeddedEdgeLengths(tri, points);
+  CirclePackingMetric metric = initialMetric(tri, embedded, options.scheme, Geometry::Euclidean);
+  if (options.flatteningGuess)
+    detail::addFlatteningGuess(tri, points, embedded, triangles[removedFace], metric);
   const RicciFlowOptions flowOptions = detail::diskMapFlowOptions(options);
   result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
   result.usedFlips = result.flow.flipsStartedAt >= 0;
@@ -282,7 +285,15 @@ DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
   if (removed >= static_cast<int>(triangles.size()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
   return withFlipRetry(options, [&](const DiskMapOptions& o) {
-    return mapAnnulus(points, triangles, whole, removed, o);
+    if (!o.flatteningGuess) return mapAnnulus(points, triangles, whole, removed, o);
+    try {
+      return mapAnnulus(points, triangles, whole, removed, o);
+    } catch (const Error& e) {
+      if (e.code() != ErrorCode::Unreachable) throw;
+      DiskMapOptions unguessed = o;
+      unguessed.flatteningGuess = false;
+      return mapAnnulus(points, triangles, whole, removed, unguessed);
+    }
   });
 }
 

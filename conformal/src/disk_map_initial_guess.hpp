@@ -1,0 +1,22 @@
+#pragma once
+// Internal: a starting conformal factor for the Euclidean disk map's flow (disk_map.cpp).
+#include <array>
+#include <vector>
+
+#include "confvis/base/vec3.hpp"
+#include "confvis/conformal/intrinsic_triangulation.hpp"
+#include "confvis/conformal/ricci_flow.hpp"
+
+namespace confvis::conformal::detail {
+
+// Adds to metric.u an estimate of the factor that flattens the annulus (the disk without face
+// `removed`) into a cylinder with straight boundaries, so that Newton starts near the answer:
+// -log|p - c| around the removed face's centroid c (log(z - c) is the planar annulus → cylinder
+// map) plus, for each outer-boundary corner of angle α far from π, the factor of z^(π/α),
+// (π/α - 1)·log|p - q|. Positions are the embedded `points`; `lengths` their edge lengths. The
+// guess is scaled down (1, ½, ¼, ⅛, then none) until every triangle is valid.
+void addFlatteningGuess(const IntrinsicTriangulation& annulus, const std::vector<Vec3d>& points,
+                        const std::vector<double>& lengths, const std::array<int, 3>& removed,
+                        CirclePackingMetric& metric);
+
+}  // namespace confvis::conformal::detail
