@@ -195,7 +195,9 @@ DiskMap mapAnnulus(const std::vector<Vec3d>& points,
   const RicciFlowOptions flowOptions = detail::diskMapFlowOptions(options);
   result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
   result.usedFlips = result.flow.flipsStartedAt >= 0;
-  const std::vector<double> lengths = metricEdgeLengths(tri, metric);
+  std::vector<double> lengths;
+  if (!detail::euclideanEdgeLengths(tri, metric, lengths))
+    throw Error(ErrorCode::Internal, "flat metric has an edge without a length");
 
   // Inner boundary = the removed face's corners.
   std::vector<char> inner(tri.vertexCount, 0);

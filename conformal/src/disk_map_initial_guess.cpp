@@ -61,22 +61,9 @@ std::vector<Cone> boundaryCones(const IntrinsicTriangulation& tri, const std::ve
   return cones;
 }
 
-// The flow's own validity test (every edge has a length, every face meets the triangle
-// inequality), for the Euclidean (4.1.2) l² = 2η·xᵢxⱼ + εᵢxᵢ² + εⱼxⱼ² with x = eᵘ: one
-// exponential per vertex rather than two per edge through edgeLength (2.9M → 0.4M instructions
-// for the two 20 cm cave5 maps).
 bool everyTriangleValid(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
                         std::vector<double>& scratch) {
-  std::vector<double> x(tri.vertexCount);
-  for (int v = 0; v < tri.vertexCount; ++v) x[v] = std::exp(metric.u[v]);
-  scratch.resize(tri.edgeCount());
-  for (int e = 0; e < tri.edgeCount(); ++e) {
-    const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
-    const double l2 = 2 * metric.eta[e] * x[a] * x[b] + metric.epsilon[a] * x[a] * x[a] +
-                      metric.epsilon[b] * x[b] * x[b];
-    if (!(l2 > 0) || !std::isfinite(l2)) return false;
-    scratch[e] = std::sqrt(l2);
-  }
+  if (!euclideanEdgeLengths(tri, metric, scratch)) return false;
   for (const auto& fe : tri.faceEdges) {
     const double a = scratch[fe[0]], b = scratch[fe[1]], c = scratch[fe[2]];
     if (!(a < b + c && b < a + c && c < a + b)) return false;
@@ -85,6 +72,21 @@ bool everyTriangleValid(const IntrinsicTriangulation& tri, const CirclePackingMe
 }
 
 }  // namespace
+
+bool euclideanEdgeLengths(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
+                          std::vector<double>& lengths) {
+  std::vector<double> x(tri.vertexCount);
+  for (int v = 0; v < tri.vertexCount; ++v) x[v] = std::exp(metric.u[v]);
+  lengths.resize(tri.edgeCount());
+  for (int e = 0; e < tri.edgeCount(); ++e) {
+    const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+    const double l2 = 2 * (metric.eta[e] * x[a] * x[b]) + metric.epsilon[a] * x[a] * x[a] +
+                      metric.epsilon[b] * x[b] * x[b];
+    if (!(l2 > 0) || !std::isfinite(l2)) return false;
+    lengths[e] = std::sqrt(l2);
+  }
+  return true;
+}
 
 void addFlatteningGuess(const IntrinsicTriangulation& annulus, const std::vector<Vec3d>& points,
                         const std::vector<double>& lengths, const std::array<int, 3>& removed,
