@@ -116,13 +116,21 @@ struct ShadeState {
 constexpr int kMaxCrossings = 16;
 
 // Per domain vertex, the codomain triangle holding its disk point: where the walk of a domain
-// triangle's first span starts (the previous span may lie far away in the codomain disk).
+// triangle's first span starts (the previous span may lie far away in the codomain disk). Each
+// vertex is located from a corner of the same domain triangle located before it: a short walk.
 std::vector<int> codomainTriangleOfVertices(const SphereDiskMesh& domain,
                                             const detail::DiskLocator& codomainDisk) {
   std::vector<int> triangles(domain.disk.size(), -1);
   int hint = -1;
-  for (std::size_t v = 0; v < triangles.size(); ++v)
-    triangles[v] = codomainDisk.locate(domain.disk[v], hint).triangle;
+  for (const auto& tri : domain.triangles) {
+    for (int v : tri)
+      if (triangles[v] >= 0) {
+        hint = triangles[v];
+        break;
+      }
+    for (int v : tri)
+      if (triangles[v] < 0) triangles[v] = codomainDisk.locate(domain.disk[v], hint).triangle;
+  }
   return triangles;
 }
 
