@@ -114,6 +114,8 @@ struct ShadeState {
 // A texel may cross this many codomain edges before the walk gives way to point location (a
 // texel on a vertex can bounce between the triangles around it).
 constexpr int kMaxCrossings = 16;
+// Texels left in a span from which a run inside one codomain triangle is stepped linearly.
+constexpr int kLinearRun = 4;
 
 // Per domain vertex, the codomain triangle holding its disk point: where the walk of a domain
 // triangle's first span starts (the previous span may lie far away in the codomain disk). Each
@@ -142,8 +144,9 @@ std::vector<int> codomainTriangleOfVertices(const SphereDiskMesh& domain,
 // the direction L0 s0 + L1 s1 + L2 s2 are linear maps of h (CodomainFrame). A texel outside the
 // previous texel's codomain triangle (some L < 0) steps to the neighbour across the edge
 // opposite the most negative L; point location only where that walk fails (outside the
-// codomain disk: clamped). Texels stay ~2 to a codomain triangle, so each texel evaluates its
-// frame afresh rather than setting up a linear run per triangle.
+// codomain disk: clamped). At 256 texels a face (cave5, 20 cm) texels stay ~2 to a codomain
+// triangle, so a texel evaluates its frame afresh; only where at least kLinearRun texels of the
+// span are left is the rest of the run inside one triangle stepped linearly.
 void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codomain,
                       const detail::DiskLocator& codomainDisk, int threads, CubeMap& out,
                       std::vector<std::uint8_t>& covered, Progress* progress) {
@@ -178,7 +181,26 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
     const int count = span.xEnd - span.xBegin + 1;
     // The codomain triangle of the texel before (-1: none, or clamped outside the disk).
     int current = state.spanStart >= 0 ? state.spanStart : state.hint;
-    for (int k = 0; k < count; ++k) {
+    // Texels k, k+1, ... while they stay in triangle f, with L and the direction linear in k:
+    // cheaper per texel than a fresh frame evaluation once the set-up is shared by a few
+    // texels (long spans at fine resolutions). Returns the first texel that left f.
+    auto shadeWhileInside = [&](int k, const CodomainFrame& f) {
+      const double l1Start = f.b1[0] * h0[0] + f.b1[1] * h0[1] + f.b1[2] * h0[2];
+      const double l1Step = f.b1[0] * dh[0] + f.b1[1] * dh[1] + f.b1[2] * dh[2];
+      const double l2Start = f.b2[0] * h0[0] + f.b2[1] * h0[1] + f.b2[2] * h0[2];
+      const double l2Step = f.b2[0] * dh[0] + f.b2[1] * dh[1] + f.b2[2] * dh[2];
+      const Vec3d start = h0[0] * f.dx + h0[1] * f.dy + h0[2] * f.dw;
+      const Vec3d step = dh[0] * f.dx + dh[1] * f.dy + dh[2] * f.dw;
+      for (; k < count; ++k) {
+        const double hw = h0[2] + k * dh[2];
+        const double l1 = l1Start + k * l1Step, l2 = l2Start + k * l2Step, l0 = hw - l1 - l2;
+        const double tolerance = -1e-12 * hw;
+        if (!(l0 >= tolerance && l1 >= tolerance && l2 >= tolerance)) break;
+        writeDirection(texels + 4 * k, start + k * step, f.corner, alpha);
+      }
+      return k;
+    };
+    for (int k = 0; k < count;) {
       const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
       const double tolerance = -1e-12 * hw;
       bool inside = false;
@@ -209,6 +231,8 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
         current = hit.inside ? hit.triangle : -1;
       }
       if (k == 0) state.spanStart = current;
+      ++k;
+      if (inside && count - k >= kLinearRun) k = shadeWhileInside(k, frames[current]);
     }
     if (current >= 0) state.hint = current;
     std::fill_n(&covered[detail::texelIndex(span.face, span.xBegin, span.y, n)], count, 1);
