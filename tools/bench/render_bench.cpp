@@ -119,6 +119,11 @@ int main(int argc, char** argv) {
   bool goalsOnly = false;
   app.add_flag("--goals-only", goalsOnly,
                "Only the goal figures (conformal/plain, % of raw); skip stereo and image-based");
+  std::string profileMode;
+  app.add_option("--profile", profileMode,
+                 "Only render `repeats` frames of one kind (plain, conformal or raw) after the "
+                 "warm-up, for a profiler (perf, callgrind); prints nothing else")
+      ->check(CLI::IsMember({"plain", "conformal", "raw"}));
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -157,6 +162,15 @@ int main(int argc, char** argv) {
                 config.name.c_str(), config.walls.size(), scene.name.c_str(),
                 scene.triangleCount(), mapName.c_str(), scale, repeats);
     backend.render(config, &map, conformal);  // warm-up: caches, TBB workers
+    if (!profileMode.empty()) {
+      if (profileMode == "conformal") backend.render(config, &map, conformal);  // builds tables
+      for (int i = 0; i < repeats; ++i) {
+        if (profileMode == "plain") backend.render(config, nullptr, plain);
+        if (profileMode == "conformal") backend.render(config, &map, conformal);
+        if (profileMode == "raw") bench::rawIntersectLoop(rawScene, config, scale);
+      }
+      return 0;
+    }
 
     RenderResult plainResult, conformalResult;
     double plainSeconds = 1e30, conformalSeconds = 1e30, rawSeconds = 1e30;
