@@ -134,12 +134,7 @@ int dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengt
 }
 
 int faceFarthestFromBoundary(const IntrinsicTriangulation& tri, const std::vector<double>& lengths) {
-  std::vector<int> boundary, parent;
-  std::vector<double> dist;
-  for (int v = 0; v < tri.vertexCount; ++v)
-    if (tri.vertexOnBoundary[v]) boundary.push_back(v);
-  dijkstra(tri, lengths, boundary, dist, parent, [](int) { return false; },
-           [](int) { return true; }, [](int) { return false; });
+  const std::vector<double> dist = distanceToBoundary(tri, lengths);
   int best = -1;
   double bestScore = 0;
   for (int f = 0; f < tri.faceCount(); ++f) {
@@ -312,11 +307,31 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   return euclideanDiskMap(points, triangles, whole, options);
 }
 
+std::vector<double> distanceToBoundary(const IntrinsicTriangulation& tri,
+                                       const std::vector<double>& edgeLengths) {
+  std::vector<int> boundary, parent;
+  std::vector<double> dist;
+  for (int v = 0; v < tri.vertexCount; ++v)
+    if (tri.vertexOnBoundary[v]) boundary.push_back(v);
+  dijkstra(tri, edgeLengths, boundary, dist, parent, [](int) { return false; },
+           [](int) { return true; }, [](int) { return false; });
+  return dist;
+}
+
 DiskMap computeDiskMap(const std::vector<Vec3d>& points,
                        const std::vector<std::array<int, 3>>& triangles,
                        const DiskMapOptions& options) {
-  const IntrinsicTriangulation whole =
-      buildTriangulation(static_cast<int>(points.size()), triangles);
+  return computeDiskMap(points, triangles,
+                        buildTriangulation(static_cast<int>(points.size()), triangles), options);
+}
+
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
+  if (whole.vertexCount != static_cast<int>(points.size()) ||
+      whole.faceCount() != static_cast<int>(triangles.size()))
+    throw Error(ErrorCode::InvalidInput,
+                "disk map: the triangulation does not match the points and triangles");
   requireDisk(whole, "mesh");
   if (options.geometry != Geometry::Euclidean) {  // the curved routes work on a TriMesh
     TriMesh mesh;

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <future>
 #include <limits>
-#include <queue>
 
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
@@ -38,32 +37,17 @@ SphereDiskMesh projectToSphere(const TemplateMesh& mesh, const glm::dvec3& refer
 // The face the Riemann map removes (dissertation 8.3.3: "at the center of the mesh, or farthest
 // from the original boundary"), among faces of at least a quarter of the median area: a tiny
 // bezel-corner face at the centre of a tiled wall would make the annulus extremely thin inside
-// and the flow crawl.
-int chooseRemovedFace(const SphereDiskMesh& mesh) {
-  const int n = static_cast<int>(mesh.sphere.size());
-  std::vector<std::vector<std::pair<int, double>>> neighbours(n);
+// and the flow crawl. Distances are arc lengths on the sphere along edges.
+int chooseRemovedFace(const SphereDiskMesh& mesh, const conformal::IntrinsicTriangulation& tri) {
+  std::vector<double> arc(tri.edgeCount());
+  for (int e = 0; e < tri.edgeCount(); ++e)
+    arc[e] = angleBetween(mesh.sphere[tri.edgeVertices[e][0]], mesh.sphere[tri.edgeVertices[e][1]]);
+  const std::vector<double> distance = conformal::distanceToBoundary(tri, arc);
   std::vector<double> area(mesh.triangles.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      const double length = angleBetween(mesh.sphere[a], mesh.sphere[b]);
-      neighbours[a].emplace_back(b, length);
-      neighbours[b].emplace_back(a, length);
-    }
     area[f] =
         norm(cross(mesh.sphere[t[1]] - mesh.sphere[t[0]], mesh.sphere[t[2]] - mesh.sphere[t[0]]));
-  }
-  std::vector<double> distance(n, std::numeric_limits<double>::infinity());
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  for (int v : mesh.boundary) queue.push({distance[v] = 0, v});
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[v]) continue;
-    for (const auto& [w, length] : neighbours[v])
-      if (d + length < distance[w]) queue.push({distance[w] = d + length, w});
   }
   std::vector<double> sorted = area;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
@@ -90,11 +74,13 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
   // iterations where Yamabe took 7 on the cut cube sources (tools/bench/display_map_bench.cpp).
   conformal::DiskMapOptions options;
   options.scheme = conformal::Scheme::InversiveDistance;
-  options.removedFace = chooseRemovedFace(mesh);
+  const conformal::IntrinsicTriangulation whole =
+      conformal::buildTriangulation(static_cast<int>(mesh.sphere.size()), mesh.triangles);
+  options.removedFace = chooseRemovedFace(mesh, whole);
   // Newton converges in under 10 iterations here; one that needs more is stuck on a mesh only
   // Delaunay flips can flatten (thin bezel strips), so give up early and retry with flips.
   options.maxIterations = 30;
-  result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, options);
+  result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
   result.seconds = secondsSince(start);
   progress.advance();
   return result;

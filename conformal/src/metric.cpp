@@ -173,21 +173,41 @@ void faceAngleJacobian(const IntrinsicTriangulation& tri, const MetricEvaluation
     }
 }
 
-double degenerationStep(const IntrinsicTriangulation& tri, const MetricEvaluation& start,
-                        const MetricEvaluation& trial) {
+double degenerationStep(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
+                        const std::vector<double>& uStart, const std::vector<double>& uTrial,
+                        const MetricEvaluation& start, const MetricEvaluation& trial) {
   if (trial.invalidEdge >= 0 || !start.valid()) return 0;
-  auto margin = [&](const MetricEvaluation& eval, int f) {
-    const auto& fe = tri.faceEdges[f];
-    const double a = eval.edges[fe[0]].length, b = eval.edges[fe[1]].length,
-                 c = eval.edges[fe[2]].length;
-    return std::min({b + c - a, c + a - b, a + b - c}) / (a + b + c);
+  // Relative triangle-inequality margin of face f at the point `alpha` of the way.
+  auto margin = [&](int f, double alpha) {
+    std::array<double, 3> l;
+    for (int c = 0; c < 3; ++c) {
+      const int e = tri.faceEdges[f][c];
+      const int a = tri.edgeVertices[e][0], b = tri.edgeVertices[e][1];
+      const EdgeLength el = edgeLength(
+          metric.geometry, uStart[a] + alpha * (uTrial[a] - uStart[a]),
+          uStart[b] + alpha * (uTrial[b] - uStart[b]), metric.eta[e], metric.epsilon[a],
+          metric.epsilon[b]);
+      if (!el.valid) return -1.0;
+      l[c] = el.length;
+    }
+    return std::min({l[1] + l[2] - l[0], l[2] + l[0] - l[1], l[0] + l[1] - l[2]}) /
+           (l[0] + l[1] + l[2]);
   };
   double step = 1;
   for (int f = 0; f < tri.faceCount(); ++f) {
-    const double after = margin(trial, f);
-    if (after > 0) continue;
-    const double before = margin(start, f);
-    step = std::min(step, before / (before - after));
+    const auto& fe = tri.faceEdges[f];
+    const double a = trial.edges[fe[0]].length, b = trial.edges[fe[1]].length,
+                 c = trial.edges[fe[2]].length;
+    if (b + c > a && c + a > b && a + b > c) continue;
+    // The margin is not linear in the step: bisect for where this face degenerates, within
+    // the part of the way no other face has been found to degenerate in.
+    if (margin(f, step) > 0) continue;
+    double lo = 0, hi = step;
+    for (int k = 0; k < 40 && hi - lo > 1e-4 * hi; ++k) {
+      const double mid = 0.5 * (lo + hi);
+      (margin(f, mid) > 0 ? lo : hi) = mid;
+    }
+    step = lo;
   }
   return step < 1 ? step : 0;
 }

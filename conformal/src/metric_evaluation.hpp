@@ -40,11 +40,14 @@ void refreshCurvature(const IntrinsicTriangulation& tri, MetricEvaluation& eval)
 void faceAngleJacobian(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int f,
                        std::array<std::array<double, 3>, 3>& J);
 
-// Where between `start` (valid) and `trial` (invalid: some triangle inequality fails) the first
-// triangle degenerates, as a fraction of the way, by linear interpolation of each face's
-// relative triangle-inequality margin; 0 if that cannot be estimated.
-double degenerationStep(const IntrinsicTriangulation& tri, const MetricEvaluation& start,
-                        const MetricEvaluation& trial);
+// Where on the way from the factors `uStart` (evaluated valid in `start`) to `uTrial` (evaluated
+// in `trial`: some triangle inequality fails) the first triangle degenerates, as a fraction of
+// the way, to 1e-4 relative: bisection of each failing face's triangle-inequality margin along
+// the way (its linear interpolation put the point at half the true one in the first Newton steps
+// at 100k, measured); 0 if that cannot be found (an edge without a length).
+double degenerationStep(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
+                        const std::vector<double>& uStart, const std::vector<double>& uTrial,
+                        const MetricEvaluation& start, const MetricEvaluation& trial);
 
 // J[a][b] of faceAngleJacobian alone (cheaper in Euclidean geometry).
 double faceAngleDerivative(const IntrinsicTriangulation& tri, const MetricEvaluation& eval, int f,

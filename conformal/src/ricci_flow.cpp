@@ -340,7 +340,7 @@ bool NewtonFlow::lineSearch(double& stepTaken) {
       // Go most of the way to where the first triangle degenerates (flips there may remove
       // it), rather than halving blindly.
       degenerated = true;
-      const double fraction = detail::degenerationStep(tri_, eval_, trial_);
+      const double fraction = detail::degenerationStep(tri_, metric_, u, uTrial_, eval_, trial_);
       if (fraction > 0.05) {
         alpha *= 0.9 * fraction;
         continue;

@@ -11,6 +11,7 @@
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/mesh_generators.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
+#include "../src/metric_evaluation.hpp"
 
 using namespace confvis::conformal;
 
@@ -129,6 +130,25 @@ TEST(CirclePacking, TangentialReproducesAnEquilateralMeshExactly) {
   const auto metric = initialMetric(tri, input, Scheme::Tangential, Geometry::Euclidean);
   const auto lengths = metricEdgeLengths(tri, metric);
   for (int e = 0; e < tri.edgeCount(); ++e) EXPECT_NEAR(lengths[e], input[e], 1e-12);
+}
+
+TEST(CirclePacking, DegenerationStepFindsWhereATriangleFlattens) {
+  // Yamabe (vertex scaling) on an equilateral triangle: with u₀ = u₁ = 0 the two edges at
+  // vertex 2 have length e^{u₂/2}, so the triangle flattens at u₂ = -2 ln 2. On the way to
+  // u₂ = -6 that is ln 4 / 6 ≈ 0.2310 of the way; interpolating the relative margin linearly
+  // between the ends would say 0.289.
+  const auto tri = buildTriangulation(3, {{0, 1, 2}});
+  const auto metric =
+      initialMetric(tri, {1.0, 1.0, 1.0}, Scheme::Yamabe, Geometry::Euclidean);
+  const std::vector<double> start(3, 0.0), trial{0.0, 0.0, -6.0};
+  detail::MetricEvaluation atStart, atTrial;
+  detail::evaluateMetric(tri, metric, start, atStart);
+  detail::evaluateMetric(tri, metric, trial, atTrial);
+  ASSERT_TRUE(atStart.valid());
+  ASSERT_FALSE(atTrial.valid());
+  const double step = detail::degenerationStep(tri, metric, start, trial, atStart, atTrial);
+  EXPECT_NEAR(step, std::log(4.0) / 6, 1e-4);
+  EXPECT_LE(step, std::log(4.0) / 6);  // never past the degeneration point
 }
 
 TEST(CirclePacking, ParsesNamesAndRejectsUnknownOnes) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -200,3 +201,34 @@ TEST(Mobius, AlignsMarkersAndKeepsTheDisk) {
 }
 
 }  // namespace
+
+// Distances along edges of a unit square grid (each square split by a diagonal) to its boundary:
+// straight to the nearest side, min(i, j, n - i, n - j) steps (a diagonal, sqrt 2, only moves
+// one step closer to at most two sides at once, never to the nearest one faster).
+TEST(DiskMap, DistanceToBoundaryOnASquareGridAndAPrebuiltTriangulation) {
+  const int n = 8;
+  std::vector<Vec3d> points;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) points.push_back({double(i), double(j), 0.0});
+  std::vector<std::array<int, 3>> triangles;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      triangles.push_back({a, b, d});
+      triangles.push_back({a, d, c});
+    }
+  const IntrinsicTriangulation tri = buildTriangulation(static_cast<int>(points.size()), triangles);
+  const std::vector<double> distance = distanceToBoundary(tri, embeddedEdgeLengths(tri, points));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      EXPECT_EQ(distance[j * (n + 1) + i], std::min({i, j, n - i, n - j})) << i << "," << j;
+
+  // The prebuilt triangulation gives the same map bit for bit; one of another mesh is refused.
+  const DiskMap own = computeDiskMap(points, triangles);
+  const DiskMap prebuilt = computeDiskMap(points, triangles, tri);
+  ASSERT_EQ(own.uv.size(), prebuilt.uv.size());
+  for (std::size_t v = 0; v < own.uv.size(); ++v) ASSERT_EQ(own.uv[v], prebuilt.uv[v]);
+  const std::vector<std::array<int, 3>> fewer(triangles.begin(), triangles.end() - 2);
+  const IntrinsicTriangulation other = buildTriangulation(static_cast<int>(points.size()), fewer);
+  EXPECT_THROW(computeDiskMap(points, triangles, other), Error);
+}

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "confvis/base/vec3.hpp"
+#include "confvis/conformal/intrinsic_triangulation.hpp"
 #include "confvis/conformal/mesh.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
 
@@ -57,6 +58,17 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options = {});
 DiskMap computeDiskMap(const std::vector<Vec3d>& points,
                        const std::vector<std::array<int, 3>>& triangles,
                        const DiskMapOptions& options = {});
+
+// The same on `whole` = buildTriangulation(points.size(), triangles), for a caller that needs
+// the triangulation before the map (to choose the removed face on it).
+DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const IntrinsicTriangulation& whole, const DiskMapOptions& options = {});
+
+// Per vertex, the shortest distance along edges (edgeLengths in tri's edge order) to the
+// boundary: the Euclidean route removes a face farthest from the boundary by it.
+std::vector<double> distanceToBoundary(const IntrinsicTriangulation& tri,
+                                       const std::vector<double>& edgeLengths);
 
 // Applies a Möbius alignment sending boundary vertices a, b, c to 1, i, -1.
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c);
