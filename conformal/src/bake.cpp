@@ -98,90 +98,93 @@ std::vector<CodomainFrame> codomainFrames(const SphereDiskMesh& codomain,
   return frames;
 }
 
-// -1 if h lies in the frame's triangle (tolerant on its edges), else the corner whose
-// coordinate is most negative: the edge crossed is the one opposite it.
-inline int outsideCorner(const CodomainFrame& f, double hx, double hy, double hw) {
-  const double tolerance = -1e-12 * hw;
-  const double l1 = f.b1[0] * hx + f.b1[1] * hy + f.b1[2] * hw;
-  const double l2 = f.b2[0] * hx + f.b2[1] * hy + f.b2[2] * hw;
-  const double l0 = hw - l1 - l2;
-  if (l0 >= tolerance && l1 >= tolerance && l2 >= tolerance) return -1;
-  return l0 <= l1 && l0 <= l2 ? 0 : l1 <= l2 ? 1 : 2;
-}
-
 // Per raster task: the codomain triangle of the last texel shaded (`hint`, for point location)
 // and that of the first texel of the last span, the best start for the next span (the next row
-// of the same domain triangle); -1: none.
+// of the same domain triangle); -1: none. `triangle` is the domain triangle whose disk corners
+// (`zx`, `zy`) and per-texel step of the homogeneous disk point (`dh`) are cached: a triangle's
+// spans come row after row.
 struct ShadeState {
   int hint = -1;
   int spanStart = -1;
+  int triangle = -1;
+  double zx[3] = {}, zy[3] = {};
+  double dh[3] = {};
 };
+
+// A texel may cross this many codomain edges before the walk gives way to point location (a
+// texel on a vertex can bounce between the triangles around it).
+constexpr int kMaxCrossings = 16;
+// Texels left in a span from which a run inside one codomain triangle is stepped linearly.
+constexpr int kLinearRun = 4;
+
+// Per domain vertex, the codomain triangle holding its disk point: where the walk of a domain
+// triangle's first span starts (the previous span may lie far away in the codomain disk). Each
+// vertex is located from a corner of the same domain triangle located before it: a short walk.
+std::vector<int> codomainTriangleOfVertices(const SphereDiskMesh& domain,
+                                            const detail::DiskLocator& codomainDisk) {
+  std::vector<int> triangles(domain.disk.size(), -1);
+  int hint = -1;
+  for (const auto& tri : domain.triangles) {
+    for (int v : tri)
+      if (triangles[v] >= 0) {
+        hint = triangles[v];
+        break;
+      }
+    for (int v : tri)
+      if (triangles[v] < 0) triangles[v] = codomainDisk.locate(domain.disk[v], hint).triangle;
+  }
+  return triangles;
+}
 
 // One direction map: rasterise `domain` on the sphere, carry each texel through the disks into
 // `codomain`. alpha from the domain triangle's lit flag; `covered` marks every rasterised texel.
 //
-// Along a span of texels in one domain triangle the homogeneous disk point (sum w_i z_i, sum w_i)
-// is linear in x, and so are the homogeneous barycentric coordinates L in a fixed codomain
-// triangle: while a texel stays in the previous texel's codomain triangle (all L >= 0), its
-// direction is L0 s0 + L1 s1 + L2 s2 normalised, with no point location at all.
+// Along a span of texels in one domain triangle the homogeneous disk point h = (sum w_i z_i,
+// sum w_i) is linear in x. In a codomain triangle its homogeneous barycentric coordinates L and
+// the direction L0 s0 + L1 s1 + L2 s2 are linear maps of h (CodomainFrame). A texel outside the
+// previous texel's codomain triangle (some L < 0) steps to the neighbour across the edge
+// opposite the most negative L; point location only where that walk fails (outside the
+// codomain disk: clamped). At 256 texels a face (cave5, 20 cm) texels stay ~2 to a codomain
+// triangle, so a texel evaluates its frame afresh; only where at least kLinearRun texels of the
+// span are left is the rest of the run inside one triangle stepped linearly.
 void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codomain,
                       const detail::DiskLocator& codomainDisk, int threads, CubeMap& out,
                       std::vector<std::uint8_t>& covered, Progress* progress) {
   const int n = out.faceSize;
   covered.assign(6 * static_cast<std::size_t>(n) * n, 0);
   const std::vector<CodomainFrame> frames = codomainFrames(codomain, codomainDisk);
+  const std::vector<int> vertexHints = codomainTriangleOfVertices(domain, codomainDisk);
   const std::function<void()> onTaskDone = [progress] {
     if (progress) progress->advance();
   };
   auto shadeSpan = [&](const detail::RasterSpan& span, ShadeState& state) {
     const auto& tri = domain.triangles[span.triangle];
-    const std::complex<double> z0 = domain.disk[tri[0]], z1 = domain.disk[tri[1]],
-                               z2 = domain.disk[tri[2]];
-    auto homogeneous = [&](const std::array<double, 3>& w) {
-      return std::array<double, 3>{w[0] * z0.real() + w[1] * z1.real() + w[2] * z2.real(),
-                                   w[0] * z0.imag() + w[1] * z1.imag() + w[2] * z2.imag(),
-                                   w[0] + w[1] + w[2]};
-    };
-    const std::array<double, 3> h0 = homogeneous(span.w), dh = homogeneous(span.step);
+    if (state.triangle != span.triangle) {
+      state.triangle = span.triangle;
+      for (int i = 0; i < 3; ++i) {
+        state.zx[i] = domain.disk[tri[i]].real();
+        state.zy[i] = domain.disk[tri[i]].imag();
+      }
+      const std::array<double, 3>& s = span.step;
+      state.dh[0] = s[0] * state.zx[0] + s[1] * state.zx[1] + s[2] * state.zx[2];
+      state.dh[1] = s[0] * state.zy[0] + s[1] * state.zy[1] + s[2] * state.zy[2];
+      state.dh[2] = s[0] + s[1] + s[2];
+      state.spanStart = vertexHints[tri[0]];
+    }
+    const std::array<double, 3>& w = span.w;
+    const double h0[3] = {w[0] * state.zx[0] + w[1] * state.zx[1] + w[2] * state.zx[2],
+                          w[0] * state.zy[0] + w[1] * state.zy[1] + w[2] * state.zy[2],
+                          w[0] + w[1] + w[2]};
+    const double* const dh = state.dh;
     const float alpha = domain.lit.empty() || domain.lit[span.triangle] ? 1.0f : 0.0f;
     float* const texels = out.face(span.face).at(span.xBegin, span.y);
     const int count = span.xEnd - span.xBegin + 1;
     // The codomain triangle of the texel before (-1: none, or clamped outside the disk).
     int current = state.spanStart >= 0 ? state.spanStart : state.hint;
-    // Texel k when it may have left f: the neighbour across the crossed edge, else a point
-    // location.
-    auto shadeAnyway = [&](int k) {
-      const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
-      bool inside = false;
-      if (current >= 0) {
-        const int crossed = outsideCorner(frames[current], hx, hy, hw);
-        inside = crossed < 0;
-        const int next = inside ? -1 : codomainDisk.neighbour(current, crossed);
-        if (next >= 0 && codomainDisk.affine(next).valid) {
-          current = next;
-          inside = outsideCorner(frames[current], hx, hy, hw) < 0;
-          if (inside) state.hint = next;
-        }
-      }
-      if (inside) {
-        const CodomainFrame& f = frames[current];
-        writeDirection(texels + 4 * k, hx * f.dx + hy * f.dy + hw * f.dw, f.corner, alpha);
-        return;
-      }
-      const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, state.hint);
-      const auto& image = codomain.triangles[hit.triangle];
-      const std::array<double, 3>& l = hit.barycentric;
-      const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
-                        l[2] * codomain.sphere[image[2]];
-      writeDirection(texels + 4 * k, sum, codomain.sphere[image[0]], alpha);
-      // Outside: clamped, not linear in x.
-      current = hit.inside ? hit.triangle : -1;
-      state.hint = hit.triangle;
-    };
-    // Texels k, k+1, ... while they stay in triangle `current`: there the barycentric
-    // coordinates and the direction are linear in k. Returns the first texel that left it.
-    auto shadeWhileInside = [&](int k) {
-      const CodomainFrame& f = frames[current];
+    // Texels k, k+1, ... while they stay in triangle f, with L and the direction linear in k:
+    // cheaper per texel than a fresh frame evaluation once the set-up is shared by a few
+    // texels (long spans at fine resolutions). Returns the first texel that left f.
+    auto shadeWhileInside = [&](int k, const CodomainFrame& f) {
       const double l1Start = f.b1[0] * h0[0] + f.b1[1] * h0[1] + f.b1[2] * h0[2];
       const double l1Step = f.b1[0] * dh[0] + f.b1[1] * dh[1] + f.b1[2] * dh[2];
       const double l2Start = f.b2[0] * h0[0] + f.b2[1] * h0[1] + f.b2[2] * h0[2];
@@ -197,11 +200,39 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
       }
       return k;
     };
-    shadeAnyway(0);
-    state.spanStart = current;
-    for (int k = 1; k < count;) {
-      if (current >= 0) k = shadeWhileInside(k);
-      if (k < count) shadeAnyway(k++);
+    for (int k = 0; k < count;) {
+      const double hx = h0[0] + k * dh[0], hy = h0[1] + k * dh[1], hw = h0[2] + k * dh[2];
+      const double tolerance = -1e-12 * hw;
+      bool inside = false;
+      for (int crossings = 0; current >= 0 && crossings <= kMaxCrossings; ++crossings) {
+        const CodomainFrame& f = frames[current];
+        const double l1 = f.b1[0] * hx + f.b1[1] * hy + f.b1[2] * hw;
+        const double l2 = f.b2[0] * hx + f.b2[1] * hy + f.b2[2] * hw;
+        const double l0 = hw - l1 - l2;
+        if (l0 >= tolerance && l1 >= tolerance && l2 >= tolerance) {
+          writeDirection(texels + 4 * k, hx * f.dx + hy * f.dy + hw * f.dw, f.corner, alpha);
+          inside = true;
+          break;
+        }
+        // Across the edge opposite the most negative coordinate.
+        const int next = codomainDisk.neighbour(current, l0 <= l1 && l0 <= l2 ? 0 : l1 <= l2 ? 1 : 2);
+        if (next < 0 || !codomainDisk.affine(next).valid) break;
+        current = next;
+      }
+      if (!inside) {
+        if (current >= 0) state.hint = current;
+        const detail::DiskLocator::Hit hit = codomainDisk.locate({hx / hw, hy / hw}, state.hint);
+        const auto& image = codomain.triangles[hit.triangle];
+        const std::array<double, 3>& l = hit.barycentric;
+        const Vec3d sum = l[0] * codomain.sphere[image[0]] + l[1] * codomain.sphere[image[1]] +
+                          l[2] * codomain.sphere[image[2]];
+        writeDirection(texels + 4 * k, sum, codomain.sphere[image[0]], alpha);
+        // Outside: clamped, no walk from there.
+        current = hit.inside ? hit.triangle : -1;
+      }
+      if (k == 0) state.spanStart = current;
+      ++k;
+      if (inside && count - k >= kLinearRun) k = shadeWhileInside(k, frames[current]);
     }
     if (current >= 0) state.hint = current;
     std::fill_n(&covered[detail::texelIndex(span.face, span.xBegin, span.y, n)], count, 1);

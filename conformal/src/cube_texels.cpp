@@ -76,20 +76,29 @@ void extendPastBoundary(CubeMap& map, const std::vector<std::uint8_t>& covered) 
   std::vector<std::uint16_t> ringOf(covered.size(), kUnfilled);
   auto ringAt = [&](const TexelRef& t) -> std::uint16_t& { return ringOf[texelIndex(t.face, t.x, t.y, n)]; };
   std::vector<TexelRef> frontier, next;
+  for (std::size_t i = 0; i < covered.size(); ++i)
+    if (covered[i]) ringOf[i] = 0;
+  // Ring 1: uncovered texels next to a covered one (face by face, row by row). Inside a face
+  // the neighbours are the texels beside, above and below; only texels on the face's rim need
+  // the step across the edge.
   for (CubeFace face : kCubeFaces)
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x)
-        if (covered[texelIndex(face, x, y, n)]) ringOf[texelIndex(face, x, y, n)] = 0;
-  for (CubeFace face : kCubeFaces)
-    for (int y = 0; y < n; ++y)
+    for (int y = 0; y < n; ++y) {
+      const std::size_t row = texelIndex(face, 0, y, n);
+      const bool rimRow = y == 0 || y == n - 1;
       for (int x = 0; x < n; ++x) {
-        if (ringOf[texelIndex(face, x, y, n)] == 0) continue;
-        for (const auto& step : kNeighbourSteps)
-          if (ringAt(neighbourTexel(face, x, y, step[0], step[1], n)) == 0) {
-            frontier.push_back({face, x, y});
-            break;
-          }
+        const std::size_t i = row + x;
+        if (ringOf[i] == 0) continue;
+        bool nextToCovered = false;
+        if (!rimRow && x > 0 && x < n - 1) {
+          nextToCovered = ringOf[i - 1] == 0 || ringOf[i + 1] == 0 || ringOf[i - n] == 0 ||
+                          ringOf[i + n] == 0;
+        } else {
+          for (const auto& step : kNeighbourSteps)
+            nextToCovered |= ringAt(neighbourTexel(face, x, y, step[0], step[1], n)) == 0;
+        }
+        if (nextToCovered) frontier.push_back({face, x, y});
       }
+    }
   for (const TexelRef& t : frontier) ringAt(t) = 1;
 
   // The extrapolated rings: each value reads only earlier rings, so order within a ring does

@@ -78,25 +78,34 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
     for (const RasterBinEntry& entry : bins[task]) {
       const Edges& tri = edges[entry.triangle];
       if (tri.sign == 0) continue;
+      const int yBegin = std::max(entry.y0, bandY0), yEnd = std::min(entry.y1, bandY1);
       RasterSpan span{face, 0, 0, 0, entry.triangle, {}, {}};
-      // Change of each triple product per texel along x.
-      for (int i = 0; i < 3; ++i) span.step[i] = tri.sign * dot(frame.right, tri.e[i]) * (2.0 / n);
-      for (int y = std::max(entry.y0, bandY0); y <= std::min(entry.y1, bandY1); ++y) {
-        const Vec3d rowStart = frame.normal + texelCoordinate(y, n) * frame.down +
+      // Each triple product is linear in the texel: w at (entry.x0, y) changes by `step` per
+      // texel along x and by `rowStep` per row.
+      const Vec3d entryStart = frame.normal + texelCoordinate(yBegin, n) * frame.down +
                                texelCoordinate(entry.x0, n) * frame.right;
-        std::array<double, 3> w0;
-        for (int i = 0; i < 3; ++i) w0[i] = tri.sign * dot(rowStart, tri.e[i]);
+      std::array<double, 3> w0, rowStep;
+      for (int i = 0; i < 3; ++i) {
+        const Vec3d e = tri.sign * tri.e[i];
+        span.step[i] = dot(frame.right, e) * (2.0 / n);
+        rowStep[i] = dot(frame.down, e) * (2.0 / n);
+        w0[i] = dot(entryStart, e);
+      }
+      const int kMax = entry.x1 - entry.x0;
+      for (int y = yBegin; y <= yEnd; ++y) {
+        if (y > yBegin)
+          for (int i = 0; i < 3; ++i) w0[i] += rowStep[i];
         // The exact test of texel entry.x0 + k (tolerant on the edges, so that a texel on an
-        // edge shared by two triangles is found by at least one despite rounding).
+        // edge shared by two triangles is found by at least one despite rounding): all three
+        // at least -1e-12 of their sum, the sum positive.
         auto inside = [&](int k) {
           const double a = w0[0] + k * span.step[0], b = w0[1] + k * span.step[1],
                        c = w0[2] + k * span.step[2];
-          const double tolerance = -1e-12 * (std::abs(a) + std::abs(b) + std::abs(c));
-          return a >= tolerance && b >= tolerance && c >= tolerance && a + b + c > 0;
+          const double sum = a + b + c;
+          return std::min(a, std::min(b, c)) >= -1e-12 * sum && sum > 0;
         };
         // The triangle is convex, so its texels in this row are one span: solve each edge's
         // linear inequality for k, then settle the ends with the exact test.
-        const int kMax = entry.x1 - entry.x0;
         double lo = 0, hi = kMax;
         for (int i = 0; i < 3; ++i) {
           if (span.step[i] > 0) lo = std::max(lo, -w0[i] / span.step[i]);
@@ -105,21 +114,20 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
             lo = kMax + 2.0;  // parallel to the row and outside it
         }
         if (!(lo <= hi + 1.0)) continue;  // more than a texel away from any texel centre
-        int first = std::clamp(static_cast<int>(std::floor(lo)), 0, kMax);
-        const int lastCandidate = std::clamp(static_cast<int>(std::ceil(hi)) + 1, 0, kMax);
+        // lo >= 0 and hi <= kMax here: truncation is floor for lo; hi + 1 > 0.
+        int first = std::min(static_cast<int>(lo), kMax);
+        const int lastCandidate = std::min(static_cast<int>(hi + 1.0) + 1, kMax);
         while (first <= lastCandidate && !inside(first)) ++first;
         if (first > lastCandidate) continue;
         while (first > 0 && inside(first - 1)) --first;
-        int last = std::clamp(static_cast<int>(std::ceil(hi)), first, kMax);
+        int last = std::max(std::min(static_cast<int>(hi + 1.0), kMax), first);
         while (last > first && !inside(last)) --last;
         while (last < kMax && inside(last + 1)) ++last;
         std::array<double, 3> wFirst;
         for (int i = 0; i < 3; ++i) wFirst[i] = w0[i] + first * span.step[i];
-        first += entry.x0;
-        last += entry.x0;
         span.y = y;
-        span.xBegin = first;
-        span.xEnd = last;
+        span.xBegin = first + entry.x0;
+        span.xEnd = last + entry.x0;
         span.w = wFirst;
         shadeSpan(span, state);
       }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 
 #include "bake_test_support.hpp"
@@ -192,6 +193,63 @@ TEST(Bake, UnlitTrianglesAreCoveredButTransparent) {
         unlit += !lit;
       }
   EXPECT_GT(unlit, 500);
+}
+
+// T_ray at physical direction d by brute force: d's barycentric coordinates in the chord
+// triangle of `target` holding it give the disk point z; z's barycentric coordinates in the
+// `source` disk triangle holding it give the virtual direction. nullopt where d is not covered
+// or z lies near the disks' rims (|z| > 0.95: where the source and target rim polygons differ,
+// the bake clamps).
+std::optional<Vec3d> bruteForceRay(const SphereDiskMesh& target, const SphereDiskMesh& source,
+                                   const Vec3d& d) {
+  const int t = test::containingTriangle(target, d);
+  if (t < 0) return std::nullopt;
+  const auto& tri = target.triangles[t];
+  const Vec3d &a = target.sphere[tri[0]], &b = target.sphere[tri[1]], &c = target.sphere[tri[2]];
+  const double w[3] = {dot(d, cross(b, c)), dot(d, cross(c, a)), dot(d, cross(a, b))};
+  const double sum = w[0] + w[1] + w[2];
+  const std::complex<double> z =
+      (w[0] * target.disk[tri[0]] + w[1] * target.disk[tri[1]] + w[2] * target.disk[tri[2]]) / sum;
+  if (std::abs(z) > 0.95) return std::nullopt;
+  for (const auto& s : source.triangles) {
+    const std::complex<double> p0 = source.disk[s[0]], e1 = source.disk[s[1]] - p0,
+                               e2 = source.disk[s[2]] - p0, q = z - p0;
+    const double det = e1.real() * e2.imag() - e1.imag() * e2.real();
+    const double l1 = (q.real() * e2.imag() - q.imag() * e2.real()) / det;
+    const double l2 = (e1.real() * q.imag() - e1.imag() * q.real()) / det;
+    if (std::min({1 - l1 - l2, l1, l2}) < -1e-12) continue;
+    return normalized((1 - l1 - l2) * source.sphere[s[0]] + l1 * source.sphere[s[1]] +
+                      l2 * source.sphere[s[2]]);
+  }
+  return std::nullopt;
+}
+
+TEST(Bake, WalkAcrossManySourceTrianglesPerTexelMatchesBruteForce) {
+  // A coarse target over a fine source of the same cap: between two neighbouring texels the
+  // disk point crosses many source triangles (at 4 texels a face more than the walk's 16
+  // crossings, so point location takes over). Every texel must equal T_ray by brute force.
+  const SphereDiskMesh source = makeCapMesh(64, 0.7 * kPi);
+  const SphereDiskMesh target = makeCapMesh(6, 0.7 * kPi);
+  for (const int n : {4, 16}) {
+    const RetargetMap map = bakeRetargetMap(DisplayMap{source, target}, n);
+    int checked = 0;
+    for (CubeFace face : kCubeFaces)
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          const Vec3d d = normalized(texelDirection(face, x, y, n));
+          // Texels within 1e-9 of a target edge may go either way.
+          if ((test::containingTriangle(target, d) >= 0) !=
+              (test::containingTriangle(target, d, 1e-9) >= 0))
+            continue;
+          const std::optional<Vec3d> expected = bruteForceRay(target, source, d);
+          if (!expected) continue;
+          ASSERT_EQ(texelAlpha(map.ray, face, x, y), 1.0f) << toString(face) << " " << x << "," << y;
+          EXPECT_LT(angleBetween(texelValue(map.ray, face, x, y), *expected), 1e-6)
+              << n << " " << toString(face) << " " << x << "," << y;
+          ++checked;
+        }
+    EXPECT_GT(checked, 0.5 * 6 * n * n);
+  }
 }
 
 TEST(Bake, ThreadCountDoesNotChangeTheResult) {

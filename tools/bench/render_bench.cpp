@@ -119,6 +119,14 @@ int main(int argc, char** argv) {
   bool goalsOnly = false;
   app.add_flag("--goals-only", goalsOnly,
                "Only the goal figures (conformal/plain, % of raw); skip stereo and image-based");
+  std::string profileMode;
+  app.add_option("--profile", profileMode,
+                 "Only render `repeats` frames of one kind (plain, conformal or raw) after the "
+                 "warm-up, for a profiler (perf, callgrind); prints nothing else")
+      ->check(CLI::IsMember({"plain", "conformal", "raw"}));
+  EmbreeOptions embreeOptions;
+  app.add_flag("--baseline-shading", embreeOptions.baselineShading,
+               "The baseline (SSE2) shading code even where the CPU has AVX2");
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -140,7 +148,7 @@ int main(int argc, char** argv) {
     sceneOptions.subdivision = subdivision;
     const Scene scene =
         subdivision > 0 ? builtinScene(sceneName, sceneOptions) : sceneByNameOrFile(sceneName);
-    EmbreeBackend backend;
+    EmbreeBackend backend(embreeOptions);
     backend.setScene(scene);
     EmbreeDevice rawDevice;
     const EmbreeScene rawScene(rawDevice, scene);
@@ -152,11 +160,21 @@ int main(int argc, char** argv) {
     RenderSettings conformal = plain;
     conformal.mode = RenderMode::Conformal;
 
+    const RenderResult warmUp = backend.render(config, &map, conformal);  // caches, TBB workers
     std::printf("display %s (%zu walls), scene %s (%zu triangles), map: %s, scale %.3g, %d "
-                "repeats (best)\n",
+                "repeats (best), shading %s\n",
                 config.name.c_str(), config.walls.size(), scene.name.c_str(),
-                scene.triangleCount(), mapName.c_str(), scale, repeats);
-    backend.render(config, &map, conformal);  // warm-up: caches, TBB workers
+                scene.triangleCount(), mapName.c_str(), scale, repeats,
+                warmUp.stats["shading_simd"].get<std::string>().c_str());
+    if (!profileMode.empty()) {
+      if (profileMode == "conformal") backend.render(config, &map, conformal);  // builds tables
+      for (int i = 0; i < repeats; ++i) {
+        if (profileMode == "plain") backend.render(config, nullptr, plain);
+        if (profileMode == "conformal") backend.render(config, &map, conformal);
+        if (profileMode == "raw") bench::rawIntersectLoop(rawScene, config, scale);
+      }
+      return 0;
+    }
 
     RenderResult plainResult, conformalResult;
     double plainSeconds = 1e30, conformalSeconds = 1e30, rawSeconds = 1e30;

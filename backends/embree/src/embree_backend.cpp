@@ -85,6 +85,8 @@ struct EmbreeBackend::Impl {
   };
 
   EmbreeOptions options;
+  embree::SimdLevel simd =
+      options.baselineShading ? embree::SimdLevel::Sse2 : embree::detectedSimdLevel();
   EmbreeDevice device;
   std::unique_ptr<EmbreeScene> scene;
   std::map<std::uint64_t, std::unique_ptr<WallMapGrid>> grids;
@@ -133,6 +135,7 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
   job.tileSize = impl_->options.tileSize;
   job.shading.ambientOcclusion = settings.ambientOcclusion;
   job.shading.occlusionSamples = impl_->options.ambientOcclusionSamples;
+  job.shading.simd = impl_->simd;
   const double distance = impl_->options.ambientOcclusionDistance > 0.0
                               ? impl_->options.ambientOcclusionDistance
                               : 0.05 * scene.diagonal();
@@ -208,6 +211,7 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
                   {"camera_rays", cameraRays},
                   {"occlusion_rays", occlusionRays},
                   {"retraced_rays", counters.retraced.load()},
+                  {"shading_simd", embree::simdName(impl_->simd)},
                   {"rays_per_second",
                    seconds > 0.0 ? static_cast<double>(cameraRays + occlusionRays) / seconds : 0.0},
                   {"images", perImage}};

@@ -38,18 +38,7 @@ void attachMesh(EmbreeDevice& device, RTCScene scene, const Mesh& mesh, unsigned
 
 EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(scene) {
   validateScene(source_);
-  for (const Mesh& mesh : source_.meshes) {
-    ShadingMesh& flat = shadingMeshes_.emplace_back();
-    flat.triangles = mesh.triangles.data();
-    if (!mesh.normals.empty()) flat.normals = mesh.normals.data();
-    if (mesh.material < 0) continue;
-    const Material& material = source_.materials[static_cast<std::size_t>(mesh.material)];
-    flat.factor = material.baseColorFactor;
-    if (material.baseColorTexture >= 0 && !mesh.uvs.empty()) {
-      flat.uvs = mesh.uvs.data();
-      flat.texture = &source_.textures[static_cast<std::size_t>(material.baseColorTexture)];
-    }
-  }
+  buildShadingRecords();
   const auto start = std::chrono::steady_clock::now();
   scene_ = rtcNewScene(device.handle());
   try {
@@ -75,5 +64,40 @@ EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(sce
 }
 
 EmbreeScene::~EmbreeScene() { rtcReleaseScene(scene_); }
+
+void EmbreeScene::buildShadingRecords() {
+  std::size_t triangles = 1;  // record 0: no hit
+  for (const Mesh& mesh : source_.meshes) triangles += mesh.triangles.size();
+  if (triangles > UINT32_MAX)
+    throw Error(ErrorCode::InvalidInput, "scene '" + source_.name + "' has " +
+                                             std::to_string(triangles - 1) +
+                                             " triangles; the Embree backend takes at most 2^32 - 2");
+  shadingTriangles_.assign(triangles, ShadingTriangle{});
+  shadingMaterials_.assign(1, ShadingMaterial{});
+  firstShadingTriangle_.clear();
+  std::uint32_t next = 1;
+  for (const Mesh& mesh : source_.meshes) {
+    ShadingMaterial& material = shadingMaterials_.emplace_back();
+    material.factor = glm::vec4(1.0f);
+    if (mesh.material >= 0) {
+      const Material& source = source_.materials[static_cast<std::size_t>(mesh.material)];
+      material.factor = source.baseColorFactor;
+      if (source.baseColorTexture >= 0 && !mesh.uvs.empty())
+        material.texture = &source_.textures[static_cast<std::size_t>(source.baseColorTexture)];
+    }
+    const auto materialIndex = static_cast<std::uint32_t>(shadingMaterials_.size() - 1);
+    firstShadingTriangle_.push_back(next);
+    for (const glm::uvec3& corners : mesh.triangles) {
+      ShadingTriangle& record = shadingTriangles_[next++];
+      record.material = materialIndex;
+      for (int k = 0; k < 3; ++k) {
+        if (!mesh.normals.empty())
+          for (int i = 0; i < 3; ++i) record.normals[3 * k + i] = mesh.normals[corners[k]][i];
+        if (material.texture)
+          for (int i = 0; i < 2; ++i) record.uvs[2 * k + i] = mesh.uvs[corners[k]][i];
+      }
+    }
+  }
+}
 
 }  // namespace confvis

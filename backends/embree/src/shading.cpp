@@ -5,7 +5,6 @@
 #include <glm/gtc/constants.hpp>
 
 #include "sampling.hpp"
-#include "surface_packet.hpp"
 
 namespace confvis::embree {
 
@@ -29,33 +28,11 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
                           const ShadingOptions& options,
                           const std::array<std::uint32_t, kPacketSize>& seeds,
                           PacketColours& colours) {
-  // The surface per lane (gathers, then vectorised arithmetic), then the headlight over all 8
-  // lanes without branches; lanes without a hit carry zeros through and come out black.
-  const RTCRayHit8& r = hits.rayhit;
-  SurfacePacket surface;
-  surfaceAt(scene, hits, surface);
+  // The surface per lane lit by the headlight (surface_shading.cpp), then ambient occlusion.
+  SurfaceNormals surface;
+  shadeSurface(options.simd, scene, hits, colours, surface);
   const auto &nx = surface.nx, &ny = surface.ny, &nz = surface.nz;
-  alignas(32) std::array<float, kPacketSize> towardsViewer;  // -1 or 1 / |n|, see below
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    const float dx = r.ray.dir_x[lane], dy = r.ray.dir_y[lane], dz = r.ray.dir_z[lane];
-    const float lengthSquared = nx[lane] * nx[lane] + ny[lane] * ny[lane] + nz[lane] * nz[lane];
-    const float facing = nx[lane] * dx + ny[lane] * dy + nz[lane] * dz;
-    // 1 / |n|, 0 for a zero normal (a missed lane); computed unconditionally so that the loop
-    // vectorises (the compiler may not speculate a division by zero).
-    const bool nonzero = lengthSquared > 0.0f;
-    const float root = std::sqrt(nonzero ? lengthSquared : 1.0f);
-    const float inverse = 1.0f / root;
-    const float inverseLength = nonzero ? inverse : 0.0f;
-    // Two-sided: the normal turned towards the viewer, so files with either winding shade alike;
-    // Lambert with the headlight is then |n . d| / |n|.
-    towardsViewer[lane] = facing > 0.0f ? -inverseLength : inverseLength;
-    const float lambert = std::abs(facing) * inverseLength;
-    colours.red[lane] = surface.red[lane] * lambert;
-    colours.green[lane] = surface.green[lane] * lambert;
-    colours.blue[lane] = surface.blue[lane] * lambert;
-  }
-  // Apart: reading the bool array in the loop above keeps GCC from vectorising it.
-  for (int lane = 0; lane < kPacketSize; ++lane) colours.alpha[lane] = hits.hit[lane] ? 1.0f : 0.0f;
+  const auto& towardsViewer = surface.towardsViewer;
   if (!options.ambientOcclusion || options.occlusionSamples <= 0) return 0;
 
   std::array<glm::vec3, kPacketSize> normals{};  // unit, towards the viewer
@@ -92,5 +69,19 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
     }
   return rays;
 }
+
+}  // namespace confvis::embree
+
+namespace confvis::embree {
+
+SimdLevel detectedSimdLevel() {
+#if defined(CONFVIS_EMBREE_AVX2)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return SimdLevel::Avx2;
+#endif
+  return SimdLevel::Sse2;
+}
+
+const char* simdName(SimdLevel level) { return level == SimdLevel::Avx2 ? "avx2" : "sse2"; }
 
 }  // namespace confvis::embree

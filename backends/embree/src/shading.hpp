@@ -9,6 +9,7 @@
 
 #include "confvis/backends/embree/embree_scene.hpp"
 #include "packet_tracer.hpp"
+#include "surface_shading.hpp"
 
 namespace confvis::embree {
 
@@ -17,11 +18,7 @@ struct ShadingOptions {
   int occlusionSamples = 8;
   float occlusionDistance = 1.0f;  // metres
   float surfaceOffset = 1e-4f;     // metres, start of occlusion rays above the surface
-};
-
-// Linear RGB per lane, and alpha 1 where the lane hit something; all zero where it did not.
-struct PacketColours {
-  alignas(32) std::array<float, kPacketSize> red{}, green{}, blue{}, alpha{};
+  SimdLevel simd = SimdLevel::Sse2;  // which variant of the surface kernel runs
 };
 
 // Returns the number of occlusion rays cast. `seeds` gives each lane its random stream. Lanes

@@ -17,6 +17,10 @@ struct EmbreeOptions {
   double ambientOcclusionDistance = 0.0;
   int tileSize = 16;
   int threads = 0;  // 0 = all hardware threads (TBB default)
+  // The baseline x86-64 (SSE2) shading code even where the CPU has AVX2 (the default picks the
+  // AVX2 build there); both render identical pixels. render.json names the one used
+  // ("shading_simd").
+  bool baselineShading = false;
 };
 
 class EmbreeBackend final : public RenderBackend {

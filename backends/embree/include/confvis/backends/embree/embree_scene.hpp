@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <vector>
 
 #include "confvis/backends/embree/embree_device.hpp"
@@ -25,21 +26,35 @@ class EmbreeScene {
   const Scene& scene() const { return source_; }
   // Length of the bounding-box diagonal, metres (a scale for ambient-occlusion distances).
   double diagonal() const { return diagonal_; }
-  // What shading reads per hit, one per mesh (geomID), pointing into scene(): Scene::baseColorAt
-  // is factor x texture sampled at the uvs interpolated with Embree's barycentrics.
-  struct ShadingMesh {
-    const glm::uvec3* triangles = nullptr;
-    const glm::vec3* normals = nullptr;  // null: the mesh has none
-    const glm::vec2* uvs = nullptr;
-    const Texture* texture = nullptr;    // null: no texture, or no uvs to look it up with
-    glm::vec4 factor{1.0f};              // material base colour factor (white without one)
+  // What shading reads per hit (Scene::baseColorAt: factor x texture sampled at the uvs, and
+  // the vertex normals, both interpolated with Embree's barycentrics), built here so that a hit
+  // reads one cache line instead of the triangle's indices and then its vertices.
+  struct alignas(64) ShadingTriangle {
+    float normals[9] = {};   // n0, n1, n2; zeros where the mesh has none
+    float uvs[6] = {};       // uv0, uv1, uv2; zeros where the mesh has no texture
+    std::uint32_t material = 0;  // index into shadingMaterial()
   };
-  // No bounds check: geomID comes from Embree.
-  const ShadingMesh& shadingMesh(unsigned geomID) const { return shadingMeshes_[geomID]; }
+  static_assert(sizeof(ShadingTriangle) == 64);
+  struct ShadingMaterial {  // one per mesh, after the "no hit" material 0 (black, untextured)
+    const Texture* texture = nullptr;  // null: no texture, or no uvs to look it up with
+    glm::vec4 factor{0.0f};            // material base colour factor (white without a material)
+  };
+  // The record of triangle primID of mesh geomID; record 0 (zeros, material 0) stands for no hit.
+  std::uint32_t shadingTriangleIndex(unsigned geomID, unsigned primID) const {
+    return firstShadingTriangle_[geomID] + primID;
+  }
+  const ShadingTriangle* shadingTriangles() const { return shadingTriangles_.data(); }
+  const ShadingMaterial& shadingMaterial(std::uint32_t index) const {
+    return shadingMaterials_[index];
+  }
   double buildSeconds() const { return buildSeconds_; }
 
  private:
-  std::vector<ShadingMesh> shadingMeshes_;
+  void buildShadingRecords();
+
+  std::vector<ShadingTriangle> shadingTriangles_;
+  std::vector<std::uint32_t> firstShadingTriangle_;  // per mesh (geomID)
+  std::vector<ShadingMaterial> shadingMaterials_;
   RTCScene scene_ = nullptr;
   Scene source_;
   double diagonal_ = 0.0;
