@@ -39,7 +39,8 @@ std::vector<Cone> boundaryCones(const IntrinsicTriangulation& tri, const std::ve
     }
   // The log singularity smoothed over about a fifth of the corner's mean side: over the 40 maps
   // of cave3/4/5, flat-wall and md230x6 at 20 and 10 cm, two references each, radii of 0.1,
-  // 0.2, 0.22, 0.32 and 0.5 sides took 185, 182, 181, 183 and 188 Newton steps (216 unguessed).
+  // 0.2, 0.22, 0.32 and 0.5 sides took 185, 182, 181, 183 and 188 Newton steps (216 unguessed;
+  // measured before the CG budget floor of ricci_flow.cpp, 186 with it at 0.22).
   constexpr double kSmoothing = 0.22;
   std::vector<Cone> cones;
   for (int v = 0; v < tri.vertexCount; ++v) {

@@ -80,7 +80,7 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
   // Newton converges in under 10 iterations here; one that needs more is stuck on a mesh only
   // Delaunay flips can flatten (thin bezel strips), so give up early and retry with flips.
   options.maxIterations = 30;
-  // Start near the flat metric: 6 + 5 -> 4 + 4 Newton steps for cave5 at 20 cm (conformal README).
+  // Start near the flat metric: 6 + 5 -> 4 + 5 Newton steps for cave5 at 20 cm (conformal README).
   options.flatteningGuess = true;
   result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
   result.seconds = secondsSince(start);

@@ -38,7 +38,7 @@ struct DiskMapOptions {
   int removedFace = -1;  // Euclidean route: face to remove; -1 = the one farthest from the boundary
   // Euclidean route: start the flow from an estimate of the flattening factor (log map around
   // the removed face, corners opened to π) instead of the embedded metric. Fewer Newton steps on
-  // refined display templates (cave5 20 cm: 6 + 5 -> 4 + 4), the same map to 1e-8 where no
+  // refined display templates (cave5 20 cm: 6 + 5 -> 4 + 5), the same map to 1e-8 where no
   // flips come on (with flips the Delaunay triangulation reached depends on the start). Off by
   // default: a coarse irregular disk can stall from it (the map is then computed again without).
   bool flatteningGuess = false;
