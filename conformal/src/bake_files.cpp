@@ -69,9 +69,9 @@ json makeBakeSidecar(const DisplayConfig& config, const DisplayMap& displayMap,
   progress.advance();
   const BakedConformality geomConformality = measureBakedConformality(map.geom, conformality);
   progress.advance();
-  const RoundTripStats rayGeom = measureRoundTrip(map.ray, map.geom, stride);
+  const RoundTripStats rayGeom = measureRoundTrip(map, RoundTrip::RayThenGeom, stride);
   progress.advance();
-  const RoundTripStats geomRay = measureRoundTrip(map.geom, map.ray, stride);
+  const RoundTripStats geomRay = measureRoundTrip(map, RoundTrip::GeomThenRay, stride);
   progress.advance();
   const CoverageStats coverage = measureCoverage(map, 1.0, stride);
   progress.finish();

@@ -8,6 +8,7 @@
 
 #include "confvis/base/error.hpp"
 #include "cube_texels.hpp"
+#include "cut_aware_lookup.hpp"
 
 namespace confvis {
 
@@ -57,13 +58,6 @@ double footprintSpread(const CubeMap& map, const Vec3d& dir) {
     for (int j = i + 1; j < count; ++j)
       spread = std::max(spread, angleBetween(blended[i], blended[j]));
   return spread;
-}
-
-std::optional<Vec3d> lookupDirection(const CubeMap& map, const Vec3d& dir) {
-  const std::array<float, 4> s = sampleBilinear(map, dir);
-  const Vec3d v{s[0], s[1], s[2]};
-  if (!(s[3] >= 0.5f) || !(norm(v) > 0)) return std::nullopt;
-  return normalized(v);
 }
 
 // Symmetric 2x2 Gram matrix of two 3-vectors.
@@ -187,22 +181,28 @@ void summarise(std::vector<double>& errors, RoundTripErrors& stats) {
 
 }  // namespace
 
-RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, int stride,
+RoundTripStats measureRoundTrip(const RetargetMap& map, RoundTrip which, int stride,
                                 double discontinuityTexels, int boundaryTexels) {
+  const bool rayFirst = which == RoundTrip::RayThenGeom;
+  const CubeMap& forward = rayFirst ? map.ray : map.geom;
+  const CubeMap& inverse = rayFirst ? map.geom : map.ray;
   requireMap(forward, "measureRoundTrip");
   requireMap(inverse, "measureRoundTrip");
   const int n = forward.faceSize, m = inverse.faceSize;
   stride = std::max(1, stride);
   boundaryTexels = std::clamp(boundaryTexels, 0, 254);
-  const double unit = texelAngle(m);
   const auto cap = static_cast<std::uint8_t>(boundaryTexels + 1);
   const std::vector<std::uint8_t> forwardEdge =
       distanceToEdge(forward, discontinuityTexels * texelAngle(n), cap);
   const std::vector<std::uint8_t> inverseEdge =
-      distanceToEdge(inverse, discontinuityTexels * unit, cap);
+      distanceToEdge(inverse, discontinuityTexels * texelAngle(m), cap);
   RoundTripStats stats;
   stats.boundaryTexels = boundaryTexels;
   std::vector<double> all, interior, boundary;
+  auto count = [&](RoundTripErrors& part, std::size_t RoundTripErrors::*counter) {
+    ++(part.*counter);
+    ++(stats.all.*counter);
+  };
   for (CubeFace face : kCubeFaces)
     for (int y = 0; y < n; y += stride)
       for (int x = 0; x < n; x += stride) {
@@ -218,16 +218,33 @@ RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, 
                                 inverseEdge[image] <= boundaryTexels;
         RoundTripErrors& part = onBoundary ? stats.boundary : stats.interior;
         std::vector<double>& partErrors = onBoundary ? boundary : interior;
-        if (footprintSpread(inverse, v) > discontinuityTexels * unit) {
-          ++part.discontinuous, ++stats.all.discontinuous;
-          continue;
+        Vec3d back;
+        double spread;
+        if (rayFirst) {
+          const detail::OneSidedSample s = detail::lookupGeomAcrossCut(map, v);
+          if (!(s.alpha >= 0.5f)) {
+            count(part, &RoundTripErrors::invalid);
+            continue;
+          }
+          if (s.straddles) count(part, &RoundTripErrors::acrossCut);
+          back = s.direction;
+          spread = s.footprintSpread;
+        } else {
+          const std::optional<Vec3d> looked = map.toVirtual(v);
+          if (!looked) {
+            count(part, &RoundTripErrors::invalid);
+            continue;
+          }
+          back = *looked;
+          spread = footprintSpread(map.ray, v);
+          if (spread > detail::jumpAngle(m)) count(part, &RoundTripErrors::acrossCut);
         }
-        const std::optional<Vec3d> back = lookupDirection(inverse, v);
-        if (!back) {
-          ++part.invalid, ++stats.all.invalid;
-          continue;
+        const double error = angleBetween(back, texelDirection(face, x, y, n)) / texelAngle(n);
+        const double footprints = error / std::max(1.0, spread / texelAngle(n));
+        for (RoundTripErrors* errors : {&part, &stats.all}) {
+          errors->maxInFootprints = std::max(errors->maxInFootprints, footprints);
+          if (footprints > 1.0) ++errors->beyondFootprint;
         }
-        const double error = angleBetween(*back, texelDirection(face, x, y, n)) / texelAngle(n);
         all.push_back(error);
         partErrors.push_back(error);
       }
@@ -249,7 +266,7 @@ CoverageStats measureCoverage(const RetargetMap& map, double toleranceTexels, in
         if (!isValid(map.geom, {face, x, y})) continue;
         ++stats.sourceTexels;
         const Vec3d d = storedDirection(map.geom, {face, x, y});
-        const std::optional<Vec3d> v = lookupDirection(map.ray, d);
+        const std::optional<Vec3d> v = map.toVirtual(d);
         if (!v) {
           ++stats.unlit;
           continue;
@@ -274,9 +291,11 @@ nlohmann::json toJson(const BakedConformality& s) {
 
 nlohmann::json toJson(const RoundTripErrors& s) {
   return {{"valid_texels", s.valid()}, {"measured_texels", s.measured},
-          {"discontinuous_texels", s.discontinuous}, {"invalid_texels", s.invalid},
+          {"across_cut_texels", s.acrossCut}, {"invalid_texels", s.invalid},
           {"error_p50_texels", s.p50}, {"error_p95_texels", s.p95}, {"error_p99_texels", s.p99},
-          {"error_max_texels", s.max}, {"fraction_below_one_texel", s.fractionBelowOneTexel}};
+          {"error_max_texels", s.max}, {"fraction_below_one_texel", s.fractionBelowOneTexel},
+          {"error_max_in_footprints", s.maxInFootprints},
+          {"beyond_footprint_texels", s.beyondFootprint}};
 }
 
 nlohmann::json toJson(const RoundTripStats& s) {

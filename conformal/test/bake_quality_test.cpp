@@ -90,10 +90,10 @@ TEST(BakedMapQuality, ConformalCapMapIsConformalOrientedInvertibleAndCovering) {
   EXPECT_LT(geom.ratioMax, 1.05 * bound);
 
   // ray and geom are inverses: the round trip through the other map's bilinear lookup.
-  const RoundTripStats forth = measureRoundTrip(map.ray, map.geom);
-  const RoundTripStats back = measureRoundTrip(map.geom, map.ray);
+  const RoundTripStats forth = measureRoundTrip(map, RoundTrip::RayThenGeom);
+  const RoundTripStats back = measureRoundTrip(map, RoundTrip::GeomThenRay);
   EXPECT_GT(forth.all.measured, 8500u);
-  EXPECT_EQ(forth.all.discontinuous + back.all.discontinuous, 0u);
+  EXPECT_EQ(forth.all.acrossCut + back.all.acrossCut, 0u);
   // Lookups within half a texel of the other map's rim read alpha < 0.5: a thin band only, and
   // all of it in the boundary part.
   EXPECT_LT(forth.all.invalid, forth.all.measured / 50);

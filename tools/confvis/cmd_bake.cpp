@@ -46,11 +46,13 @@ void printSummary(const BakedDisplay& baked, const fs::path& output) {
   const auto& ray = quality["ray_conformality"];
   const auto& roundTrip = quality["round_trip_ray_then_geom"];
   std::printf("  ray conformality (singular-value ratio) p50 %.4f p95 %.4f max %.3f, %d flipped; "
-              "round trip max %.3f texels inside, %.1f%% below one at the cut; coverage %.2f%%\n",
+              "round trip max %.3f texels inside, %.2f%% below one at the cut (max %.2f of the "
+              "lookup's footprint); coverage %.2f%%\n",
               ray["ratio_p50"].get<double>(), ray["ratio_p95"].get<double>(),
               ray["ratio_max"].get<double>(), ray["flipped_texels"].get<int>(),
               roundTrip["interior"]["error_max_texels"].get<double>(),
               100.0 * roundTrip["boundary"]["fraction_below_one_texel"].get<double>(),
+              roundTrip["all"]["error_max_in_footprints"].get<double>(),
               100.0 * quality["coverage"]["fraction"].get<double>());
   std::printf("  -> %s/{ray.exr, geom.exr, bake.json, source.obj, target.obj, *.png}\n",
               output.string().c_str());

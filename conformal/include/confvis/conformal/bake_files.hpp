@@ -25,7 +25,7 @@ namespace confvis {
 struct DisplayConfig;
 
 inline constexpr const char* kBakeFormat = "confvis-bake";
-inline constexpr int kBakeFormatVersion = 2;  // 2: round trips split at the cut
+inline constexpr int kBakeFormatVersion = 3;  // 2: round trips split at the cut; 3: measured across it
 
 // The sidecar for a fresh bake of `config` (the effective config, overrides applied). Measures
 // the baked map's quality (baked_map_quality.hpp) on every `qualityStride`-th texel; 0 picks a

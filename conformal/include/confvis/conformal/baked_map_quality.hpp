@@ -40,31 +40,39 @@ BakedConformality measureBakedConformality(const CubeMap& map,
 
 struct RoundTripErrors {
   std::size_t measured = 0;
-  // Texels whose inverse lookup blends texels more than `discontinuityTexels` apart (its
-  // footprint straddles the source cut); reported, not measured.
-  std::size_t discontinuous = 0;
+  // Measured texels whose inverse lookup straddles a jump of the inverse map by more than
+  // `discontinuityTexels` (the source cut, in geom): RetargetMap keeps to one side there.
+  std::size_t acrossCut = 0;
   std::size_t invalid = 0;  // inverse lookup invalid (alpha < 0.5)
   double p50 = 0, p95 = 0, p99 = 0, max = 0;  // angle(inverse(forward(d)), d), texels
-  // Of all valid texels (discontinuous and invalid ones counted as failures): error below one
-  // texel.
+  // Of all valid texels (invalid ones counted as failures): error below one texel.
   double fractionBelowOneTexel = 0;
-  std::size_t valid() const { return measured + discontinuous + invalid; }
+  // The error in units of the inverse lookup's own footprint: the largest angle between the
+  // directions it blends (on its side of the cut), where that exceeds one texel. Where the
+  // inverse map magnifies (the missing ceiling squeezed into the walls' top edges, in ray), one
+  // of its texels spans several of the forward map's, and no lookup is finer than that.
+  double maxInFootprints = 0;
+  std::size_t beyondFootprint = 0;  // errors above max(1 texel, footprint)
+  std::size_t valid() const { return measured + invalid; }
 };
 
 // The round trip over all valid texels, and split at the cut: a texel is on the boundary when it
-// lies within `boundaryTexels` 4-neighbour steps of an edge of `forward`, or its image does of
-// an edge of `inverse`. An edge is a texel with alpha < 0.5 (the display's rim) or one whose
-// direction jumps by more than `discontinuityTexels` to a neighbour (the source cut). There a
-// bilinear lookup blends texels from both sides of the cut or of the rim, so only the interior
-// can be held to the sub-texel bound; the boundary is a thin band, mostly below one texel.
+// lies within `boundaryTexels` 4-neighbour steps of an edge of the forward map, or its image does
+// of an edge of the inverse map. An edge is a texel with alpha < 0.5 (the display's rim) or one
+// whose direction jumps by more than `discontinuityTexels` to a neighbour (the source cut).
 struct RoundTripStats {
   int boundaryTexels = 2;
   RoundTripErrors all, interior, boundary;
 };
 
-// For every texel d of `forward` with alpha >= 0.5: v = the stored direction, then a bilinear
-// lookup of v in `inverse` (as RetargetMap does), compared with d.
-RoundTripStats measureRoundTrip(const CubeMap& forward, const CubeMap& inverse, int stride = 1,
+enum class RoundTrip {
+  RayThenGeom,  // d -> ray(d) -> toPhysical: errors in ray's texels
+  GeomThenRay,  // v -> geom(v) -> toVirtual: errors in geom's texels
+};
+
+// For every texel of the forward map with alpha >= 0.5: its stored direction, looked up in the
+// inverse map as RetargetMap::toPhysical / toVirtual do, compared with the texel's direction.
+RoundTripStats measureRoundTrip(const RetargetMap& map, RoundTrip which, int stride = 1,
                                 double discontinuityTexels = 8.0, int boundaryTexels = 2);
 
 struct CoverageStats {

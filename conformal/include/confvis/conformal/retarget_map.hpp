@@ -6,7 +6,8 @@
 //   geom: indexed by a virtual direction v, stores the physical direction T_geom(v) = T_ray^-1(v);
 //         alpha 1 where v lies in the source field S, 0 elsewhere (e.g. outside a hemisphere).
 // Invalid texels (alpha 0) still hold a direction: the bake extends the map past its boundary
-// (nearest valid value), so bilinear lookups next to the boundary never blend in garbage.
+// (extrapolated linearly for three texels, then the nearest value), so bilinear lookups next to
+// the boundary never blend in garbage.
 #include <optional>
 
 #include "confvis/base/cube_map.hpp"
@@ -22,7 +23,9 @@ struct RetargetMap {
   // Bilinear lookup in `ray`, renormalised. nullopt where the interpolated alpha is below 0.5
   // (no display behind d). Throws Error(InvalidInput) for a zero or non-finite direction.
   std::optional<Vec3d> toVirtual(const Vec3d& physicalDir) const;
-  // Bilinear lookup in `geom`, renormalised. nullopt where v is outside the source field.
+  // Lookup in `geom`, renormalised. nullopt where v is outside the source field. Bilinear, except
+  // where the footprint straddles the source's cut (geom jumps there): the texels across the cut
+  // are replaced by extrapolations of v's side, so v keeps its own side of the display.
   std::optional<Vec3d> toPhysical(const Vec3d& virtualDir) const;
 
   int resolution() const { return ray.faceSize; }

@@ -1,0 +1,146 @@
+#include "cut_aware_lookup.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace confvis::detail {
+
+namespace {
+
+struct Texel4 {
+  std::array<double, 4> v{};
+  Vec3d direction() const { return {v[0], v[1], v[2]}; }
+};
+
+Texel4 scaled(const Texel4& a, double s) {
+  Texel4 r;
+  for (int c = 0; c < 4; ++c) r.v[c] = s * a.v[c];
+  return r;
+}
+
+Texel4 combine(const Texel4& a, double wa, const Texel4& b, double wb) {
+  Texel4 r;
+  for (int c = 0; c < 4; ++c) r.v[c] = wa * a.v[c] + wb * b.v[c];
+  return r;
+}
+
+// Texel (x, y) of `face`, or its stand-in one texel beyond the face; nullopt further out.
+std::optional<Texel4> texelValue(const CubeMap& map, CubeFace face, int x, int y) {
+  const int n = map.faceSize;
+  if (x < -1 || x > n || y < -1 || y > n) return std::nullopt;
+  const TexelStandIn standIn = texelAcrossFaceEdge(face, x, y, n);
+  Texel4 value;
+  for (int k = 0; k < standIn.count; ++k) {
+    const WeightedTexel& r = standIn.texels[k];
+    const float* t = map.face(r.texel.face).at(r.texel.x, r.texel.y);
+    for (int c = 0; c < 4; ++c) value.v[c] += r.weight * t[c];
+  }
+  return value;
+}
+
+}  // namespace
+
+std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir, int side,
+                                            double jumpAngle) {
+  const int n = map.faceSize;
+  CubeFace face;
+  double x, y;
+  directionToTexel(dir, n, face, x, y);
+  // As sampleBilinear: texel centres at i + 0.5, the footprint is the 2x2 block around them.
+  const double fx = x - 0.5, fy = y - 0.5;
+  const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
+  const double tx = fx - x0, ty = fy - y0;
+  // Corner k = 2 j + i is texel (x0 + i, y0 + j).
+  std::array<Texel4, 4> corner;
+  std::array<double, 4> weight;
+  for (int k = 0; k < 4; ++k) {
+    const int i = k % 2, j = k / 2;
+    corner[k] = *texelValue(map, face, x0 + i, y0 + j);
+    weight[k] = (i ? tx : 1 - tx) * (j ? ty : 1 - ty);
+  }
+  auto sameSide = [&](const Texel4& a, const Texel4& b) {
+    return angleBetween(a.direction(), b.direction()) <= jumpAngle;
+  };
+  int nearest = 0;
+  for (int k = 1; k < 4; ++k)
+    if (weight[k] > weight[nearest]) nearest = k;
+  int anchor = nearest;
+  if (side != 0) {
+    anchor = -1;
+    for (int k = 0; k < 4; ++k)
+      if (!sameSide(corner[k], corner[nearest]) && (anchor < 0 || weight[k] > weight[anchor]))
+        anchor = k;
+    if (anchor < 0) return std::nullopt;
+  }
+  std::array<bool, 4> member{}, known{};
+  std::array<Texel4, 4> value = corner;
+  bool straddles = false;
+  for (int k = 0; k < 4; ++k) {
+    member[k] = known[k] = sameSide(corner[k], corner[anchor]);
+    straddles |= !member[k];
+  }
+  if (straddles) {
+    // Corners of the other side, from this side's corners: the parallelogram of the three
+    // others, else the line from the neighbour in the same row or column through the texel
+    // beyond it (outside the footprint), averaged where both exist.
+    for (int k = 0; k < 4; ++k) {
+      if (member[k]) continue;
+      const int i = k % 2, j = k / 2;
+      const int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i, diagonal = 3 - k;
+      if (member[inRow] && member[inColumn] && member[diagonal]) {
+        value[k] = combine(combine(corner[inRow], 1, corner[inColumn], 1), 1, corner[diagonal], -1);
+        known[k] = true;
+        continue;
+      }
+      Texel4 sum;
+      int lines = 0;
+      auto extendLine = [&](int neighbour, int beyondX, int beyondY) {
+        if (!member[neighbour]) return;
+        const std::optional<Texel4> beyond = texelValue(map, face, beyondX, beyondY);
+        if (!beyond || !sameSide(*beyond, corner[anchor])) return;
+        sum = combine(sum, 1, combine(corner[neighbour], 2, *beyond, -1), 1);
+        ++lines;
+      };
+      // The neighbour in the row sits at x0 + (1 - i); the texel beyond it one more step away.
+      extendLine(inRow, x0 + (1 - i) + (1 - 2 * i), y0 + j);
+      extendLine(inColumn, x0 + i, y0 + (1 - j) + (1 - 2 * j));
+      if (lines > 0) {
+        value[k] = scaled(sum, 1.0 / lines);
+        known[k] = true;
+      }
+    }
+    // The corner diagonal to a lone member, from the two it extrapolated.
+    for (int k = 0; k < 4; ++k) {
+      const int i = k % 2, j = k / 2;
+      const int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i, diagonal = 3 - k;
+      if (!known[k] && known[inRow] && known[inColumn] && known[diagonal]) {
+        value[k] = combine(combine(value[inRow], 1, value[inColumn], 1), 1, value[diagonal], -1);
+        known[k] = true;
+      }
+    }
+  }
+  Vec3d sum{};
+  double alpha = 0, memberWeight = 0;
+  for (int k = 0; k < 4; ++k) {
+    if (known[k]) sum = sum + weight[k] * value[k].direction();
+    if (member[k]) {
+      alpha += weight[k] * corner[k].v[3];
+      memberWeight += weight[k];
+    }
+  }
+  OneSidedSample out;
+  const double length = norm(sum);
+  out.direction = length > 0 ? (1.0 / length) * sum : normalized(corner[anchor].direction());
+  // The nearest member's weight can be 0 only on a texel centre line; its alpha stands in then.
+  out.alpha = static_cast<float>(memberWeight > 0 ? alpha / memberWeight : corner[anchor].v[3]);
+  out.straddles = straddles;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (known[a] && known[b])
+        out.footprintSpread = std::max(
+            out.footprintSpread, angleBetween(value[a].direction(), value[b].direction()));
+  return out;
+}
+
+}  // namespace confvis::detail
