@@ -43,9 +43,12 @@ float confvisAngle(vec3 a, vec3 b) { return atan(length(cross(a, b)), dot(a, b))
 // w = validity (alpha, 1 inside the source field). Bilinear, except across the source's cut: the
 // map jumps there, and blending texels from both sides would land between them (in the middle of
 // a wall). Where the hardware's bilinear blend comes out shorter than unit directions about
-// eight neighbour spacings apart would give, the four texels are fetched and those whose
-// directions differ from the nearest texel's by more than that are left out of the blend, so a
-// point next to the cut keeps its own side.
+// eight neighbour spacings apart would give, the four texels are fetched; those that a side of
+// the block spanning a jump separates from the nearest one (a side more than three times the
+// shortest and eight spacings long: not a magnification, which keeps the block square) are
+// replaced by extrapolations of the nearest texel's side, so a point next to the cut keeps its
+// own side, up to the cut. (A fixed eight-spacing rule read the unbounded magnification next to
+// a monitor wall's corners as jumps and tore the triangles there: 5 % of md230x6 black.)
 vec4 confvisSampleGeomAcrossCut(vec3 v);
 
 vec4 confvisSampleGeom(vec3 v) {
@@ -58,42 +61,128 @@ vec4 confvisSampleGeom(vec3 v) {
   return confvisSampleGeomAcrossCut(v);
 }
 
-vec4 confvisSampleGeomAcrossCut(vec3 v) {
-  // Face and (s, t) exactly as the Vulkan spec's cube-map face selection table.
-  vec3 a = abs(v);
-  float sc, tc, ma;
-  if (a.x >= a.y && a.x >= a.z) {
-    ma = a.x; sc = v.x > 0.0 ? -v.z : v.z; tc = -v.y;
-  } else if (a.y >= a.z) {
-    ma = a.y; sc = v.x; tc = v.y > 0.0 ? v.z : -v.z;
-  } else {
-    ma = a.z; sc = v.z > 0.0 ? v.x : -v.x; tc = -v.y;
-  }
-  float n = float(textureSize(confvisGeomMap, 0).x);
-  vec2 f = fract((0.5 * vec2(sc, tc) / ma + 0.5) * n - 0.5);
-  // textureGather order: (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+// The four texels of the bilinear footprint at v, as texels k = 2 j + i of the block (i along s,
+// j along t; xyz direction, w validity). textureGather order: (i0, j1), (i1, j1), (i1, j0), (i0, j0).
+void confvisGatherGeom(vec3 v, out vec4 corner[4]) {
   vec4 gx = textureGather(confvisGeomMap, v, 0);
   vec4 gy = textureGather(confvisGeomMap, v, 1);
   vec4 gz = textureGather(confvisGeomMap, v, 2);
   vec4 gw = textureGather(confvisGeomMap, v, 3);
-  vec4 weight = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
+  corner[0] = vec4(gx.w, gy.w, gz.w, gw.w);
+  corner[1] = vec4(gx.z, gy.z, gz.z, gw.z);
+  corner[2] = vec4(gx.x, gy.x, gz.x, gw.x);
+  corner[3] = vec4(gx.y, gy.y, gz.y, gw.y);
+}
+
+vec4 confvisSampleGeomAcrossCut(vec3 v) {
+  // Face, (s, t) and the directions in which s and t grow, exactly as the Vulkan spec's cube-map
+  // face selection table.
+  vec3 a = abs(v);
+  float sc, tc, ma;
+  vec3 sAxis, tAxis;
+  if (a.x >= a.y && a.x >= a.z) {
+    ma = a.x; sc = v.x > 0.0 ? -v.z : v.z; tc = -v.y;
+    sAxis = vec3(0.0, 0.0, v.x > 0.0 ? -1.0 : 1.0); tAxis = vec3(0.0, -1.0, 0.0);
+  } else if (a.y >= a.z) {
+    ma = a.y; sc = v.x; tc = v.y > 0.0 ? v.z : -v.z;
+    sAxis = vec3(1.0, 0.0, 0.0); tAxis = vec3(0.0, 0.0, v.y > 0.0 ? 1.0 : -1.0);
+  } else {
+    ma = a.z; sc = v.z > 0.0 ? v.x : -v.x; tc = -v.y;
+    sAxis = vec3(v.z > 0.0 ? 1.0 : -1.0, 0.0, 0.0); tAxis = vec3(0.0, -1.0, 0.0);
+  }
+  float n = float(textureSize(confvisGeomMap, 0).x);
+  vec2 f = fract((0.5 * vec2(sc, tc) / ma + 0.5) * n - 0.5);
+  vec4 corner[4];
+  confvisGatherGeom(v, corner);
+  float weight[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
   int nearest = 0;
-  for (int i = 1; i < 4; ++i)
-    if (weight[i] > weight[nearest]) nearest = i;
-  vec3 anchor = normalize(vec3(gx[nearest], gy[nearest], gz[nearest]));
-  // Neighbouring texels are about 2/n radians apart where the map does not stretch.
-  float cosLimit = cos(min(16.0 / n, 1.5));
-  vec3 direction = vec3(0.0);
-  float validity = 0.0, total = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    vec3 d = vec3(gx[i], gy[i], gz[i]);
-    if (dot(normalize(d), anchor) >= cosLimit) {
-      direction += weight[i] * d;
-      validity += weight[i] * gw[i];
-      total += weight[i];
+  for (int k = 1; k < 4; ++k)
+    if (weight[k] > weight[nearest]) nearest = k;
+  // The sides of the block that span the cut: longer than three times its shortest side (a
+  // conformal map keeps the block nearly square, even where it magnifies strongly next to a
+  // display corner) and than eight neighbour spacings (2/n radians each where the map does not
+  // stretch). The nearest texel's side: the texels joined to it by the other sides.
+  vec3 unit[4];
+  for (int k = 0; k < 4; ++k) unit[k] = normalize(corner[k].xyz);
+  float side[4] = float[4](distance(unit[0], unit[1]), distance(unit[1], unit[3]),
+                           distance(unit[3], unit[2]), distance(unit[2], unit[0]));
+  float longSide = max(3.0 * min(min(side[0], side[1]), min(side[2], side[3])), min(16.0 / n, 1.5));
+  bool member[4], known[4];
+  vec3 value[4];
+  for (int k = 0; k < 4; ++k) member[k] = k == nearest;
+  // Around the block 0-1-3-2: twice suffices to reach every corner joined to the nearest one.
+  const int ring[4] = int[4](0, 1, 3, 2);
+  for (int pass = 0; pass < 2; ++pass)
+    for (int e = 0; e < 4; ++e) {
+      int p = ring[e], q = ring[(e + 1) % 4];
+      if (side[e] <= longSide && (member[p] || member[q])) member[p] = member[q] = true;
+    }
+  for (int k = 0; k < 4; ++k) {
+    known[k] = member[k];
+    value[k] = corner[k].xyz;
+  }
+  vec3 anchor = unit[nearest];
+  // A texel across the cut is replaced by the nearest side's map continued linearly: the
+  // parallelogram of the other three texels, else the line from its neighbour in the block's
+  // row (column) through the texel beyond that neighbour, fetched one texel over (averaged where
+  // both exist). So points between the last texel centre and the cut continue their side up to
+  // the cut instead of clamping to that texel. (Mirrors conformal/src/cut_aware_lookup.cpp.)
+  float texelStep = 2.0 * ma / n;  // one texel in sc or tc
+  for (int k = 0; k < 4; ++k) {
+    if (member[k]) continue;
+    int i = k % 2, j = k / 2;
+    int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i, diagonal = 3 - k;
+    if (member[inRow] && member[inColumn] && member[diagonal]) {
+      value[k] = corner[inRow].xyz + corner[inColumn].xyz - corner[diagonal].xyz;
+      known[k] = true;
+      continue;
+    }
+    vec3 sum = vec3(0.0);
+    float lines = 0.0;
+    if (member[inRow]) {
+      // The block one texel over along s, away from k: its texel in the neighbour's row lies
+      // beyond the neighbour.
+      vec4 shifted[4];
+      confvisGatherGeom(v + (i == 1 ? -texelStep : texelStep) * sAxis, shifted);
+      vec3 beyond = shifted[2 * j + (i == 1 ? 0 : 1)].xyz;
+      if (distance(normalize(beyond), unit[inRow]) <= longSide) {
+        sum += 2.0 * corner[inRow].xyz - beyond;
+        lines += 1.0;
+      }
+    }
+    if (member[inColumn]) {
+      vec4 shifted[4];
+      confvisGatherGeom(v + (j == 1 ? -texelStep : texelStep) * tAxis, shifted);
+      vec3 beyond = shifted[2 * (j == 1 ? 0 : 1) + i].xyz;
+      if (distance(normalize(beyond), unit[inColumn]) <= longSide) {
+        sum += 2.0 * corner[inColumn].xyz - beyond;
+        lines += 1.0;
+      }
+    }
+    if (lines > 0.0) {
+      value[k] = sum / lines;
+      known[k] = true;
     }
   }
-  return vec4(normalize(direction), validity / total);
+  for (int k = 0; k < 4; ++k) {
+    int i = k % 2, j = k / 2;
+    int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i, diagonal = 3 - k;
+    if (!known[k] && known[inRow] && known[inColumn] && known[diagonal]) {
+      value[k] = value[inRow] + value[inColumn] - value[diagonal];
+      known[k] = true;
+    }
+  }
+  vec3 direction = vec3(0.0);
+  float validity = 0.0, total = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    if (known[k]) direction += weight[k] * value[k];
+    if (member[k]) {
+      validity += weight[k] * corner[k].w;
+      total += weight[k];
+    }
+  }
+  if (dot(direction, direction) == 0.0) direction = anchor;
+  return vec4(normalize(direction), total > 0.0 ? validity / total : corner[nearest].w);
 }
 
 // Warps a point given relative to c: xyz = warped point relative to c, w = validity.

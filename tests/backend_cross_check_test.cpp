@@ -25,12 +25,12 @@ RenderSettings centreEye(const DisplayConfig& config) {
 }
 
 struct CrossCheck {
-  DisplayConfig config = test::loadConfig("cave5");
+  DisplayConfig config;
   Scene scene = builtinScene("checker-sphere");
   RetargetMap map;
   RenderResult embree;
 
-  CrossCheck() {
+  explicit CrossCheck(const char* configName = "cave5") : config(test::loadConfig(configName)) {
     BakeDisplayOptions options;
     options.useCache = false;
     options.resolution = 128;
@@ -58,6 +58,33 @@ TEST(BackendCrossCheck, VulkanAndEmbreeAgreeOnTheCentreEyeThroughTheBakedCave5Ma
                             test::imageOf(check.embree, wall.name).image, kTolerance);
     RecordProperty(wall.name + "_bad_fraction", std::to_string(c.badFraction()));
     EXPECT_LE(c.badFraction(), kBudget) << wall.name << ": " << c.bad << " of " << c.pixels;
+  }
+}
+
+// Share of the pixels Vulkan leaves undrawn (alpha 0) where Embree shows the scene.
+double holeFraction(const ImageRGBA& vulkan, const ImageRGBA& embree) {
+  std::size_t holes = 0;
+  for (int y = 0; y < vulkan.height; ++y)
+    for (int x = 0; x < vulkan.width; ++x) {
+      const float* e = embree.at(x, y);
+      holes += vulkan.at(x, y)[3] < 0.5f && e[0] + e[1] + e[2] > 0.01f;
+    }
+  return static_cast<double>(holes) / static_cast<double>(vulkan.pixelCount());
+}
+
+// A hemisphere source: no cut, but next to the wall's corners the map magnifies without bound.
+// Read as jumps of the map, that magnification had the warp drop the triangles there: holes in
+// 6 % and 10 % of the two left monitors here (now below 1 %). The rest of the difference is Embree's:
+// at 128 texels a face the bilinear alpha of the one-texel unlit band of the bezels between the
+// monitors and along the rim blacks out lines one texel wide that Vulkan draws.
+TEST(BackendCrossCheck, VulkanLeavesNoHolesThroughTheBakedMonitorWallMap) {
+  CrossCheck check("md230x6");
+  const RenderResult vulkan = check.vulkan(check.map);
+  for (const Wall& wall : check.config.walls) {
+    const double holes = holeFraction(test::imageOf(vulkan, wall.name).image,
+                                      test::imageOf(check.embree, wall.name).image);
+    RecordProperty(wall.name + "_hole_fraction", std::to_string(holes));
+    EXPECT_LE(holes, 0.02) << wall.name;
   }
 }
 

@@ -59,27 +59,42 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
     corner[k] = *texelValue(map, face, x0 + i, y0 + j);
     weight[k] = (i ? tx : 1 - tx) * (j ? ty : 1 - ty);
   }
-  auto sameSide = [&](const Texel4& a, const Texel4& b) {
-    return angleBetween(a.direction(), b.direction()) <= jumpAngle;
+  // The sides of the block that span a jump: longer than three times its shortest side (a
+  // conformal map keeps the block nearly square, even where it magnifies without bound next to a
+  // display corner) and than `jumpAngle`. A side's texels are those joined by the other sides.
+  std::array<Vec3d, 4> unit;
+  for (int k = 0; k < 4; ++k) unit[k] = normalized(corner[k].direction());
+  constexpr std::array<int, 4> ring{0, 1, 3, 2};  // around the block
+  std::array<double, 4> sideLength;
+  for (int e = 0; e < 4; ++e) sideLength[e] = angleBetween(unit[ring[e]], unit[ring[(e + 1) % 4]]);
+  const double longSide =
+      std::max(3.0 * *std::min_element(sideLength.begin(), sideLength.end()), jumpAngle);
+  auto sideOf = [&](int anchor) {
+    std::array<bool, 4> joined{};
+    joined[anchor] = true;
+    for (int pass = 0; pass < 2; ++pass)  // twice around reaches every joined texel
+      for (int e = 0; e < 4; ++e) {
+        const int p = ring[e], q = ring[(e + 1) % 4];
+        if (sideLength[e] <= longSide && (joined[p] || joined[q])) joined[p] = joined[q] = true;
+      }
+    return joined;
   };
   int nearest = 0;
   for (int k = 1; k < 4; ++k)
     if (weight[k] > weight[nearest]) nearest = k;
   int anchor = nearest;
   if (side != 0) {
+    const std::array<bool, 4> nearSide = sideOf(nearest);
     anchor = -1;
     for (int k = 0; k < 4; ++k)
-      if (!sameSide(corner[k], corner[nearest]) && (anchor < 0 || weight[k] > weight[anchor]))
-        anchor = k;
+      if (!nearSide[k] && (anchor < 0 || weight[k] > weight[anchor])) anchor = k;
     if (anchor < 0) return std::nullopt;
   }
-  std::array<bool, 4> member{}, known{};
+  const std::array<bool, 4> member = sideOf(anchor);
+  std::array<bool, 4> known = member;
   std::array<Texel4, 4> value = corner;
   bool straddles = false;
-  for (int k = 0; k < 4; ++k) {
-    member[k] = known[k] = sameSide(corner[k], corner[anchor]);
-    straddles |= !member[k];
-  }
+  for (int k = 0; k < 4; ++k) straddles |= !member[k];
   if (straddles) {
     // Corners of the other side, from this side's corners: the parallelogram of the three
     // others, else the line from the neighbour in the same row or column through the texel
@@ -98,7 +113,7 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
       auto extendLine = [&](int neighbour, int beyondX, int beyondY) {
         if (!member[neighbour]) return;
         const std::optional<Texel4> beyond = texelValue(map, face, beyondX, beyondY);
-        if (!beyond || !sameSide(*beyond, corner[anchor])) return;
+        if (!beyond || angleBetween(beyond->direction(), unit[neighbour]) > longSide) return;
         sum = combine(sum, 1, combine(corner[neighbour], 2, *beyond, -1), 1);
         ++lines;
       };

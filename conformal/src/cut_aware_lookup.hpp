@@ -17,9 +17,11 @@ struct OneSidedSample {
   double footprintSpread = 0;  // largest angle between the blended values (this side's), radians
 };
 
-// The footprint texels whose directions lie within `jumpAngle` of the side's anchor are this
-// side: side 0 is anchored at the nearest footprint texel, side 1 at the heaviest texel off side
-// 0 (nullopt where the footprint spans no jump). A texel on the other side is replaced by a linear
+// A side of the 2x2 footprint block spans a jump where it is longer than `jumpAngle` and than
+// three times the block's shortest side (a conformal map keeps the block nearly square, also
+// where it magnifies without bound next to a display corner); the texels joined to the side's
+// anchor by the other block sides are this side: side 0 is anchored at the nearest footprint
+// texel, side 1 at the heaviest texel off side 0 (nullopt where the footprint spans no jump). A texel on the other side is replaced by a linear
 // extrapolation from this side (the parallelogram of three footprint corners, or the line through
 // a footprint corner and the texel beyond it), so a point between the cut and its side's last
 // texel centre continues that side's map instead of clamping to it; one that cannot be
