@@ -207,16 +207,16 @@ float confvisTexelAngle(vec3 v) {
 // of the segment count. maxSegmentAngle caps the angular length of a segment so that a long edge
 // whose bend happens to vanish at its midpoint is still subdivided. An edge across the source's
 // cut is cut into segments of four times maxErrorAngle (two pixels at the default half-pixel
-// error) or half a texel of the geom map, whichever is longer, so that the triangles dropped
-// along the cut leave gaps of about two pixels, or no wider than the band along the cut that
-// the map cannot reach anyway: points within half a texel of the cut take the nearest texel's
-// direction on their side (confvisSampleGeomAcrossCut), so the display's edge where the cut
-// lands keeps a gap of half a texel's image. Finer segments only cost: these patches (inner
-// level = longest edge's, so the square of it in triangles) were most of the frame on lavapipe
-// under a baked cave5 map (128 texels a face, 480-pixel walls, two-pixel segments: 4.3 x plain;
-// half-texel segments: 2.7 x, the same pixels off Embree). Texel-sized ones (1.8 x, 1.05 % of
-// the pixels off Embree instead of 1.00 %) left too large gaps at 64 texels a face (the md230x6
-// golden: 2.4 % bad pixels).
+// error) or one texel of the geom map, whichever is longer: the triangles dropped along the cut
+// leave a band of that width in the source unshown, while everything up to it is drawn up to the
+// cut (confvisSampleGeomAcrossCut extrapolates each side there). Finer segments mostly cost: these
+// patches (inner level = longest edge's, so the square of it in triangles) were most of the frame
+// on lavapipe under a baked cave5 map (128 texels a face, 480-pixel walls: two-pixel segments
+// 4.3 x plain, half-texel ones 2.2 x). When the lookup still clamped each side to its last texel
+// centre (another half texel unshown), texel-sized segments left too large gaps at 64 texels a
+// face (the md230x6 golden: 2.4 % bad pixels), and its side rule tore md230x6's corners; with the
+// extrapolated lookup they draw 0.98 % of the pixels off Embree at 1.8 x (half-texel segments
+// with the clamping lookup: 1.06 % at 2.0-2.2 x).
 // It is told from a smooth bend by its halves: where T_geom jumps, one warped half spans the jump and is
 // more than three times as long as the other (and longer than eight times maxErrorAngle), while
 // a smooth map stretches both halves of a short edge alike. Symmetric in (a, b), so the two triangles sharing an edge
@@ -241,7 +241,7 @@ float confvisMeasureEdge(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
   float segments;
   acrossCut = confvisHalvesSpanJump(halfA, halfB, maxErrorAngle);
   if (acrossCut) {
-    segments = edge / max(4.0 * maxErrorAngle, 0.5 * confvisTexelAngle(a + b));
+    segments = edge / max(4.0 * maxErrorAngle, confvisTexelAngle(a + b));
   } else {
     float deviation = confvisAngle(wm, 0.5 * (wa + wb));
     segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
