@@ -277,7 +277,7 @@ DiskMap withFlipRetry(const DiskMapOptions& options, Route route) {
   }
 }
 
-// The Euclidean route once the input is known to be a disk (`whole`: its triangulation).
+// The Euclidean route once the input is known to be a disk (`whole`: its unflipped triangulation).
 DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
                          const std::vector<std::array<int, 3>>& triangles,
                          const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
@@ -299,15 +299,28 @@ DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
   });
 }
 
+// The route options.geometry picks, once the input is known to be a disk.
+DiskMap diskMapByRoute(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
+  switch (options.geometry) {
+    case Geometry::Spherical:
+      return withFlipRetry(options, [&](const DiskMapOptions& o) {
+        return detail::sphericalDiskMap(points, whole, o);
+      });
+    case Geometry::Hyperbolic:
+      return withFlipRetry(options, [&](const DiskMapOptions& o) {
+        return detail::hyperbolicDiskMap(points, whole, o);
+      });
+    case Geometry::Euclidean: break;
+  }
+  return euclideanDiskMap(points, triangles, whole, options);
+}
+
 }  // namespace
 
 DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   requireDisk(mesh, "mesh");
-  if (options.geometry != Geometry::Euclidean)
-    return withFlipRetry(options, [&](const DiskMapOptions& o) {
-      return o.geometry == Geometry::Spherical ? detail::sphericalDiskMap(mesh, o)
-                                               : detail::hyperbolicDiskMap(mesh, o);
-    });
   std::vector<Vec3d> points;
   points.reserve(mesh.n_vertices());
   for (int v = 0; v < static_cast<int>(mesh.n_vertices()); ++v) {
@@ -317,7 +330,7 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   const std::vector<std::array<int, 3>> triangles = meshTriangles(mesh);
   const IntrinsicTriangulation whole =
       buildTriangulation(static_cast<int>(points.size()), triangles);
-  return euclideanDiskMap(points, triangles, whole, options);
+  return diskMapByRoute(points, triangles, whole, options);
 }
 
 std::vector<double> distanceToBoundary(const IntrinsicTriangulation& tri,
@@ -346,15 +359,7 @@ DiskMap computeDiskMap(const std::vector<Vec3d>& points,
     throw Error(ErrorCode::InvalidInput,
                 "disk map: the triangulation does not match the points and triangles");
   requireDisk(whole, "mesh");
-  if (options.geometry != Geometry::Euclidean) {  // the curved routes work on a TriMesh
-    TriMesh mesh;
-    std::vector<TriMesh::VertexHandle> handles;
-    for (const Vec3d& p : points) handles.push_back(mesh.add_vertex({p.x, p.y, p.z}));
-    for (const auto& t : triangles)
-      mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
-    return computeDiskMap(mesh, options);
-  }
-  return euclideanDiskMap(points, triangles, whole, options);
+  return diskMapByRoute(points, triangles, whole, options);
 }
 
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {

@@ -82,12 +82,13 @@ RicciFlowReport flowToHemisphere(IntrinsicTriangulation& tri, CirclePackingMetri
 
 }  // namespace
 
-DiskMap sphericalDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
+DiskMap sphericalDiskMap(const std::vector<Vec3d>& points, const IntrinsicTriangulation& whole,
+                         const DiskMapOptions& options) {
   DiskMap result;
   result.geometry = Geometry::Spherical;
-  IntrinsicTriangulation tri = buildTriangulation(mesh);
+  IntrinsicTriangulation tri = whole;  // flips change it
   CirclePackingMetric metric = initialMetric(
-      tri, lengthsScaledToArea(tri, mesh, 2 * std::numbers::pi), options.scheme,
+      tri, lengthsScaledToArea(tri, points, 2 * std::numbers::pi), options.scheme,
       Geometry::Spherical);
   result.flow = flowToHemisphere(tri, metric, diskMapFlowOptions(options));
   result.usedFlips = result.flow.flipsStartedAt >= 0;
