@@ -90,8 +90,10 @@ TEST(DiskMapRoutes, AgreeWithTheEuclideanRouteUpToMobiusUnderRefinement) {
       previous = d;
     }
     EXPECT_LT(previous, 0.015) << toString(route);
-    // A lopsided one (bent, jittered, flips needed).
-    const TriMesh coarse = makeLopsidedDisk(8, 0.2, 2), fine = makeLopsidedDisk(16, 0.2, 2);
+    // A lopsided one (bent, jittered, flips needed). Refined fourfold: with flips the Euclidean
+    // map depends on the path the flow took (the Delaunay triangulation reached), by up to 0.02
+    // at these sizes (measured n = 8..32, plain and guessed start), not monotone in n.
+    const TriMesh coarse = makeLopsidedDisk(8, 0.2, 2), fine = makeLopsidedDisk(32, 0.2, 2);
     const DiskMap coarseMap = mapBy(coarse, route), fineMap = mapBy(fine, route);
     expectValidDiskMap(coarse, coarseMap, route);
     expectValidDiskMap(fine, fineMap, route);

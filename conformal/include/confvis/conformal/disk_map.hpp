@@ -35,13 +35,17 @@ struct DiskMapOptions {
   double tolerance = 1e-10;
   int maxIterations = 100;
   FlipPolicy flips = FlipPolicy::Auto;
-  int removedFace = -1;  // Euclidean route: face to remove; -1 = the one farthest from the boundary
+  // Euclidean route: face to remove; -1 = the roundest of those (nearly) farthest from the
+  // boundary.
+  int removedFace = -1;
   // Euclidean route: start the flow from an estimate of the flattening factor (log map around
   // the removed face, corners opened to π) instead of the embedded metric. Fewer Newton steps on
-  // refined display templates (cave5 20 cm: 6 + 5 -> 4 + 5), the same map to 1e-8 where no
-  // flips come on (with flips the Delaunay triangulation reached depends on the start). Off by
-  // default: a coarse irregular disk can stall from it (the map is then computed again without).
-  bool flatteningGuess = false;
+  // refined display templates (cave5 20 cm: 6 + 5 -> 4 + 5) and on the lopsided benchmark disks
+  // (see conformal/README.md), the same map to 1e-8 where no flips come on (with flips the
+  // Delaunay triangulation reached depends on the start). A coarse irregular disk can stall from
+  // it: the map is then computed again from the embedded metric. Ignored by the tangential and
+  // Thurston schemes, whose starting metric is not the embedded one.
+  bool flatteningGuess = true;
   std::function<void(int, double)> onIteration;
 };
 
