@@ -1,7 +1,7 @@
 #pragma once
 // The Riemann map of a topological disk onto the unit disk, by one of three routes (the map is
 // unique up to a Möbius map of the disk, so the routes can be compared after alignment):
-// - Euclidean (dissertation §8.2, the default): remove the face farthest from the boundary,
+// - Euclidean (dissertation §8.2, the default): remove a face (nearly) farthest from the boundary,
 //   flatten the annulus by Euclidean Ricci flow with zero target curvature everywhere (a flat
 //   cylinder with straight boundaries), cut it along a shortest edge path, lay it out, scale
 //   the period to 2πi, apply exp, normalise the outer circle to 1.
@@ -76,7 +76,7 @@ DiskMap computeDiskMap(const std::vector<Vec3d>& points,
                        const IntrinsicTriangulation& whole, const DiskMapOptions& options = {});
 
 // Per vertex, the shortest distance along edges (edgeLengths in tri's edge order) to the
-// boundary: the Euclidean route removes a face farthest from the boundary by it.
+// boundary: the Euclidean route removes a face (nearly) farthest from the boundary by it.
 std::vector<double> distanceToBoundary(const IntrinsicTriangulation& tri,
                                        const std::vector<double>& edgeLengths);
 
