@@ -135,9 +135,10 @@ void addFlatteningGuess(const IntrinsicTriangulation& annulus, const std::vector
       const Vec3d& p = points[annulus.faceVertices[f][0]];
       int nearest = -1;
       double nearestDistance2 = dot(p - centre, p - centre);
-      for (int k = 0; k < coneCount; ++k)
-        if (const double d2 = dot(p - cones[k].position, p - cones[k].position); d2 < nearestDistance2)
-          nearest = k, nearestDistance2 = d2;
+      for (int k = 0; k < coneCount; ++k) {
+        const Vec3d d = p - cones[k].position;
+        if (dot(d, d) < nearestDistance2) nearest = k, nearestDistance2 = dot(d, d);
+      }
       if (nearest < 0 || coneScale[nearest] < 0.1)
         halveAll = true;
       else

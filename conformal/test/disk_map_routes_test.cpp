@@ -113,7 +113,8 @@ TEST(DiskMapRoutes, LopsidedMeshesConvergeToTheTolerance) {
       const TriMesh mesh = makeLopsidedDisk(24, 0.2, seed);
       const DiskMap map = mapBy(mesh, route);
       expectValidDiskMap(mesh, map, route);
-      // The Euclidean route's removed face costs it accuracy at this size (0.021 at most, measured).
+      // The Euclidean route's removed face costs it accuracy at this size (0.021 at most,
+      // measured).
       EXPECT_LT(alignedDistance(mesh, map.uv, computeDiskMap(mesh).uv), 0.03)
           << toString(route) << " seed " << seed;
     }
