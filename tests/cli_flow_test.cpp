@@ -66,6 +66,15 @@ TEST(CliFlow, BadInputGivesOneClearErrorAndNonZeroExit) {
   const CliRun closed = runCli("flow " + sphere.string());
   EXPECT_EQ(closed.exitCode, 2);
   EXPECT_NE(closed.output.find("Euler characteristic 2"), std::string::npos) << closed.output;
+  EXPECT_NE(closed.output.find("0 boundary loops"), std::string::npos) << closed.output;
+  const fs::path pants = scratch("pants.obj");
+  ASSERT_EQ(runCli("mesh pants -n 8 -o " + pants.string()).exitCode, 0);
+  for (const char* route : {"euclidean", "spherical", "hyperbolic"}) {
+    const CliRun holes = runCli("flow " + pants.string() + " --geometry " + route);
+    EXPECT_EQ(holes.exitCode, 2) << route;
+    EXPECT_NE(holes.output.find("Euler characteristic -1"), std::string::npos) << holes.output;
+    EXPECT_NE(holes.output.find("3 boundary loops"), std::string::npos) << holes.output;
+  }
 
   const fs::path garbage = scratch("garbage.obj");
   std::ofstream(garbage) << "this is not a mesh\n";

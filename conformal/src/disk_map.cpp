@@ -134,21 +134,33 @@ int dijkstra(const IntrinsicTriangulation& tri, const std::vector<double>& lengt
   return -1;
 }
 
-int faceFarthestFromBoundary(const IntrinsicTriangulation& tri, const std::vector<double>& lengths) {
+// The face to remove: among the faces nearly as far from the boundary as the farthest (within
+// 5%), the roundest. The removed face's corners carry the flow's largest initial error (their
+// angle sums must open to π), and an obtuse one (angles 0.30, 0.66, 2.18 on the 100k-vertex
+// lopsided benchmark disk) also leaves the flattening guess's log term far off near it: max
+// initial error 2.8 -> 2.2 plain, 1.6 -> 1.2 with the guess (Yamabe, 100k). Faces between 2% and
+// 10% off gave the same Newton steps at 10k and 100k for all four conformal schemes.
+int faceToRemove(const IntrinsicTriangulation& tri, const std::vector<double>& lengths) {
   const std::vector<double> dist = distanceToBoundary(tri, lengths);
-  int best = -1;
-  double bestScore = 0;
-  for (int f = 0; f < tri.faceCount(); ++f) {
+  auto distance = [&](int f) {
     const auto& fv = tri.faceVertices[f];
-    const double score = std::min({dist[fv[0]], dist[fv[1]], dist[fv[2]]});
-    if (score > bestScore) {
-      bestScore = score;
-      best = f;
-    }
-  }
-  if (best < 0)
+    return std::min({dist[fv[0]], dist[fv[1]], dist[fv[2]]});
+  };
+  double farthest = 0;
+  for (int f = 0; f < tri.faceCount(); ++f) farthest = std::max(farthest, distance(f));
+  if (!(farthest > 0))
     throw Error(ErrorCode::InvalidInput,
                 "mesh is too coarse for a disk map: every face touches the boundary (refine it)");
+  int best = -1;
+  double bestRoundness = -1;
+  for (int f = 0; f < tri.faceCount(); ++f) {
+    if (distance(f) < 0.95 * farthest) continue;
+    const auto& fe = tri.faceEdges[f];
+    const double a = lengths[fe[0]], b = lengths[fe[1]], c = lengths[fe[2]];
+    // 8 × (inradius / circumradius): 1 for an equilateral triangle, 0 for a degenerate one.
+    const double roundness = (b + c - a) * (c + a - b) * (a + b - c) / (a * b * c);
+    if (roundness > bestRoundness) bestRoundness = roundness, best = f;
+  }
   return best;
 }
 
@@ -277,16 +289,22 @@ DiskMap withFlipRetry(const DiskMapOptions& options, Route route) {
   }
 }
 
-// The Euclidean route once the input is known to be a disk (`whole`: its triangulation).
+// The Euclidean route once the input is known to be a disk (`whole`: its unflipped triangulation).
 DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
                          const std::vector<std::array<int, 3>>& triangles,
                          const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
   const int removed = options.removedFace >= 0
                           ? options.removedFace
-                          : faceFarthestFromBoundary(whole, embeddedEdgeLengths(whole, points));
+                          : faceToRemove(whole, embeddedEdgeLengths(whole, points));
   if (removed >= static_cast<int>(triangles.size()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
-  return withFlipRetry(options, [&](const DiskMapOptions& o) {
+  // The guess corrects the embedded metric, which tangential and Thurston packings do not start
+  // from: over the 720 maps of tools/bench/flow_sweep.sh it cost them Newton steps (mean 4.94 ->
+  // 5.16 and 5.01 -> 5.59) while the other four gained (e.g. virtual 5.55 -> 5.15).
+  DiskMapOptions routeOptions = options;
+  if (options.scheme == Scheme::Tangential || options.scheme == Scheme::Thurston)
+    routeOptions.flatteningGuess = false;
+  return withFlipRetry(routeOptions, [&](const DiskMapOptions& o) {
     if (!o.flatteningGuess) return mapAnnulus(points, triangles, whole, removed, o);
     try {
       return mapAnnulus(points, triangles, whole, removed, o);
@@ -299,15 +317,28 @@ DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
   });
 }
 
+// The route options.geometry picks, once the input is known to be a disk.
+DiskMap diskMapByRoute(const std::vector<Vec3d>& points,
+                       const std::vector<std::array<int, 3>>& triangles,
+                       const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
+  switch (options.geometry) {
+    case Geometry::Spherical:
+      return withFlipRetry(options, [&](const DiskMapOptions& o) {
+        return detail::sphericalDiskMap(points, whole, o);
+      });
+    case Geometry::Hyperbolic:
+      return withFlipRetry(options, [&](const DiskMapOptions& o) {
+        return detail::hyperbolicDiskMap(points, whole, o);
+      });
+    case Geometry::Euclidean: break;
+  }
+  return euclideanDiskMap(points, triangles, whole, options);
+}
+
 }  // namespace
 
 DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   requireDisk(mesh, "mesh");
-  if (options.geometry != Geometry::Euclidean)
-    return withFlipRetry(options, [&](const DiskMapOptions& o) {
-      return o.geometry == Geometry::Spherical ? detail::sphericalDiskMap(mesh, o)
-                                               : detail::hyperbolicDiskMap(mesh, o);
-    });
   std::vector<Vec3d> points;
   points.reserve(mesh.n_vertices());
   for (int v = 0; v < static_cast<int>(mesh.n_vertices()); ++v) {
@@ -317,7 +348,7 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
   const std::vector<std::array<int, 3>> triangles = meshTriangles(mesh);
   const IntrinsicTriangulation whole =
       buildTriangulation(static_cast<int>(points.size()), triangles);
-  return euclideanDiskMap(points, triangles, whole, options);
+  return diskMapByRoute(points, triangles, whole, options);
 }
 
 std::vector<double> distanceToBoundary(const IntrinsicTriangulation& tri,
@@ -346,15 +377,7 @@ DiskMap computeDiskMap(const std::vector<Vec3d>& points,
     throw Error(ErrorCode::InvalidInput,
                 "disk map: the triangulation does not match the points and triangles");
   requireDisk(whole, "mesh");
-  if (options.geometry != Geometry::Euclidean) {  // the curved routes work on a TriMesh
-    TriMesh mesh;
-    std::vector<TriMesh::VertexHandle> handles;
-    for (const Vec3d& p : points) handles.push_back(mesh.add_vertex({p.x, p.y, p.z}));
-    for (const auto& t : triangles)
-      mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]);
-    return computeDiskMap(mesh, options);
-  }
-  return euclideanDiskMap(points, triangles, whole, options);
+  return diskMapByRoute(points, triangles, whole, options);
 }
 
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c) {

@@ -139,17 +139,21 @@ class BoundaryAcceleration {
 
 }  // namespace
 
-DiskMap hyperbolicDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
+DiskMap hyperbolicDiskMap(const std::vector<Vec3d>& points, const IntrinsicTriangulation& whole,
+                          const DiskMapOptions& options) {
   DiskMap result;
   result.geometry = Geometry::Hyperbolic;
-  IntrinsicTriangulation tri = buildTriangulation(mesh);
-  CirclePackingMetric metric = initialMetric(tri, lengthsScaledToArea(tri, mesh, kInitialArea),
+  IntrinsicTriangulation tri = whole;  // flips change it
+  CirclePackingMetric metric = initialMetric(tri, lengthsScaledToArea(tri, points, kInitialArea),
                                              options.scheme, Geometry::Hyperbolic);
   const BoundaryCycle cycle = boundaryCycle(tri);
   std::vector<double> target(tri.vertexCount, 0.0), next = target;
   inscribedTargets(cycle, metric, tri, target);
   BoundaryAcceleration acceleration(cycle.vertices.size());
   RicciFlowOptions flowOptions = diskMapFlowOptions(options);
+  // The flows stop at half the tolerance: the other half is left for the last change of the
+  // boundary targets, so that the error against the final ones can meet the tolerance.
+  flowOptions.tolerance = 0.5 * options.tolerance;
   // Inside the Newton loop: once the flow has (nearly) reached the current targets, replace
   // them by those of the current boundary (accelerated). The last updates are plain, so that on
   // convergence the targets are exactly the inscribed polygon's.
@@ -171,22 +175,27 @@ DiskMap hyperbolicDiskMap(const TriMesh& mesh, const DiskMapOptions& options) {
     ++result.boundaryUpdates;
     return true;
   };
-  double change = 0;
+  // The error reported is the true one: the final metric's curvature against the targets of
+  // its own boundary (zero inside, the inscribed polygon's on the boundary).
+  double error = 0;
   for (int flows = 1;; ++flows) {
     accumulateFlowReport(result.flow, runRicciFlow(tri, metric, target, flowOptions));
     inscribedTargets(cycle, metric, tri, next);
-    change = 0;
-    for (int v : cycle.vertices) change = std::max(change, std::abs(next[v] - target[v]));
-    if (change <= options.tolerance) break;
+    const std::vector<double> curvature = vertexCurvature(tri, metric);
+    error = 0;
+    for (int v = 0; v < tri.vertexCount; ++v)
+      error = std::max(error, std::abs(curvature[v] - next[v]));
+    if (error <= options.tolerance) break;
     if (flows >= 10) {
       std::ostringstream s;
-      s << "hyperbolic disk map: the boundary curvature still changes by " << change << " after "
-        << result.boundaryUpdates << " updates (tolerance " << options.tolerance << ")";
+      s << "hyperbolic disk map: max curvature error " << error
+        << " against the boundary's inscribed polygon after " << result.boundaryUpdates
+        << " boundary updates (tolerance " << options.tolerance << ")";
       throw Error(ErrorCode::Unreachable, s.str());
     }
     target.swap(next);
   }
-  result.flow.maxCurvatureError += change;  // against the final inscribed targets, at most
+  result.flow.maxCurvatureError = error;
   result.usedFlips = result.flow.flipsStartedAt >= 0;
   const std::vector<Point> p = layOutOnHyperboloid(tri, metricEdgeLengths(tri, metric));
 

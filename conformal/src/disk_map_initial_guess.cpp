@@ -62,14 +62,21 @@ std::vector<Cone> boundaryCones(const IntrinsicTriangulation& tri, const std::ve
   return cones;
 }
 
-bool everyTriangleValid(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
-                        std::vector<double>& scratch) {
-  if (!euclideanEdgeLengths(tri, metric, scratch)) return false;
-  for (const auto& fe : tri.faceEdges) {
-    const double a = scratch[fe[0]], b = scratch[fe[1]], c = scratch[fe[2]];
-    if (!(a < b + c && b < a + c && c < a + b)) return false;
+// The faces the metric leaves invalid (all of them if an edge has no length).
+std::vector<int> invalidFaces(const IntrinsicTriangulation& tri, const CirclePackingMetric& metric,
+                              std::vector<double>& scratch) {
+  std::vector<int> invalid;
+  if (!euclideanEdgeLengths(tri, metric, scratch)) {
+    invalid.resize(tri.faceCount());
+    for (int f = 0; f < tri.faceCount(); ++f) invalid[f] = f;
+    return invalid;
   }
-  return true;
+  for (int f = 0; f < tri.faceCount(); ++f) {
+    const auto& fe = tri.faceEdges[f];
+    const double a = scratch[fe[0]], b = scratch[fe[1]], c = scratch[fe[2]];
+    if (!(a < b + c && b < a + c && c < a + b)) invalid.push_back(f);
+  }
+  return invalid;
 }
 
 }  // namespace
@@ -94,21 +101,53 @@ void addFlatteningGuess(const IntrinsicTriangulation& annulus, const std::vector
                         CirclePackingMetric& metric) {
   const Vec3d centre = (1.0 / 3) * (points[removed[0]] + points[removed[1]] + points[removed[2]]);
   const std::vector<Cone> cones = boundaryCones(annulus, points, lengths, removed);
-  std::vector<double> guess(annulus.vertexCount);
-  for (int v = 0; v < annulus.vertexCount; ++v) {
+  const int n = annulus.vertexCount, coneCount = static_cast<int>(cones.size());
+  // The log term and each cone's term apart: a cone can be weakened alone.
+  std::vector<double> logTerm(n), coneTerm(static_cast<std::size_t>(n) * coneCount);
+  for (int v = 0; v < n; ++v) {
     const Vec3d toCentre = points[v] - centre;
-    double g = -0.5 * std::log(dot(toCentre, toCentre));
-    for (const Cone& c : cones) {
-      const Vec3d d = points[v] - c.position;
-      g += 0.5 * c.exponent * std::log(dot(d, d) + c.smoothing2);
+    logTerm[v] = -0.5 * std::log(dot(toCentre, toCentre));
+    for (int k = 0; k < coneCount; ++k) {
+      const Vec3d d = points[v] - cones[k].position;
+      coneTerm[static_cast<std::size_t>(v) * coneCount + k] =
+          0.5 * cones[k].exponent * std::log(dot(d, d) + cones[k].smoothing2);
     }
-    guess[v] = g;
   }
+  // Where the guess leaves triangles invalid, the factor is halved: a cone's alone where the
+  // triangles are nearer to that corner than to the removed face (the corners of a fine mesh
+  // sit in a few tiny triangles that a full opening inverts: lopsided disk of 100k vertices,
+  // 8 faces at its four corners), else the whole guess. Nothing is left after 4 halvings.
   const std::vector<double> start = metric.u;
-  std::vector<double> scratch;
-  for (double scale = 1; scale > 0.1; scale *= 0.5) {
-    for (int v = 0; v < annulus.vertexCount; ++v) metric.u[v] = start[v] + scale * guess[v];
-    if (everyTriangleValid(annulus, metric, scratch)) return;
+  std::vector<double> scratch, coneScale(coneCount, 1.0);
+  double scale = 1;
+  for (int attempt = 0; attempt < 4 * (coneCount + 1); ++attempt) {
+    for (int v = 0; v < n; ++v) {
+      double g = logTerm[v];
+      for (int k = 0; k < coneCount; ++k)
+        g += coneScale[k] * coneTerm[static_cast<std::size_t>(v) * coneCount + k];
+      metric.u[v] = start[v] + scale * g;
+    }
+    const std::vector<int> invalid = invalidFaces(annulus, metric, scratch);
+    if (invalid.empty()) return;
+    std::vector<char> halve(coneCount, 0);
+    bool halveAll = false;
+    for (int f : invalid) {
+      const Vec3d& p = points[annulus.faceVertices[f][0]];
+      int nearest = -1;
+      double nearestDistance2 = dot(p - centre, p - centre);
+      for (int k = 0; k < coneCount; ++k) {
+        const Vec3d d = p - cones[k].position;
+        if (dot(d, d) < nearestDistance2) nearest = k, nearestDistance2 = dot(d, d);
+      }
+      if (nearest < 0 || coneScale[nearest] < 0.1)
+        halveAll = true;
+      else
+        halve[nearest] = 1;
+    }
+    if (halveAll) scale *= 0.5;
+    if (scale < 0.1) break;
+    for (int k = 0; k < coneCount; ++k)
+      if (halve[k]) coneScale[k] *= 0.5;
   }
   metric.u = start;
 }

@@ -17,9 +17,9 @@ RicciFlowOptions diskMapFlowOptions(const DiskMapOptions& options) {
   return flowOptions;
 }
 
-std::vector<double> lengthsScaledToArea(const IntrinsicTriangulation& tri, const TriMesh& mesh,
-                                        double area) {
-  std::vector<double> lengths = embeddedEdgeLengths(tri, mesh);
+std::vector<double> lengthsScaledToArea(const IntrinsicTriangulation& tri,
+                                        const std::vector<Vec3d>& points, double area) {
+  std::vector<double> lengths = embeddedEdgeLengths(tri, points);
   double meshArea = 0;
   for (const auto& fe : tri.faceEdges) {
     const double a = lengths[fe[0]], b = lengths[fe[1]], c = lengths[fe[2]];

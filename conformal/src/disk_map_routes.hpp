@@ -7,16 +7,19 @@
 
 namespace confvis::conformal::detail {
 
-DiskMap sphericalDiskMap(const TriMesh& mesh, const DiskMapOptions& options);
-DiskMap hyperbolicDiskMap(const TriMesh& mesh, const DiskMapOptions& options);
+// `whole`: the unflipped triangulation of the disk, vertices numbered as `points`.
+DiskMap sphericalDiskMap(const std::vector<Vec3d>& points, const IntrinsicTriangulation& whole,
+                         const DiskMapOptions& options);
+DiskMap hyperbolicDiskMap(const std::vector<Vec3d>& points, const IntrinsicTriangulation& whole,
+                          const DiskMapOptions& options);
 
 // The flow options a disk map runs with.
 RicciFlowOptions diskMapFlowOptions(const DiskMapOptions& options);
 
 // The mesh's edge lengths scaled so that its total area is `area` (the curved routes need the
 // mesh at the size of the model surface they end up on).
-std::vector<double> lengthsScaledToArea(const IntrinsicTriangulation& tri, const TriMesh& mesh,
-                                        double area);
+std::vector<double> lengthsScaledToArea(const IntrinsicTriangulation& tri,
+                                        const std::vector<Vec3d>& points, double area);
 
 // The boundary as a counter-clockwise cycle: vertices[k] → vertices[k+1] along edges[k].
 struct BoundaryCycle {

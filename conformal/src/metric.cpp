@@ -245,16 +245,23 @@ bool flippedEdgeLength(const IntrinsicTriangulation& tri, const MetricEvaluation
   if (!(angleQ < std::numbers::pi - margin && angleR < std::numbers::pi - margin)) return false;
   const double a = eval.edges[tri.faceEdges[f0][(c0 + 2) % 3]].length;  // pq
   const double b = eval.edges[tri.faceEdges[f1][(c1 + 1) % 3]].length;  // qs
-  const double cosA = std::cos(angleQ);
   switch (geometry) {
-    case Geometry::Euclidean: length = std::sqrt(a * a + b * b - 2 * a * b * cosA); break;
-    case Geometry::Hyperbolic:
-      length = std::acosh(std::cosh(a) * std::cosh(b) - std::sinh(a) * std::sinh(b) * cosA);
+    case Geometry::Euclidean:
+      length = std::sqrt(a * a + b * b - 2 * a * b * std::cos(angleQ));
       break;
-    case Geometry::Spherical:
-      length = std::acos(std::clamp(std::cos(a) * std::cos(b) + std::sin(a) * std::sin(b) * cosA,
-                                    -1.0, 1.0));
+    // The cosine laws in haversine form, as edgeLength: acosh / acos of a value near 1 would
+    // lose half the digits of a short diagonal. cosh d − 1 = 2 sinh²((a−b)/2) +
+    // 2 sinh a sinh b sin²(A/2); 1 − cos d = 2 sin²((a−b)/2) + 2 sin a sin b sin²(A/2).
+    case Geometry::Hyperbolic: {
+      const double h = std::sinh(0.5 * (a - b)), s = std::sin(0.5 * angleQ);
+      length = 2 * std::asinh(std::sqrt(h * h + std::sinh(a) * std::sinh(b) * s * s));
       break;
+    }
+    case Geometry::Spherical: {
+      const double h = std::sin(0.5 * (a - b)), s = std::sin(0.5 * angleQ);
+      length = 2 * std::asin(std::min(1.0, std::sqrt(h * h + std::sin(a) * std::sin(b) * s * s)));
+      break;
+    }
   }
   return std::isfinite(length) && length > 0;
 }

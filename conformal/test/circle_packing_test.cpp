@@ -33,12 +33,13 @@ std::string comboName(const testing::TestParamInfo<Combo>& info) {
   return std::string(toString(info.param.scheme)) + "_" + toString(info.param.geometry);
 }
 
-// A small irregular disk, scaled so that its edges (~0.1) make sense in every geometry.
+// A small irregular disk (random jitter from `seed`), scaled so that its edges (~0.1) make
+// sense in every geometry.
 struct Fixture {
-  TriMesh mesh = makeLopsidedDisk(5, 0.4, 7);
+  TriMesh mesh;
   IntrinsicTriangulation tri;
   std::vector<double> lengths;
-  Fixture() {
+  explicit Fixture(std::uint64_t seed = 7) : mesh(makeLopsidedDisk(5, 0.4, seed)) {
     for (auto v : mesh.vertices()) mesh.point(v) *= 0.25;
     tri = buildTriangulation(mesh);
     lengths = embeddedEdgeLengths(tri, mesh);
@@ -48,31 +49,34 @@ struct Fixture {
 class EveryCombination : public testing::TestWithParam<Combo> {};
 
 TEST_P(EveryCombination, HessianMatchesFiniteDifferencesAndIsSymmetric) {
-  Fixture fx;
-  CirclePackingMetric metric =
-      initialMetric(fx.tri, fx.lengths, GetParam().scheme, GetParam().geometry);
-  // Move away from the initial point so the check is not at a special configuration.
-  std::mt19937 rng(3);
-  std::uniform_real_distribution<double> jitter(-0.03, 0.03);
-  for (double& u : metric.u) u += jitter(rng);
-  const Eigen::MatrixXd H = Eigen::MatrixXd(curvatureJacobian(fx.tri, metric));
-  const int n = fx.tri.vertexCount;
-  const double h = 1e-6;
-  double maxDiff = 0, maxEntry = 0;
-  for (int j = 0; j < n; ++j) {
-    CirclePackingMetric plus = metric, minus = metric;
-    plus.u[j] += h;
-    minus.u[j] -= h;
-    const auto Kp = vertexCurvature(fx.tri, plus), Km = vertexCurvature(fx.tri, minus);
-    for (int i = 0; i < n; ++i) {
-      const double fd = (Kp[i] - Km[i]) / (2 * h);
-      maxDiff = std::max(maxDiff, std::abs(fd - H(i, j)));
-      maxEntry = std::max(maxEntry, std::abs(H(i, j)));
+  for (std::uint64_t seed : {7u, 8u, 9u}) {  // three random meshes, each at a random metric
+    Fixture fx(seed);
+    CirclePackingMetric metric =
+        initialMetric(fx.tri, fx.lengths, GetParam().scheme, GetParam().geometry);
+    // Move away from the initial point so the check is not at a special configuration.
+    std::mt19937 rng(static_cast<unsigned>(seed));
+    std::uniform_real_distribution<double> jitter(-0.03, 0.03);
+    for (double& u : metric.u) u += jitter(rng);
+    const Eigen::MatrixXd H = Eigen::MatrixXd(curvatureJacobian(fx.tri, metric));
+    const int n = fx.tri.vertexCount;
+    const double h = 1e-6;
+    double maxDiff = 0, maxEntry = 0;
+    for (int j = 0; j < n; ++j) {
+      CirclePackingMetric plus = metric, minus = metric;
+      plus.u[j] += h;
+      minus.u[j] -= h;
+      const auto Kp = vertexCurvature(fx.tri, plus), Km = vertexCurvature(fx.tri, minus);
+      for (int i = 0; i < n; ++i) {
+        const double fd = (Kp[i] - Km[i]) / (2 * h);
+        maxDiff = std::max(maxDiff, std::abs(fd - H(i, j)));
+        maxEntry = std::max(maxEntry, std::abs(H(i, j)));
+      }
     }
+    EXPECT_GT(maxEntry, 0.1) << "seed " << seed;
+    EXPECT_LT(maxDiff, 1e-6 * std::max(1.0, maxEntry))
+        << "seed " << seed << ", max entry " << maxEntry;
+    EXPECT_LT((H - H.transpose()).cwiseAbs().maxCoeff(), 1e-9 * maxEntry) << "seed " << seed;
   }
-  EXPECT_GT(maxEntry, 0.1);
-  EXPECT_LT(maxDiff, 1e-6 * std::max(1.0, maxEntry)) << "max entry " << maxEntry;
-  EXPECT_LT((H - H.transpose()).cwiseAbs().maxCoeff(), 1e-9 * maxEntry);
 }
 
 TEST_P(EveryCombination, DiscreteGaussBonnetHolds) {
@@ -112,6 +116,24 @@ TEST_P(EveryCombination, InitialMetricReproducesInputLengths) {
   } else {
     EXPECT_LT(maxRelative, 1e-12);
   }
+}
+
+// Edges of ~1e-4 (the fixture shrunk a thousandfold): (4.1.2) through acosh / acos of a value
+// rounded near 1 kept only about half the digits in the curved geometries (relative error
+// ~1e-8), enough to stall the flow of a 600-vertex disk near 1e-9.
+TEST(CirclePacking, ShortCurvedEdgesKeepEveryDigit) {
+  Fixture fx;
+  for (double& l : fx.lengths) l *= 1e-3;
+  for (Geometry geometry : {Geometry::Hyperbolic, Geometry::Spherical})
+    for (Scheme scheme : {Scheme::InversiveDistance, Scheme::Yamabe, Scheme::VirtualRadius,
+                          Scheme::Mixed}) {
+      const auto metric = initialMetric(fx.tri, fx.lengths, scheme, geometry);
+      const auto lengths = metricEdgeLengths(fx.tri, metric);
+      double maxRelative = 0;
+      for (int e = 0; e < fx.tri.edgeCount(); ++e)
+        maxRelative = std::max(maxRelative, std::abs(lengths[e] - fx.lengths[e]) / fx.lengths[e]);
+      EXPECT_LT(maxRelative, 1e-13) << toString(scheme) << " " << toString(geometry);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(UnifiedRicciFlow, EveryCombination, testing::ValuesIn(allCombos()),

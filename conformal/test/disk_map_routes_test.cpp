@@ -3,6 +3,7 @@
 // irregular disks every route gives the same map up to Möbius, ever closer under refinement.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -42,7 +43,7 @@ double alignedDistance(const TriMesh& mesh, std::vector<Complex> a, std::vector<
 
 void expectValidDiskMap(const TriMesh& mesh, const DiskMap& map, Geometry route) {
   EXPECT_EQ(map.geometry, route);
-  EXPECT_LE(map.flow.maxCurvatureError, 1e-9) << toString(route);
+  EXPECT_LE(map.flow.maxCurvatureError, 1e-10) << toString(route);  // the default tolerance
   const DistortionStats stats = measureDistortion(mesh, map.uv);
   EXPECT_EQ(stats.flippedFaces, 0) << toString(route);
   EXPECT_LT(stats.boundaryRoundness, 1e-8) << toString(route);
@@ -89,8 +90,10 @@ TEST(DiskMapRoutes, AgreeWithTheEuclideanRouteUpToMobiusUnderRefinement) {
       previous = d;
     }
     EXPECT_LT(previous, 0.015) << toString(route);
-    // A lopsided one (bent, jittered, flips needed).
-    const TriMesh coarse = makeLopsidedDisk(8, 0.2, 2), fine = makeLopsidedDisk(16, 0.2, 2);
+    // A lopsided one (bent, jittered, flips needed). Refined fourfold: with flips the Euclidean
+    // map depends on the path the flow took (the Delaunay triangulation reached), by up to 0.02
+    // at these sizes (measured n = 8..32, plain and guessed start), not monotone in n.
+    const TriMesh coarse = makeLopsidedDisk(8, 0.2, 2), fine = makeLopsidedDisk(32, 0.2, 2);
     const DiskMap coarseMap = mapBy(coarse, route), fineMap = mapBy(fine, route);
     expectValidDiskMap(coarse, coarseMap, route);
     expectValidDiskMap(fine, fineMap, route);
@@ -98,6 +101,40 @@ TEST(DiskMapRoutes, AgreeWithTheEuclideanRouteUpToMobiusUnderRefinement) {
     const double dFine = alignedDistance(fine, fineMap.uv, computeDiskMap(fine).uv);
     EXPECT_LT(dFine, dCoarse) << toString(route);
     EXPECT_LT(dFine, 0.015) << toString(route);
+  }
+}
+
+// From n = 24 the curved routes stalled near 1e-9 on these meshes (every seed tried): their
+// edge lengths went through acosh / acos of values rounded near 1, noise the flow could not get
+// below. A lopsided disk needs the spherical continuation too.
+TEST(DiskMapRoutes, LopsidedMeshesConvergeToTheTolerance) {
+  for (Geometry route : kCurvedRoutes)
+    for (std::uint64_t seed : {1u, 3u}) {
+      const TriMesh mesh = makeLopsidedDisk(24, 0.2, seed);
+      const DiskMap map = mapBy(mesh, route);
+      expectValidDiskMap(mesh, map, route);
+      // The Euclidean route's removed face costs it accuracy at this size (0.021 at most,
+      // measured).
+      EXPECT_LT(alignedDistance(mesh, map.uv, computeDiskMap(mesh).uv), 0.03)
+          << toString(route) << " seed " << seed;
+    }
+}
+
+// The hyperbolic route's boundary targets depend on the metric: the error it reports is the
+// final metric's against its own inscribed polygon, and must meet the tolerance asked for (it
+// used to be a bound, the last flow's error plus the last target change, up to twice that).
+TEST(DiskMapRoutes, HyperbolicErrorMeetsTheToleranceAgainstTheFinalBoundary) {
+  for (std::uint64_t seed : {3u, 4u}) {
+    const TriMesh mesh = makeLopsidedDisk(16, 0.2, seed);
+    for (double tolerance : {1e-6, 1e-8, 1e-10}) {
+      DiskMapOptions options;
+      options.geometry = Geometry::Hyperbolic;
+      options.tolerance = tolerance;
+      const DiskMap map = computeDiskMap(mesh, options);
+      EXPECT_LE(map.flow.maxCurvatureError, tolerance) << "seed " << seed;
+      EXPECT_GT(map.flow.maxCurvatureError, 0) << "seed " << seed;
+      EXPECT_LT(measureDistortion(mesh, map.uv).boundaryRoundness, std::max(tolerance, 1e-8));
+    }
   }
 }
 

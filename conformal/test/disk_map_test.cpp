@@ -136,6 +136,17 @@ TEST(DiskMap, TriangleListGivesTheMeshMapAndRejectsMalformedLists) {
   ASSERT_EQ(fromList.uv.size(), fromMesh.uv.size());
   for (std::size_t v = 0; v < fromMesh.uv.size(); ++v) ASSERT_EQ(fromList.uv[v], fromMesh.uv[v]);
   EXPECT_EQ(fromList.removedFace, fromMesh.removedFace);
+  for (Geometry route : {Geometry::Spherical, Geometry::Hyperbolic}) {  // the curved routes too
+    DiskMapOptions options;
+    options.geometry = route;
+    const DiskMap curvedMesh = computeDiskMap(mesh, options);
+    const DiskMap curvedList = computeDiskMap(points, triangles, options);
+    EXPECT_EQ(curvedList.geometry, route);
+    EXPECT_EQ(curvedList.flow.iterations, curvedMesh.flow.iterations) << toString(route);
+    ASSERT_EQ(curvedList.uv.size(), curvedMesh.uv.size());
+    for (std::size_t v = 0; v < curvedMesh.uv.size(); ++v)
+      ASSERT_EQ(curvedList.uv[v], curvedMesh.uv[v]) << toString(route);
+  }
 
   auto rejection = [&](const std::vector<std::array<int, 3>>& list) {
     try {

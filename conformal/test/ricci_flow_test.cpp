@@ -102,8 +102,23 @@ TEST_P(EveryScheme, HyperbolicDiskConverges) {
   expectConverged(tri, metric, target, report);
 }
 
-// The robust schemes also handle an irregular, lopsided mesh (obtuse and sliver triangles) and
-// a pair of pants (χ = -1) in hyperbolic geometry once flips keep the triangulation Delaunay.
+// A surface of negative Euler characteristic (χ = -1) in hyperbolic geometry, every scheme: with
+// flips all six converge in 6-7 Newton steps (without, all stall near 4e-8 on this mesh).
+TEST_P(EveryScheme, HyperbolicPairOfPantsGetsGeodesicBoundaries) {
+  TriMesh mesh = makeDiskWithTwoHoles(9);
+  for (auto v : mesh.vertices()) mesh.point(v) *= 0.5;
+  auto tri = buildTriangulation(mesh);
+  ASSERT_EQ(tri.eulerCharacteristic(), -1);
+  auto metric = initialMetric(tri, embeddedEdgeLengths(tri, mesh), GetParam(), Geometry::Hyperbolic);
+  const std::vector<double> target(tri.vertexCount, 0.0);  // area 2π, geodesic boundaries
+  RicciFlowOptions options;
+  options.delaunayFlips = true;
+  const auto report = runRicciFlow(tri, metric, target, options);
+  expectConverged(tri, metric, target, report);
+}
+
+// The robust schemes also handle an irregular, lopsided mesh (obtuse and sliver triangles) once
+// flips keep the triangulation Delaunay.
 // Virtual radius joined them with initial radii of a third of the shortest incident edge (with
 // radii of the mean incident length both cases stalled).
 class RobustScheme : public testing::TestWithParam<Scheme> {};
@@ -113,19 +128,6 @@ TEST_P(RobustScheme, EuclideanIrregularDiskWithFlips) {
   auto tri = buildTriangulation(mesh);
   auto metric = initialMetric(tri, embeddedEdgeLengths(tri, mesh), GetParam(), Geometry::Euclidean);
   const auto target = roundBoundaryTarget(tri);
-  RicciFlowOptions options;
-  options.delaunayFlips = true;
-  const auto report = runRicciFlow(tri, metric, target, options);
-  expectConverged(tri, metric, target, report);
-}
-
-TEST_P(RobustScheme, HyperbolicPairOfPantsGetsGeodesicBoundaries) {
-  TriMesh mesh = makeDiskWithTwoHoles(9);
-  for (auto v : mesh.vertices()) mesh.point(v) *= 0.5;
-  auto tri = buildTriangulation(mesh);
-  ASSERT_EQ(tri.eulerCharacteristic(), -1);
-  auto metric = initialMetric(tri, embeddedEdgeLengths(tri, mesh), GetParam(), Geometry::Hyperbolic);
-  const std::vector<double> target(tri.vertexCount, 0.0);  // area 2π, geodesic boundaries
   RicciFlowOptions options;
   options.delaunayFlips = true;
   const auto report = runRicciFlow(tri, metric, target, options);

@@ -6,7 +6,7 @@
 //
 //   confvis_bench_flow [--sizes 10k,100k,1m] [--schemes yamabe,inversive,...|all]
 //                      [--geometry euclidean,spherical,hyperbolic|all]
-//                      [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]
+//                      [--flips auto|on|off] [--guess on|off] [--repeat N] [--jitter J] [--seed S]
 //                      [--mesh lopsided|hemisphere|round] [--breakdown]
 #include <Eigen/SparseCholesky>
 
@@ -141,14 +141,16 @@ double stereographicError(const TriMesh& mesh, std::vector<std::complex<double>>
   std::printf(
       "usage: confvis_bench_flow [--sizes 10k,100k,1m | --with-1m] [--schemes yamabe,...|all]\n"
       "                          [--geometry euclidean,spherical,hyperbolic|all]\n"
-      "                          [--flips auto|on|off] [--repeat N] [--jitter J] [--seed S]\n"
+      "                          [--flips auto|on|off] [--guess on|off] [--repeat N]\n"
+      "                          [--jitter J] [--seed S]\n"
       "                          [--mesh lopsided|hemisphere|round] [--breakdown]\n"
       "Disk maps of disk meshes (default lopsided) of about the given vertex counts (default\n"
       "10k,100k) by each route (default euclidean); seconds are the best of N runs (default 3),\n"
       "interleaved with the baseline's; 'CPU x Cholesky' is the same ratio in process CPU time\n"
       "(all threads), steadier on a loaded machine; on --mesh hemisphere, 'stereo' is the max\n"
       "distance to the stereographic projection after aligning both at three boundary markers;\n"
-      "--breakdown prints where the flow's time went and its error history to stderr.\n");
+      "--guess: the Euclidean route's flattening guess (DiskMapOptions::flatteningGuess, on by\n"
+      "default); --breakdown prints where the flow's time went and its error history to stderr.\n");
   std::exit(code);
 }
 
@@ -159,6 +161,7 @@ int main(int argc, char** argv) {
   std::vector<Scheme> schemes(kAllSchemes.begin(), kAllSchemes.end());
   std::vector<Geometry> routes{Geometry::Euclidean};
   FlipPolicy flips = FlipPolicy::Auto;
+  bool guess = DiskMapOptions{}.flatteningGuess;
   int repeat = 3;
   double jitter = 0.2;
   std::uint64_t seed = 42;
@@ -193,6 +196,9 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--flips") {
       flips = value == "on" ? FlipPolicy::On : value == "off" ? FlipPolicy::Off : FlipPolicy::Auto;
+    } else if (arg == "--guess") {
+      if (value != "on" && value != "off") usage(2);
+      guess = value == "on";
     } else if (arg == "--repeat") {
       repeat = std::max(1, std::atoi(value.c_str()));
     } else if (arg == "--mesh") {
@@ -240,6 +246,7 @@ int main(int argc, char** argv) {
         options.geometry = configs[k].route;
         options.scheme = configs[k].scheme;
         options.flips = flips;
+        options.flatteningGuess = guess;
         Result& result = results[k];
         if (!result.failure.empty()) continue;
         try {

@@ -14,4 +14,8 @@ for size in 300 1500; do for mesh in lopsided round hemisphere; do
 done; done > "$results"
 echo "runs: $(wc -l < "$results")  failed: $(grep -c failed "$results" || true)"
 grep failed "$results" | cut -c1-160 || true
+# Mean Newton steps per scheme over the converged maps (fields: mesh jitter seed | vertices |
+# route | scheme | iterations | ...).
+grep -v failed "$results" | awk -F'|' '{ s = $4; gsub(/ /, "", s); n[s]++; it[s] += $5 }
+  END { for (s in n) printf "%s %.2f (%d maps)  ", s, it[s] / n[s], n[s]; print "" }'
 rm -f "$results"

@@ -1,7 +1,7 @@
 #pragma once
 // The Riemann map of a topological disk onto the unit disk, by one of three routes (the map is
 // unique up to a Möbius map of the disk, so the routes can be compared after alignment):
-// - Euclidean (dissertation §8.2, the default): remove the face farthest from the boundary,
+// - Euclidean (dissertation §8.2, the default): remove a face (nearly) farthest from the boundary,
 //   flatten the annulus by Euclidean Ricci flow with zero target curvature everywhere (a flat
 //   cylinder with straight boundaries), cut it along a shortest edge path, lay it out, scale
 //   the period to 2πi, apply exp, normalise the outer circle to 1.
@@ -35,13 +35,17 @@ struct DiskMapOptions {
   double tolerance = 1e-10;
   int maxIterations = 100;
   FlipPolicy flips = FlipPolicy::Auto;
-  int removedFace = -1;  // Euclidean route: face to remove; -1 = the one farthest from the boundary
+  // Euclidean route: face to remove; -1 = the roundest of those (nearly) farthest from the
+  // boundary.
+  int removedFace = -1;
   // Euclidean route: start the flow from an estimate of the flattening factor (log map around
   // the removed face, corners opened to π) instead of the embedded metric. Fewer Newton steps on
-  // refined display templates (cave5 20 cm: 6 + 5 -> 4 + 5), the same map to 1e-8 where no
-  // flips come on (with flips the Delaunay triangulation reached depends on the start). Off by
-  // default: a coarse irregular disk can stall from it (the map is then computed again without).
-  bool flatteningGuess = false;
+  // refined display templates (cave5 20 cm: 6 + 5 -> 4 + 5) and on the lopsided benchmark disks
+  // (see conformal/README.md), the same map to 1e-8 where no flips come on (with flips the
+  // Delaunay triangulation reached depends on the start). A coarse irregular disk can stall from
+  // it: the map is then computed again from the embedded metric. Ignored by the tangential and
+  // Thurston schemes, whose starting metric is not the embedded one.
+  bool flatteningGuess = true;
   std::function<void(int, double)> onIteration;
 };
 
@@ -72,7 +76,7 @@ DiskMap computeDiskMap(const std::vector<Vec3d>& points,
                        const IntrinsicTriangulation& whole, const DiskMapOptions& options = {});
 
 // Per vertex, the shortest distance along edges (edgeLengths in tri's edge order) to the
-// boundary: the Euclidean route removes a face farthest from the boundary by it.
+// boundary: the Euclidean route removes a face (nearly) farthest from the boundary by it.
 std::vector<double> distanceToBoundary(const IntrinsicTriangulation& tri,
                                        const std::vector<double>& edgeLengths);
 
