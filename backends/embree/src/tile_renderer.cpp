@@ -75,7 +75,10 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
 
 void renderTiles(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job,
                  ImageRGBA& image, Progress& progress, RayCounters& counters) {
-  image = ImageRGBA(job.width, job.height, 0.0f);
+  // Every pixel is written below: an image of the right size is rendered over as it is (a
+  // frame loop's previous image, see renderInto), only a new one is allocated.
+  if (image.width != job.width || image.height != job.height)
+    image = ImageRGBA(job.width, job.height, 0.0f);
   const int across = (job.width + job.tileSize - 1) / job.tileSize;
   const int tiles = static_cast<int>(tileCount(job.width, job.height, job.tileSize));
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {

@@ -31,6 +31,9 @@ class EmbreeBackend final : public RenderBackend {
   void setScene(const Scene& scene) override;
   RenderResult render(const DisplayConfig& config, const RetargetMap* map,
                       const RenderSettings& settings) override;
+  // Reuses the pixel storage of result's images, matched by position, where the size agrees.
+  void renderInto(const DisplayConfig& config, const RetargetMap* map,
+                  const RenderSettings& settings, RenderResult& result) override;
 
  private:
   struct Impl;
