@@ -17,12 +17,17 @@ glm::dvec2 lanePosition(const TileJob& job, const PacketSamples& samples, int la
 void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
                  PacketHits& hits) {
   alignas(32) Lanes px{}, py{};
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    const glm::dvec2 p = lanePosition(job, samples, std::min(lane, samples.count - 1));
-    px[lane] = static_cast<float>(p.x);
-    py[lane] = static_cast<float>(p.y);
-    hits.valid[lane] = lane < samples.count ? -1 : 0;
+  if (job.samplesPerPixel == 1) {  // at the pixel centres, as the benchmark's raw loop
+    pixelCentres(samples.x, samples.y, samples.count, job.pixelToWall.x, job.pixelToWall.y, px,
+                 py);
+  } else {
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const glm::dvec2 p = lanePosition(job, samples, std::min(lane, samples.count - 1));
+      px[lane] = static_cast<float>(p.x);
+      py[lane] = static_cast<float>(p.y);
+    }
   }
+  for (int lane = 0; lane < kPacketSize; ++lane) hits.valid[lane] = lane < samples.count ? -1 : 0;
   RTCRay8& ray = hits.rayhit.ray;
   rays.plainDirections().at(px, py, ray.dir_x, ray.dir_y, ray.dir_z);
 }
