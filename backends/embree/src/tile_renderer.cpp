@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <vector>
 
+#if defined(__SSE2__)
 #include <immintrin.h>
+#endif
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -20,10 +22,11 @@ std::size_t tileCount(int width, int height, int tileSize) {
 namespace {
 
 // The colours of a packet's `count` lanes as RGBA pixels from `pixel` on, four lanes at a time
-// transposed with shuffles. (Non-temporal stores, which skip reading the image's lines in, made
-// no measurable difference.)
+// transposed with shuffles. (Non-temporal stores, which skip reading the image's lines in, gained
+// nothing: see the README.)
 void storePixels(const PacketColours& c, int count, float* pixel) {
   int lane = 0;
+#if defined(__SSE2__)
   for (; lane + 4 <= count; lane += 4, pixel += 16) {
     __m128 r = _mm_load_ps(&c.red[lane]), g = _mm_load_ps(&c.green[lane]);
     __m128 b = _mm_load_ps(&c.blue[lane]), a = _mm_load_ps(&c.alpha[lane]);
@@ -33,8 +36,11 @@ void storePixels(const PacketColours& c, int count, float* pixel) {
     _mm_storeu_ps(pixel + 8, b);
     _mm_storeu_ps(pixel + 12, a);
   }
-  for (; lane < count; ++lane, pixel += 4)
-    _mm_storeu_ps(pixel, _mm_setr_ps(c.red[lane], c.green[lane], c.blue[lane], c.alpha[lane]));
+#endif
+  for (; lane < count; ++lane, pixel += 4) {
+    pixel[0] = c.red[lane], pixel[1] = c.green[lane];
+    pixel[2] = c.blue[lane], pixel[3] = c.alpha[lane];
+  }
 }
 
 // One sample per pixel, at its centre: the packet's colours are the pixels.
