@@ -45,12 +45,9 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
             alignas(32) int valid[8];
             alignas(32) RTCRayHit8 rh;
             alignas(32) std::array<float, 8> px{}, py{};
-            const int end = std::min(x0 + kTile, width);
-            for (int lane = 0; lane < 8; ++lane) {
-              valid[lane] = x + lane < end ? -1 : 0;
-              px[lane] = static_cast<float>((std::min(x + lane, end - 1) + 0.5) * sx);
-              py[lane] = static_cast<float>((y + 0.5) * sy);
-            }
+            const int count = std::min(x0 + kTile, width) - x;
+            for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
+            embree::pixelCentres(x, y, count, sx, sy, px, py);
             directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
             for (int lane = 0; lane < 8; ++lane) {
               rh.ray.org_x[lane] = origin.x;

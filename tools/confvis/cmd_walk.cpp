@@ -102,6 +102,7 @@ int runWalk(const WalkArgs& args) {
   nlohmann::json frames = nlohmann::json::array(), errors = nlohmann::json::array();
   int previousBakesStarted = 0;
   const auto loopStart = Clock::now();
+  RenderResult result;  // one frame's images, rendered over by the next (renderInto)
   for (int index = 0; index < frameCount; ++index) {
     const double walkSeconds = index / args.fps;
     if (!args.noPacing)  // a live loop: frame i begins no earlier than i / fps after the first
@@ -123,9 +124,8 @@ int runWalk(const WalkArgs& args) {
     // so the virtual world (camera + (p - reference)) stays put when the reference moves.
     settings.head = head;
     settings.camera.position = reference;
-    RenderResult result;
-    try {
-      result = backend->render(frameConfig, frame.map.get(), settings);
+    try {  // into the previous frame's images (written out already): no fresh output memory
+      backend->renderInto(frameConfig, frame.map.get(), settings, result);
     } catch (const Error& error) {
       throw Error(error.code(), "frame " + std::to_string(index) + " (t = " +
                                     std::to_string(frameSeconds) + " s): " + error.what());

@@ -56,12 +56,20 @@ ConformalWarp::Lookup ConformalWarp::lookup(const glm::dvec3& physicalDir) const
   return {v / length, s[3] >= 0.5f, s[3]};
 }
 
-std::uint64_t mixHash(std::uint64_t hash, std::uint64_t word) {
+namespace {
+
+// mixHash's body, local so that fingerprint's loop inlines it (an exported function of a
+// position-independent library is not inlined: it could be interposed).
+inline std::uint64_t mix(std::uint64_t hash, std::uint64_t word) {
   std::uint64_t z = word ^ (hash + 0x9e3779b97f4a7c15ull);
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
   return z ^ (z >> 31);
 }
+
+}  // namespace
+
+std::uint64_t mixHash(std::uint64_t hash, std::uint64_t word) { return mix(hash, word); }
 
 std::uint64_t mixHash(std::uint64_t hash, double value) {
   std::uint64_t bits;
@@ -81,7 +89,7 @@ std::uint64_t ConformalWarp::fingerprint() const {
       for (std::size_t lane = 0; lane < 4; ++lane) {
         std::uint64_t bits;
         std::memcpy(&bits, data + 2 * (i + lane), sizeof bits);
-        lanes[lane] = mixHash(lanes[lane], bits);
+        lanes[lane] = mix(lanes[lane], bits);
       }
     for (; 2 * i < face.pixels.size(); ++i) lanes[0] = mixHash(lanes[0], double(data[2 * i]));
   }

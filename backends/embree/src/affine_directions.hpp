@@ -1,7 +1,9 @@
 #pragma once
 // Ray directions affine in the pixel position (plain off-axis rays): base + px stepX + py stepY,
-// normalised in float. Shared by the renderer's plain rays and the render benchmark's raw
-// rtcIntersect8 loop, so that both generate the same rays at the same cost.
+// normalised in float, and the pixel centres of a packet they are evaluated at. Shared by the
+// renderer's plain rays and the render benchmark's raw rtcIntersect8 loop, so that both generate
+// the same rays at the same cost.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -33,5 +35,18 @@ struct AffineDirections {
     }
   }
 };
+
+// Wall-pixel positions of the centres of output pixels x .. x + count - 1 of row y (lanes past
+// `count` repeat the last pixel), `pixelToWall` wall pixels per output pixel: (x + 0.5) s in
+// double, then float. One sample per pixel sits at the centre (stratifiedSample).
+template <std::size_t N>
+void pixelCentres(int x, int y, int count, double pixelToWallX, double pixelToWallY,
+                  std::array<float, N>& px, std::array<float, N>& py) {
+  for (std::size_t i = 0; i < N; ++i) {
+    const int column = x + std::min(static_cast<int>(i), count - 1);
+    px[i] = static_cast<float>((column + 0.5) * pixelToWallX);
+  }
+  py.fill(static_cast<float>((y + 0.5) * pixelToWallY));
+}
 
 }  // namespace confvis::embree

@@ -1,5 +1,7 @@
 #include "camera_packet.hpp"
 
+#include <cstring>
+
 #include "direction_table.hpp"
 
 namespace confvis::embree {
@@ -17,12 +19,17 @@ glm::dvec2 lanePosition(const TileJob& job, const PacketSamples& samples, int la
 void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
                  PacketHits& hits) {
   alignas(32) Lanes px{}, py{};
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    const glm::dvec2 p = lanePosition(job, samples, std::min(lane, samples.count - 1));
-    px[lane] = static_cast<float>(p.x);
-    py[lane] = static_cast<float>(p.y);
-    hits.valid[lane] = lane < samples.count ? -1 : 0;
+  if (job.samplesPerPixel == 1) {  // at the pixel centres, as the benchmark's raw loop
+    pixelCentres(samples.x, samples.y, samples.count, job.pixelToWall.x, job.pixelToWall.y, px,
+                 py);
+  } else {
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const glm::dvec2 p = lanePosition(job, samples, std::min(lane, samples.count - 1));
+      px[lane] = static_cast<float>(p.x);
+      py[lane] = static_cast<float>(p.y);
+    }
   }
+  for (int lane = 0; lane < kPacketSize; ++lane) hits.valid[lane] = lane < samples.count ? -1 : 0;
   RTCRay8& ray = hits.rayhit.ray;
   rays.plainDirections().at(px, py, ray.dir_x, ray.dir_y, ray.dir_z);
 }
@@ -32,10 +39,12 @@ void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples
 // packet at once. Unlit samples hold F = 0.
 void tablePacket(const CameraRays& rays, const DirectionTable& table,
                  const PacketSamples& samples, PacketHits& hits) {
-  alignas(32) Lanes fx{}, fy{}, fz{};
-  const glm::vec3* run = table.at(samples.x, samples.y, samples.sample);  // a packet: one tile row
-  for (int lane = 0; lane < samples.count; ++lane)
-    fx[lane] = run[lane].x, fy[lane] = run[lane].y, fz[lane] = run[lane].z;
+  // Copied into locals, which the compiler knows alias nothing (the loop then vectorises).
+  alignas(32) Lanes fx, fy, fz;
+  const float* run = table.packet(samples.x, samples.y, samples.sample);  // zeros past the count
+  std::memcpy(fx.data(), run, sizeof fx);
+  std::memcpy(fy.data(), run + kPacketSize, sizeof fy);
+  std::memcpy(fz.data(), run + 2 * kPacketSize, sizeof fz);
   const glm::mat3& m = rays.rotation();
   RTCRay8& ray = hits.rayhit.ray;
   for (int lane = 0; lane < kPacketSize; ++lane) {
@@ -44,15 +53,14 @@ void tablePacket(const CameraRays& rays, const DirectionTable& table,
     const float z = m[0][2] * fx[lane] + m[1][2] * fy[lane] + m[2][2] * fz[lane];
     // Unlit (F = 0) lanes are not traced; their direction only has to stay finite (a blend, not
     // a select, so that the loop vectorises).
-    const float unlit = fx[lane] == 0.0f && fy[lane] == 0.0f && fz[lane] == 0.0f ? 1.0f : 0.0f;
+    const bool lit = fx[lane] != 0.0f || fy[lane] != 0.0f || fz[lane] != 0.0f;
+    const float unlit = lit ? 0.0f : 1.0f;
     const float inverseLength = 1.0f / std::sqrt(x * x + y * y + z * z + unlit);
     ray.dir_x[lane] = x * inverseLength;
     ray.dir_y[lane] = y * inverseLength;
     ray.dir_z[lane] = z * inverseLength;
+    hits.valid[lane] = lit ? -1 : 0;
   }
-  for (int lane = 0; lane < samples.count; ++lane)
-    hits.valid[lane] = fx[lane] != 0.0f || fy[lane] != 0.0f || fz[lane] != 0.0f ? -1 : 0;
-  for (int lane = samples.count; lane < kPacketSize; ++lane) hits.valid[lane] = 0;
 }
 
 std::uint64_t traceStraightPacket(const EmbreeScene& scene, const CameraRays& rays,

@@ -112,9 +112,19 @@ void EmbreeBackend::setScene(const Scene& scene) {
 
 RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMap* map,
                                    const RenderSettings& settings) {
+  RenderResult result;
+  renderInto(config, map, settings, result);
+  return result;
+}
+
+void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* map,
+                               const RenderSettings& settings, RenderResult& result) {
   if (!impl_->scene)
     throw Error(ErrorCode::InvalidInput, "Embree backend: setScene must come before render");
   const RenderPlan plan = planRender(config, map, settings);
+  // The previous frame's images: their pixel storage is rendered over where the size agrees.
+  std::vector<WallImage> previous = std::move(result.images);
+  result = RenderResult{};
   std::optional<ConformalWarp> warp;
   std::uint64_t mapFingerprint = 0;
   const auto setupStart = std::chrono::steady_clock::now();
@@ -152,7 +162,6 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
     threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
                         static_cast<std::size_t>(impl_->options.threads));
 
-  RenderResult result;
   embree::RayCounters counters;
   nlohmann::json perImage = nlohmann::json::array();
   const auto start = std::chrono::steady_clock::now();
@@ -178,6 +187,7 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
       if (job.directions) tableSamples += job.directions->sampleCount();
     }
     WallImage out;
+    if (i < previous.size()) out.image = std::move(previous[i].image);
     out.wall = planned.view.wall->name;
     out.eye = planned.eye;
     const auto imageStart = std::chrono::steady_clock::now();
@@ -219,7 +229,6 @@ RenderResult EmbreeBackend::render(const DisplayConfig& config, const RetargetMa
     result.stats["curved_ray_segments"] = settings.stereoRays == StereoRays::Exact
                                               ? impl_->options.curvedRaySegments
                                               : 1;
-  return result;
 }
 
 }  // namespace confvis

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <vector>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -18,52 +21,96 @@ std::size_t tileCount(int width, int height, int tileSize) {
 
 namespace {
 
-void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job, int x0,
-                int y0, ImageRGBA& image, RayCounters& counters) {
+// The colours of a packet's `count` lanes as RGBA pixels from `pixel` on, four lanes at a time
+// transposed with shuffles. (Non-temporal stores, which skip reading the image's lines in, gained
+// nothing: see the README.)
+void storePixels(const PacketColours& c, int count, float* pixel) {
+  int lane = 0;
+#if defined(__SSE2__)
+  for (; lane + 4 <= count; lane += 4, pixel += 16) {
+    __m128 r = _mm_load_ps(&c.red[lane]), g = _mm_load_ps(&c.green[lane]);
+    __m128 b = _mm_load_ps(&c.blue[lane]), a = _mm_load_ps(&c.alpha[lane]);
+    _MM_TRANSPOSE4_PS(r, g, b, a);
+    _mm_storeu_ps(pixel, r);
+    _mm_storeu_ps(pixel + 4, g);
+    _mm_storeu_ps(pixel + 8, b);
+    _mm_storeu_ps(pixel + 12, a);
+  }
+#endif
+  for (; lane < count; ++lane, pixel += 4) {
+    pixel[0] = c.red[lane], pixel[1] = c.green[lane];
+    pixel[2] = c.blue[lane], pixel[3] = c.alpha[lane];
+  }
+}
+
+// One sample per pixel, at its centre: the packet's colours are the pixels.
+void renderTileSingleSample(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job,
+                            int x0, int y0, ImageRGBA& image, RayCounters& counters) {
+  const int x1 = std::min(x0 + job.tileSize, job.width);
+  const int y1 = std::min(y0 + job.tileSize, job.height);
+  PacketSamples samples;
+  PacketHits hits;
+  PacketColours colours;
+  std::array<std::uint32_t, kPacketSize> sampleSeeds{};  // occlusion rays only
+  std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; x += kPacketSize) {
+      samples.x = x;
+      samples.y = y;
+      samples.count = std::min(kPacketSize, x1 - x);
+      if (job.shading.ambientOcclusion)  // the supersampled loop's seeds of sample 0
+        for (int lane = 0; lane < samples.count; ++lane)
+          sampleSeeds[lane] = hashU32(pixelSeed(job, x + lane, y));
+      cameraRays += traceCameraPacket(scene, rays, job, samples, hits);
+      retraced += static_cast<std::uint64_t>(hits.retraced);
+      occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
+      storePixels(colours, samples.count, image.at(x, y));
+    }
+  }
+  counters.camera += cameraRays;
+  counters.occlusion += occlusionRays;
+  counters.retraced += retraced;
+}
+
+// Several samples per pixel at stratified positions (seeded per pixel), averaged.
+void renderTileSupersampled(const EmbreeScene& scene, const CameraRays& rays,
+                            const TileJob& job, int x0, int y0, ImageRGBA& image,
+                            RayCounters& counters) {
   const int x1 = std::min(x0 + job.tileSize, job.width);
   const int y1 = std::min(y0 + job.tileSize, job.height);
   PacketSamples samples;
   PacketHits hits;
   PacketColours colours;
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
-  // Per-pixel random streams drive sub-pixel positions and occlusion rays only.
-  const bool seeded = job.samplesPerPixel > 1 || job.shading.ambientOcclusion;
   const float scale = 1.0f / static_cast<float>(job.samplesPerPixel);
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; x += kPacketSize) {
       samples.x = x;
       samples.y = y;
       samples.count = std::min(kPacketSize, x1 - x);
-      PacketColours sum;  // over the samples (several per pixel)
-      if (seeded)
-        for (int lane = 0; lane < samples.count; ++lane)
-          samples.pixelSeeds[lane] = pixelSeed(job, x + lane, y);
+      PacketColours mean;  // the sum over the samples, then scaled
+      for (int lane = 0; lane < samples.count; ++lane)
+        samples.pixelSeeds[lane] = pixelSeed(job, x + lane, y);
       for (int sample = 0; sample < job.samplesPerPixel; ++sample) {
         samples.sample = sample;
         std::array<std::uint32_t, kPacketSize> sampleSeeds{};
-        if (seeded)
-          for (int lane = 0; lane < samples.count; ++lane)
-            sampleSeeds[lane] =
-                hashU32(samples.pixelSeeds[lane] + static_cast<std::uint32_t>(sample));
+        for (int lane = 0; lane < samples.count; ++lane)
+          sampleSeeds[lane] = hashU32(samples.pixelSeeds[lane] + static_cast<std::uint32_t>(sample));
         cameraRays += traceCameraPacket(scene, rays, job, samples, hits);
         retraced += static_cast<std::uint64_t>(hits.retraced);
         occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
-        if (job.samplesPerPixel == 1) break;  // the colours are the pixels
         for (int lane = 0; lane < kPacketSize; ++lane) {
-          sum.red[lane] += colours.red[lane];
-          sum.green[lane] += colours.green[lane];
-          sum.blue[lane] += colours.blue[lane];
-          sum.alpha[lane] += colours.alpha[lane];
+          mean.red[lane] += colours.red[lane];
+          mean.green[lane] += colours.green[lane];
+          mean.blue[lane] += colours.blue[lane];
+          mean.alpha[lane] += colours.alpha[lane];
         }
       }
-      const PacketColours& mean = job.samplesPerPixel == 1 ? colours : sum;
-      for (int lane = 0; lane < samples.count; ++lane) {
-        float* pixel = image.at(x + lane, y);
-        pixel[0] = mean.red[lane] * scale;
-        pixel[1] = mean.green[lane] * scale;
-        pixel[2] = mean.blue[lane] * scale;
-        pixel[3] = mean.alpha[lane] * scale;
+      for (int lane = 0; lane < kPacketSize; ++lane) {
+        mean.red[lane] *= scale, mean.green[lane] *= scale;
+        mean.blue[lane] *= scale, mean.alpha[lane] *= scale;
       }
+      storePixels(mean, samples.count, image.at(x, y));
     }
   }
   counters.camera += cameraRays;
@@ -75,13 +122,19 @@ void renderTile(const EmbreeScene& scene, const CameraRays& rays, const TileJob&
 
 void renderTiles(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job,
                  ImageRGBA& image, Progress& progress, RayCounters& counters) {
-  image = ImageRGBA(job.width, job.height, 0.0f);
+  // Every pixel is written below: an image of the right size is rendered over as it is (a
+  // frame loop's previous image, see renderInto), only a new one is allocated.
+  if (image.width != job.width || image.height != job.height)
+    image = ImageRGBA(job.width, job.height, 0.0f);
   const int across = (job.width + job.tileSize - 1) / job.tileSize;
   const int tiles = static_cast<int>(tileCount(job.width, job.height, job.tileSize));
   tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
     for (int t = r.begin(); t != r.end(); ++t) {
-      renderTile(scene, rays, job, (t % across) * job.tileSize, (t / across) * job.tileSize,
-                 image, counters);
+      const int x0 = (t % across) * job.tileSize, y0 = (t / across) * job.tileSize;
+      if (job.samplesPerPixel == 1)
+        renderTileSingleSample(scene, rays, job, x0, y0, image, counters);
+      else
+        renderTileSupersampled(scene, rays, job, x0, y0, image, counters);
       progress.advance();
     }
   });

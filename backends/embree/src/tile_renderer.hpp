@@ -50,8 +50,9 @@ inline glm::dvec2 samplePosition(const TileJob& job, int x, int y, int sample) {
   return samplePosition(job, x, y, sample, pixelSeed(job, x, y));
 }
 
-// Renders into `image` (width x height, resized here): linear RGB averaged over the samples,
-// alpha = fraction of samples that hit something. Calls progress.advance() once per tile.
+// Renders into `image`, kept if it is width x height already (every pixel is overwritten), else
+// reallocated: linear RGB averaged over the samples, alpha = fraction of samples that hit
+// something. Calls progress.advance() once per tile.
 void renderTiles(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job,
                  ImageRGBA& image, Progress& progress, RayCounters& counters);
 

@@ -69,6 +69,13 @@ class RenderBackend {
   // Unknown wall names give Error(InvalidInput) naming the wall.
   virtual RenderResult render(const DisplayConfig& config, const RetargetMap* map,
                               const RenderSettings& settings) = 0;
+  // The same frame rendered into `result`, for frame loops: a backend may keep the pixel storage
+  // of result's images where an image of the same size comes back (no fresh allocation, no page
+  // faults). The images and stats are replaced as by render(); this default does just that.
+  virtual void renderInto(const DisplayConfig& config, const RetargetMap* map,
+                          const RenderSettings& settings, RenderResult& result) {
+    result = render(config, map, settings);
+  }
 };
 
 }  // namespace confvis

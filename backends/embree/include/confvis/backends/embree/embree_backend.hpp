@@ -31,6 +31,10 @@ class EmbreeBackend final : public RenderBackend {
   void setScene(const Scene& scene) override;
   RenderResult render(const DisplayConfig& config, const RetargetMap* map,
                       const RenderSettings& settings) override;
+  // Reuses the pixel storage of result's images, matched by position, where the size agrees.
+  // After an error, result holds no images.
+  void renderInto(const DisplayConfig& config, const RetargetMap* map,
+                  const RenderSettings& settings, RenderResult& result) override;
 
  private:
   struct Impl;
