@@ -95,19 +95,23 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
   std::array<Texel4, 4> value = corner;
   bool straddles = false;
   for (int k = 0; k < 4; ++k) straddles |= !member[k];
+  // Corner k from the other three: a parallelogram (i is k's column, j its row).
+  auto fromParallelogram = [&](int k, const std::array<bool, 4>& given) {
+    const int i = k % 2, j = k / 2;
+    const int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i, diagonal = 3 - k;
+    if (!given[inRow] || !given[inColumn] || !given[diagonal]) return false;
+    value[k] = combine(combine(value[inRow], 1, value[inColumn], 1), 1, value[diagonal], -1);
+    known[k] = true;
+    return true;
+  };
   if (straddles) {
     // Corners of the other side, from this side's corners: the parallelogram of the three
     // others, else the line from the neighbour in the same row or column through the texel
     // beyond it (outside the footprint), averaged where both exist.
     for (int k = 0; k < 4; ++k) {
-      if (member[k]) continue;
+      if (member[k] || fromParallelogram(k, member)) continue;
       const int i = k % 2, j = k / 2;
-      const int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i, diagonal = 3 - k;
-      if (member[inRow] && member[inColumn] && member[diagonal]) {
-        value[k] = combine(combine(corner[inRow], 1, corner[inColumn], 1), 1, corner[diagonal], -1);
-        known[k] = true;
-        continue;
-      }
+      const int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i;
       Texel4 sum;
       int lines = 0;
       auto extendLine = [&](int neighbour, int beyondX, int beyondY) {
@@ -126,14 +130,8 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
       }
     }
     // The corner diagonal to a lone member, from the two it extrapolated.
-    for (int k = 0; k < 4; ++k) {
-      const int i = k % 2, j = k / 2;
-      const int inRow = 2 * j + (1 - i), inColumn = 2 * (1 - j) + i, diagonal = 3 - k;
-      if (!known[k] && known[inRow] && known[inColumn] && known[diagonal]) {
-        value[k] = combine(combine(value[inRow], 1, value[inColumn], 1), 1, value[diagonal], -1);
-        known[k] = true;
-      }
-    }
+    for (int k = 0; k < 4; ++k)
+      if (!known[k]) fromParallelogram(k, known);
   }
   Vec3d sum{};
   double alpha = 0, memberWeight = 0;
@@ -147,7 +145,7 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
   OneSidedSample out;
   const double length = norm(sum);
   out.direction = length > 0 ? (1.0 / length) * sum : normalized(corner[anchor].direction());
-  // The nearest member's weight can be 0 only on a texel centre line; its alpha stands in then.
+  // Side 1's texels can all weigh 0 (v on a texel centre line): its anchor's alpha stands in.
   out.alpha = static_cast<float>(memberWeight > 0 ? alpha / memberWeight : corner[anchor].v[3]);
   out.straddles = straddles;
   for (int a = 0; a < 4; ++a)
