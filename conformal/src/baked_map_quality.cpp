@@ -237,7 +237,7 @@ RoundTripStats measureRoundTrip(const RetargetMap& map, RoundTrip which, int str
           }
           back = *looked;
           spread = footprintSpread(map.ray, v);
-          if (spread > detail::jumpAngle(m)) count(part, &RoundTripErrors::acrossCut);
+          if (spread > detail::jumpChord(m)) count(part, &RoundTripErrors::acrossCut);
         }
         const double error = angleBetween(back, texelDirection(face, x, y, n)) / texelAngle(n);
         const double footprints = error / std::max(1.0, spread / texelAngle(n));

@@ -42,7 +42,7 @@ std::optional<Texel4> texelValue(const CubeMap& map, CubeFace face, int x, int y
 }  // namespace
 
 std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir, int side,
-                                            double jumpAngle) {
+                                            double jumpChord) {
   const int n = map.faceSize;
   CubeFace face;
   double x, y;
@@ -61,14 +61,15 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
   }
   // The sides of the block that span a jump: longer than three times its shortest side (a
   // conformal map keeps the block nearly square, even where it magnifies without bound next to a
-  // display corner) and than `jumpAngle`. A side's texels are those joined by the other sides.
+  // display corner) and than `jumpChord`. A side's texels are those joined by the other sides.
+  // Lengths are chords of the unit directions, as in confvis_warp.glsl (and no atan2 per side).
   std::array<Vec3d, 4> unit;
   for (int k = 0; k < 4; ++k) unit[k] = normalized(corner[k].direction());
   constexpr std::array<int, 4> ring{0, 1, 3, 2};  // around the block
   std::array<double, 4> sideLength;
-  for (int e = 0; e < 4; ++e) sideLength[e] = angleBetween(unit[ring[e]], unit[ring[(e + 1) % 4]]);
+  for (int e = 0; e < 4; ++e) sideLength[e] = norm(unit[ring[e]] - unit[ring[(e + 1) % 4]]);
   const double longSide =
-      std::max(3.0 * *std::min_element(sideLength.begin(), sideLength.end()), jumpAngle);
+      std::max(3.0 * *std::min_element(sideLength.begin(), sideLength.end()), jumpChord);
   auto sideOf = [&](int anchor) {
     std::array<bool, 4> joined{};
     joined[anchor] = true;
@@ -117,7 +118,7 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
       auto extendLine = [&](int neighbour, int beyondX, int beyondY) {
         if (!member[neighbour]) return;
         const std::optional<Texel4> beyond = texelValue(map, face, beyondX, beyondY);
-        if (!beyond || angleBetween(beyond->direction(), unit[neighbour]) > longSide) return;
+        if (!beyond || norm(normalized(beyond->direction()) - unit[neighbour]) > longSide) return;
         sum = combine(sum, 1, combine(corner[neighbour], 2, *beyond, -1), 1);
         ++lines;
       };
@@ -148,11 +149,14 @@ std::optional<OneSidedSample> sampleOneSide(const CubeMap& map, const Vec3d& dir
   // Side 1's texels can all weigh 0 (v on a texel centre line): its anchor's alpha stands in.
   out.alpha = static_cast<float>(memberWeight > 0 ? alpha / memberWeight : corner[anchor].v[3]);
   out.straddles = straddles;
+  std::array<Vec3d, 4> known3;
+  for (int k = 0; k < 4; ++k)
+    if (known[k]) known3[k] = member[k] ? unit[k] : normalized(value[k].direction());
+  double chord = 0;
   for (int a = 0; a < 4; ++a)
     for (int b = a + 1; b < 4; ++b)
-      if (known[a] && known[b])
-        out.footprintSpread = std::max(
-            out.footprintSpread, angleBetween(value[a].direction(), value[b].direction()));
+      if (known[a] && known[b]) chord = std::max(chord, norm(known3[a] - known3[b]));
+  out.footprintSpread = 2 * std::asin(std::min(1.0, 0.5 * chord));
   return out;
 }
 

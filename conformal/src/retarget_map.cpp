@@ -26,7 +26,7 @@ namespace detail {
 
 OneSidedSample lookupGeomAcrossCut(const RetargetMap& map, const Vec3d& virtualDir) {
   sampleBilinear(map.geom, virtualDir);  // validates the map and the direction
-  const double jump = jumpAngle(map.geom.faceSize);
+  const double jump = jumpChord(map.geom.faceSize);
   const OneSidedSample nearSide = *sampleOneSide(map.geom, virtualDir, 0, jump);
   if (!nearSide.straddles) return nearSide;
   const std::optional<OneSidedSample> farSide = sampleOneSide(map.geom, virtualDir, 1, jump);

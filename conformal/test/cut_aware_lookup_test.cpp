@@ -49,7 +49,7 @@ struct ShearedHalves {
 
 TEST(CutAwareLookup, KeepsEachSideOfAJumpAndExtrapolatesItAcross) {
   const ShearedHalves m;
-  const double texel = texelAngle(m.n), jump = detail::jumpAngle(m.n);
+  const double texel = texelAngle(m.n), jump = detail::jumpChord(m.n);
   double worstNear = 0, worstFar = 0, bestPlain = 1e9;
   int straddling = 0;
   // Points from a texel left of the cut to a texel right of it, at several rows.
