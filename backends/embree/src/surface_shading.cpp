@@ -271,9 +271,11 @@ void sampleTextures(const Materials& m, const Footprints& place, Lanes& red, Lan
 void shadeSurface(const EmbreeScene& scene, const PacketHits& hits,
                   PacketColours& __restrict colours, SurfaceNormals& __restrict out) {
   const RTCHit8& hit = hits.rayhit.hit;
-  // The hit flags, one byte each as the tracer stored them (read whole, the eight byte stores
-  // could not forward to the load).
-  const auto& hitLane = hits.hit;
+  // The hit flags as bytes (0 or 1), read as one word (traceStraight stores them so), which the
+  // loops below read as numbers and vectorise.
+  static_assert(sizeof(bool) == 1);
+  std::array<std::uint8_t, kPacketSize> hitLane;
+  std::memcpy(hitLane.data(), hits.hit.data(), sizeof hitLane);
   const Triangle* const triangles = scene.shadingTriangles();
   const Triangle* record[kPacketSize];
   for (int lane = 0; lane < kPacketSize; ++lane)  // branch-free: misses at silhouettes
@@ -342,7 +344,7 @@ void shadeSurface(const EmbreeScene& scene, const PacketHits& hits,
     colours.blue[lane] = m.factorBlue[lane] * blue[lane] * lambert;
   }
   for (int lane = 0; lane < kPacketSize; ++lane)
-    colours.alpha[lane] = hitLane[lane] ? 1.0f : 0.0f;
+    colours.alpha[lane] = static_cast<float>(hitLane[lane]);
 }
 
 }  // namespace confvis::embree::CONFVIS_SIMD_NAMESPACE
