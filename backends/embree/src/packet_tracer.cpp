@@ -1,6 +1,7 @@
 #include "packet_tracer.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace confvis::embree {
@@ -146,11 +147,17 @@ std::uint64_t traceStraight(RTCScene scene, int count, PacketHits& hits) {
   rtcIntersect8(hits.valid.data(), scene, &context, &hits.rayhit);
   std::array<bool, kPacketSize> missed{};
   bool anyMissed = false;
+  // The flags are stored as one 8-byte word: shading reads them so, and a load waits for the
+  // stores it overlaps to reach the cache unless one store covers it (store-to-load forwarding).
+  std::uint64_t hitFlags = 0;
   for (int lane = 0; lane < kPacketSize; ++lane) {
-    hits.hit[lane] = hits.valid[lane] && hits.rayhit.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
-    missed[lane] = hits.valid[lane] && !hits.hit[lane];
+    const bool hit = hits.valid[lane] && hits.rayhit.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
+    hitFlags |= static_cast<std::uint64_t>(hit) << (8 * lane);
+    missed[lane] = hits.valid[lane] && !hit;
     anyMissed |= missed[lane];
   }
+  static_assert(sizeof(hits.hit) == sizeof hitFlags);
+  std::memcpy(hits.hit.data(), &hitFlags, sizeof hitFlags);
   if (anyMissed) {
     std::array<glm::vec3, kPacketSize> origins{}, tails{};
     for (int lane = 0; lane < kPacketSize; ++lane)
