@@ -236,8 +236,10 @@ RoundTripStats measureRoundTrip(const RetargetMap& map, RoundTrip which, int str
             continue;
           }
           back = *looked;
-          spread = footprintSpread(map.ray, v);
-          if (spread > detail::jumpChord(m)) count(part, &RoundTripErrors::acrossCut);
+          // The same side rule as geom's: ray magnifies strongly at the rim, which is no jump.
+          const detail::OneSidedSample s = *detail::sampleOneSide(map.ray, v, 0, detail::jumpChord(m));
+          if (s.straddles) count(part, &RoundTripErrors::acrossCut);
+          spread = s.footprintSpread;
         }
         const double error = angleBetween(back, texelDirection(face, x, y, n)) / texelAngle(n);
         const double footprints = error / std::max(1.0, spread / texelAngle(n));

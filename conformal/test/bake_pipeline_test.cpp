@@ -137,6 +137,7 @@ TEST(BakePipeline, FiveSidedCaveIsConformalOrientedInvertibleAndCovering) {
   // ray's resolution of the rim (next to the cut's ends, where the two sides meet).
   EXPECT_LT(forth.all.beyondFootprint, forth.boundary.valid() / 50);
   EXPECT_GT(back.boundary.fractionBelowOneTexel, 0.85);
+  EXPECT_EQ(back.all.acrossCut, 0u);  // ray has no cut: its magnification at the rim is no jump
   EXPECT_LT(back.all.maxInFootprints, 1.0);
   // The image of ray covers the source.
   EXPECT_GT(coverage.fraction, 0.99);
