@@ -61,6 +61,25 @@ layout(set = 2, binding = 12, std430) buffer BentTriangles { uint bentTriangles[
 const uint kBentDrops = 0x80000000u;
 const uint kBentGroup = 64u;  // local_size_x of classify_bent_triangles.comp
 
+// The lookups the bilinear blend alone cannot do (confvisSampleGeomBilinear false: next to the
+// cut), queued by warp_vertices.comp and classify_edges.comp for a pass of their own
+// (warp_vertices_across_cut.comp, classify_edges_across_cut.comp, dispatched indirectly): lavapipe
+// runs both sides of a branch for all SIMD lanes, so a single pass paid the four-texel lookup for
+// every vertex and edge (0.13 s of a 0.5 s frame at 1M triangles). [0]: vertices, [1]: edges;
+// BentDispatch's layout, reset to 0, 1, 1, 0 from the host.
+layout(set = 2, binding = 13, std430) buffer AcrossCutDispatches { BentDispatch acrossCutDispatch[2]; };
+layout(set = 2, binding = 14, std430) buffer AcrossCutVertices { uint acrossCutVertices[]; };
+layout(set = 2, binding = 15, std430) buffer AcrossCutEdges { uint acrossCutEdges[]; };
+const uint kAcrossCutVertices = 0u, kAcrossCutEdges = 1u;
+
+// Queues vertex or edge `item` on across-cut list `list`, growing its dispatch to cover it.
+void queueAcrossCut(uint list, uint item) {
+  uint slot = atomicAdd(acrossCutDispatch[list].count, 1u);
+  if (list == kAcrossCutVertices) acrossCutVertices[slot] = item;
+  else acrossCutEdges[slot] = item;
+  if (slot % kBentGroup == 0u) atomicMax(acrossCutDispatch[list].groupsX, slot / kBentGroup + 1u);
+}
+
 const uint kListFlat = 0u, kListTessellated = 1u, kListDropping = 2u, kListPieces = 3u;
 const uint kLists = 4u;
 

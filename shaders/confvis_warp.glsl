@@ -51,13 +51,24 @@ float confvisAngle(vec3 a, vec3 b) { return atan(length(cross(a, b)), dot(a, b))
 // a monitor wall's corners as jumps and tore the triangles there: 5 % of md230x6 black.)
 vec4 confvisSampleGeomAcrossCut(vec3 v);
 
-vec4 confvisSampleGeom(vec3 v) {
+// The hardware's bilinear blend alone, normalised, in `g`; false where the blend comes out too
+// short (the footprint may straddle the cut), where confvisSampleGeom fetches the four texels.
+// Devices that run both sides of a branch for every SIMD lane (lavapipe) pay the costly path
+// for every lookup in confvisSampleGeom; a caller that can queue the few false ones for a
+// pass of their own (the conformal pre-pass does) saves that.
+bool confvisSampleGeomBilinear(vec3 v, out vec4 g) {
   vec4 blended = textureLod(confvisGeomMap, v, 0.0);
   float n = float(textureSize(confvisGeomMap, 0).x);
   // |blend of unit vectors theta apart| >= cos(theta / 2) ~ 1 - theta^2 / 8, theta = 16 / n.
   float shortest = 1.0 - 32.0 / (n * n);
   float len = length(blended.xyz);
-  if (len >= shortest) return vec4(blended.xyz / len, blended.w);
+  g = vec4(blended.xyz / len, blended.w);
+  return len >= shortest;
+}
+
+vec4 confvisSampleGeom(vec3 v) {
+  vec4 g;
+  if (confvisSampleGeomBilinear(v, g)) return g;
   return confvisSampleGeomAcrossCut(v);
 }
 
@@ -193,6 +204,16 @@ vec4 confvisWarpRelative(vec3 relative) {
   return vec4(r * g.xyz, g.w);
 }
 
+// confvisWarpRelative through confvisSampleGeomBilinear: false where that needs the four texels
+// (`warped` then holds the plain blend's warp; confvisWarpRelative gives the right one).
+bool confvisWarpRelativeBilinear(vec3 relative, out vec4 warped) {
+  float r = length(relative);
+  vec4 g;
+  bool plain = confvisSampleGeomBilinear(relative / max(r, 1e-30), g);
+  warped = r < 1e-9 ? vec4(relative, 1.0) : vec4(r * g.xyz, g.w);
+  return plain || r < 1e-9;
+}
+
 // Angle between neighbouring texels of the geom map around direction v (non-zero): 2 / n on the
 // face, times the squared cosine of v to the face's axis (down to a third at its corners).
 float confvisTexelAngle(vec3 v) {
@@ -232,9 +253,21 @@ bool confvisHalvesSpanJump(float halfA, float halfB, float maxErrorAngle) {
 
 // confvisEdgeSegments with more of what it measured: warpedMidpoint.w is the midpoint's validity,
 // acrossCut whether the edge was taken to span the cut (the two-pixel segments).
+float confvisMeasureEdgeWithMidpoint(vec3 a, vec3 b, vec3 wa, vec3 wb, vec4 warpedMidpoint,
+                                     float maxErrorAngle, float maxSegmentAngle,
+                                     out bool acrossCut);
+
 float confvisMeasureEdge(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
                          float maxSegmentAngle, out vec4 warpedMidpoint, out bool acrossCut) {
   warpedMidpoint = confvisWarpRelative(0.5 * (a + b));
+  return confvisMeasureEdgeWithMidpoint(a, b, wa, wb, warpedMidpoint, maxErrorAngle,
+                                        maxSegmentAngle, acrossCut);
+}
+
+// confvisMeasureEdge with the midpoint's warp given (confvisWarpRelative(0.5 * (a + b))).
+float confvisMeasureEdgeWithMidpoint(vec3 a, vec3 b, vec3 wa, vec3 wb, vec4 warpedMidpoint,
+                                     float maxErrorAngle, float maxSegmentAngle,
+                                     out bool acrossCut) {
   vec3 wm = warpedMidpoint.xyz;
   float edge = confvisAngle(a, b);
   float halfA = confvisAngle(wa, wm), halfB = confvisAngle(wm, wb);

@@ -1,6 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Conformal pre-pass, once per frame: every scene vertex warped once, for all walls and eyes.
+// Those the bilinear blend cannot warp (next to the cut) are queued for
+// warp_vertices_across_cut.comp.
 #include "confvis_warp.glsl"
 #include "confvis_prepass_common.glsl"
 
@@ -9,5 +11,8 @@ layout(local_size_x = 64) in;
 void main() {
   uint v = gl_GlobalInvocationID.x;
   if (v >= prepass.count) return;
-  warped[v] = confvisWarpRelative(vertexRelative(v));
+  vec4 w;
+  bool plain = confvisWarpRelativeBilinear(vertexRelative(v), w);
+  warped[v] = w;
+  if (!plain) queueAcrossCut(kAcrossCutVertices, v);
 }

@@ -55,6 +55,17 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       Buffer(context_, std::max<std::size_t>(scene.triangleCount(), 1) * sizeof(std::uint32_t),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 
+  acrossCutDispatch_ = Buffer(context_, 2 * sizeof(BentDispatch),
+                              VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                              true);
+  acrossCutVertices_ =
+      Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(std::uint32_t),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+  acrossCutEdges_ =
+      Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(std::uint32_t),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+
   const VkDevice device = context_.device();
   edgeLevels_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(glm::vec4),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
@@ -80,7 +91,8 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       flat_.get(),          tessellated_.get(),          commands_.get(),
       scene.edgeBuffer(),   scene.triangleEdgeBuffer(), edgeLevels_.get(),
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
-      bentTriangles_.get()};
+      bentTriangles_.get(), acrossCutDispatch_.get(), acrossCutVertices_.get(),
+      acrossCutEdges_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   rangeEnds_.clear();
@@ -104,6 +116,8 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   }
   auto* bent = static_cast<BentDispatch*>(bentDispatch_.mapped());
   for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = {0, 1, 1, 0};
+  auto* acrossCut = static_cast<BentDispatch*>(acrossCutDispatch_.mapped());
+  acrossCut[0] = acrossCut[1] = {0, 1, 1, 0};
 
   // The previous frame's draws read what this frame overwrites.
   vkCmdPipelineBarrier(cmd,
@@ -124,20 +138,30 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
 
-  VkMemoryBarrier warpedReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  warpedReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-  warpedReady.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &warpedReady, 0, nullptr, 0,
-                       nullptr);
+  // A pass's results (and its queue of lookups across the cut, with their dispatch) ready for
+  // the next.
+  VkMemoryBarrier passDone{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  passDone.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  passDone.dstAccessMask =
+      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+  const auto barrier = [&] {
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
+                         0, 1, &passDone, 0, nullptr, 0, nullptr);
+  };
+  barrier();
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVerticesAcrossCut());
+  vkCmdDispatchIndirect(cmd, acrossCutDispatch_.get(), 0);
+  barrier();
 
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdges());
   push.count = static_cast<std::uint32_t>(scene.edgeCount());
   vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &warpedReady, 0, nullptr, 0,
-                       nullptr);
+  barrier();
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdgesAcrossCut());
+  vkCmdDispatchIndirect(cmd, acrossCutDispatch_.get(), sizeof(BentDispatch));
+  barrier();
 
   // Per mesh: its triangles, directly (first pass) or over its bent list (second pass).
   const auto classifyMeshes = [&](VkPipeline pipeline, bool bentList) {

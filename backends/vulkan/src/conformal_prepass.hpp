@@ -1,6 +1,7 @@
 #pragma once
 // The conformal pre-pass, once per frame for all walls and eyes: warps every scene vertex
-// (warp_vertices.comp) and sorts every triangle into "flat" (drawn between its warped corners by
+// (warp_vertices.comp; the few next to the source's cut, which need the four-texel lookup, in
+// an indirect pass of their own, as the edges below) and sorts every triangle into "flat" (drawn between its warped corners by
 // a plain vertex shader), "tessellated" (drawn through the tessellation pipeline, which bends and
 // culls it) or "dropping" (tessellation and a geometry shader that drops pieces across the cut or
 // outside the source field), writing one compacted index list and one draw command per mesh and
@@ -68,6 +69,8 @@ class ConformalPrepass {
   // Per mesh: VkDispatchIndirectCommand and bent-list length (BentDispatch of the shaders).
   Buffer bentDispatch_;
   Buffer bentTriangles_;  // uint per scene triangle
+  // The vertices' and edges' lookups across the cut: two BentDispatch, the lists (uint each).
+  Buffer acrossCutDispatch_, acrossCutVertices_, acrossCutEdges_;
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

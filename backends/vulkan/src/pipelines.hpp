@@ -40,7 +40,7 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 13;
+inline constexpr std::uint32_t kPrepassBindings = 16;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -82,7 +82,9 @@ class Pipelines {
   VkPipelineLayout layout() const { return layout_.get(); }
   VkPipelineLayout computeLayout() const { return computeLayout_.get(); }
   VkPipeline warpVertices() const { return warpVertices_.get(); }
+  VkPipeline warpVerticesAcrossCut() const { return warpVerticesAcrossCut_.get(); }
   VkPipeline classifyEdges() const { return classifyEdges_.get(); }
+  VkPipeline classifyEdgesAcrossCut() const { return classifyEdgesAcrossCut_.get(); }
   VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
   VkPipeline classifyBentTriangles() const { return classifyBentTriangles_.get(); }
 
@@ -114,7 +116,8 @@ class Pipelines {
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
-  UniquePipeline warpVertices_, classifyEdges_, classifyTriangles_, classifyBentTriangles_;
+  UniquePipeline warpVertices_, warpVerticesAcrossCut_, classifyEdges_, classifyEdgesAcrossCut_,
+      classifyTriangles_, classifyBentTriangles_;
   std::map<std::uint32_t, Pass> passes_;
 };
 

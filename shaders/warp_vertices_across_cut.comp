@@ -1,0 +1,15 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Conformal pre-pass, indirect dispatch over the vertices warp_vertices.comp queued: warped by
+// the four-texel lookup across the cut (confvisWarpRelative).
+#include "confvis_warp.glsl"
+#include "confvis_prepass_common.glsl"
+
+layout(local_size_x = 64) in;
+
+void main() {
+  uint slot = gl_GlobalInvocationID.x;
+  if (slot >= acrossCutDispatch[kAcrossCutVertices].count) return;
+  uint v = acrossCutVertices[slot];
+  warped[v] = confvisWarpRelative(vertexRelative(v));
+}
