@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Conformal pre-pass, second pass (indirect dispatch over the bent list that
-// classify_triangles.comp fills): sorts the triangles that are not flat as they are into those
+// Conformal pre-pass, last pass (indirect dispatch over the bent list that
+// classify_triangles.comp and classify_straight_triangles.comp fill): sorts the triangles that are not flat as they are into those
 // drawn in flat pieces between their corners and edge midpoints, those that need tessellation
 // only (tessellation pipeline without a geometry shader) and those that may lose pieces to
 // confvisDropTriangle: on or next to the cut, partly outside the source field or strongly
@@ -101,14 +101,13 @@ bool distortedPatch(vec3 r[3], vec4 w[3], vec3 wm[3]) {
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= bentDispatch[prepass.mesh].count) return;
-  uint entry = bentTriangles[prepass.firstIndex / 3u + slot];
-  uint t = entry & ~kBentDrops;
-  bool drops = (entry & kBentDrops) != 0u;
+  uint t = bentTriangles[prepass.firstIndex / 3u + slot];
   uint base = prepass.firstIndex + 3u * t;
   uint i[3];
   vec3 r[3];
   vec4 w[3];
   loadTriangle(base, i, r, w);
+  bool drops = confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.minGap);
   vec4 levels[3], rawLevels[3];  // raw: w < 0 where the edge may lose pieces
   bool bent = false, mayDrop = drops, split[3];
   uint edge[3];

@@ -20,7 +20,7 @@ layout(set = 2, binding = 1, std430) readonly buffer Indices { uint indices[]; }
 layout(set = 2, binding = 2, std430) buffer Warped { vec4 warped[]; };
 layout(set = 2, binding = 3, std430) writeonly buffer SimpleIndices { uint simpleIndices[]; };
 layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint complexIndices[]; };
-// Four commands per mesh: [4 m] flat, [4 m + 1] tessellated, [4 m + 2] tessellated with the
+// Four commands per mesh: [4 m] flat (the mesh's whole range, see writeFlat), [4 m + 1] tessellated, [4 m + 2] tessellated with the
 // geometry shader that drops pieces, [4 m + 3] flat pieces of split triangles (kListFlat...
 // below). Both tessellated lists share
 // ComplexIndices and PatchLevels: the first fills the mesh's range from its start, the second
@@ -55,29 +55,54 @@ struct BentDispatch {
 };
 layout(set = 2, binding = 11, std430) buffer BentDispatches { BentDispatch bentDispatch[]; };
 // The bent list: per triangle that classify_triangles.comp could not draw flat, its number in
-// its mesh, kBentDrops set where confvisDropTriangle drops it whole; a mesh's part starts at its
-// first index / 3.
+// its mesh; a mesh's part starts at its first index / 3.
 layout(set = 2, binding = 12, std430) buffer BentTriangles { uint bentTriangles[]; };
-const uint kBentDrops = 0x80000000u;
 const uint kBentGroup = 64u;  // local_size_x of classify_bent_triangles.comp
 
-// The lookups the bilinear blend alone cannot do (confvisSampleGeomBilinear false: next to the
-// cut), queued by warp_vertices.comp and classify_edges.comp for a pass of their own
-// (warp_vertices_across_cut.comp, classify_edges_across_cut.comp, dispatched indirectly): lavapipe
-// runs both sides of a branch for all SIMD lanes, so a single pass paid the four-texel lookup for
-// every vertex and edge (0.13 s of a 0.5 s frame at 1M triangles). [0]: vertices, [1]: edges;
-// BentDispatch's layout, reset to 0, 1, 1, 0 from the host.
-layout(set = 2, binding = 13, std430) buffer AcrossCutDispatches { BentDispatch acrossCutDispatch[2]; };
-layout(set = 2, binding = 14, std430) buffer AcrossCutVertices { uint acrossCutVertices[]; };
-layout(set = 2, binding = 15, std430) buffer AcrossCutEdges { uint acrossCutEdges[]; };
-const uint kAcrossCutVertices = 0u, kAcrossCutEdges = 1u;
+// The few vertices and edges the cheap first passes cannot finish, queued by warp_vertices.comp
+// (lookups the bilinear blend alone cannot do: confvisSampleGeomBilinear false, next to the cut)
+// and classify_edges.comp (those and the edges that may bend, stretch or span the cut) for
+// passes of their own (warp_vertices_across_cut.comp, classify_edges_bent.comp, dispatched
+// indirectly): lavapipe runs both sides of a branch for all SIMD lanes, so in one pass every
+// vertex and edge paid for the four-texel lookup and the full edge measurement (0.13 s of a 0.5 s
+// frame at 1M triangles). [0]: vertices, [1]: edges; BentDispatch's layout, reset to 0, 1, 1, 0
+// from the host.
+layout(set = 2, binding = 13, std430) buffer QueueDispatches { BentDispatch queueDispatch[2]; };
+layout(set = 2, binding = 14, std430) buffer QueuedVertices { uint queuedVertices[]; };
+layout(set = 2, binding = 15, std430) buffer QueuedEdges { uint queuedEdges[]; };
+const uint kQueueVertices = 0u, kQueueEdges = 1u;
 
-// Queues vertex or edge `item` on across-cut list `list`, growing its dispatch to cover it.
-void queueAcrossCut(uint list, uint item) {
-  uint slot = atomicAdd(acrossCutDispatch[list].count, 1u);
-  if (list == kAcrossCutVertices) acrossCutVertices[slot] = item;
-  else acrossCutEdges[slot] = item;
-  if (slot % kBentGroup == 0u) atomicMax(acrossCutDispatch[list].groupsX, slot / kBentGroup + 1u);
+// Per mesh: its triangles written flat (writeFlat leaves degenerate ones in the list; this
+// counts the rest for the frame's statistics), reset from the host.
+layout(set = 2, binding = 16, std430) buffer FlatCounts { uint flatCounts[]; };
+// Per edge, what classify_triangles.comp needs of it (confvis_prepass_edges.glsl writes it):
+// kEdgeStraight where it is drawn in one segment, kEdgeSmall where its warped corners lie
+// within minGap of each other (a triangle of three straight and small edges is drawn flat:
+// confvisDropTriangle keeps it), kEdgeUnseen where both corners lie outside the source field (a
+// triangle of three such edges shows nothing).
+layout(set = 2, binding = 17, std430) buffer EdgeFlags { uint edgeFlags[]; };
+const uint kEdgeStraight = 1u, kEdgeSmall = 2u, kEdgeUnseen = 4u;
+
+// Per mesh, as the bent list: the straight triangles too large after the warp for
+// classify_triangles.comp to tell whether confvisDropTriangle keeps them, for
+// classify_straight_triangles.comp.
+layout(set = 2, binding = 18, std430) buffer StraightDispatches { BentDispatch straightDispatch[]; };
+layout(set = 2, binding = 19, std430) buffer StraightTriangles { uint straightTriangles[]; };
+
+// Queues vertex or edge `item` on `queue`, growing its dispatch to cover it.
+void enqueue(uint queue, uint item) {
+  uint slot = atomicAdd(queueDispatch[queue].count, 1u);
+  if (queue == kQueueVertices) queuedVertices[slot] = item;
+  else queuedEdges[slot] = item;
+  if (slot % kBentGroup == 0u) atomicMax(queueDispatch[queue].groupsX, slot / kBentGroup + 1u);
+}
+
+// Chord between the directions of two non-zero vectors: 2 sin(angle / 2), a lower bound of the
+// angle and monotone in it, with no atan. A cheap and conservative pre-test of angle <= limit is
+// chordBelow(chord, limit): NaN (zero vectors) counts as not below.
+float directionChord(vec3 a, vec3 b) { return length(normalize(a) - normalize(b)); }
+bool chordBelow(float chord, float limit) {
+  return chord <= 0.99 * 2.0 * sin(0.5 * limit);  // 1 % margin for the two functions' rounding
 }
 
 const uint kListFlat = 0u, kListTessellated = 1u, kListDropping = 2u, kListPieces = 3u;
@@ -93,6 +118,31 @@ layout(push_constant) uniform Prepass {
   float minGap;
   uint midpointBase;  // the scene's vertex count: edge e's midpoint is vertex midpointBase + e
 } prepass;
+
+// Writes triangle t (vertex indices i) of the current mesh into its flat list, whose slots are
+// the mesh's own index range: classify_triangles.comp fills every slot, with a degenerate
+// triangle (no fragments) where the triangle is drawn otherwise or not at all. No compaction:
+// appending 1M triangles through one atomic counter cost more than the degenerate ones, and the
+// scene's own order keeps the vertex cache warm.
+void writeFlat(uint t, uint i[3]) {
+  uint at = prepass.firstIndex + 3u * t;
+  simpleIndices[at] = i[0]; simpleIndices[at + 1u] = i[1]; simpleIndices[at + 2u] = i[2];
+}
+
+// Appends triangle t of the current mesh to its bent list, growing the list's dispatch (the first
+// of each workgroup's worth of slots).
+void appendBent(uint t) {
+  uint slot = atomicAdd(bentDispatch[prepass.mesh].count, 1u);
+  bentTriangles[prepass.firstIndex / 3u + slot] = t;
+  if (slot % kBentGroup == 0u) atomicMax(bentDispatch[prepass.mesh].groupsX, slot / kBentGroup + 1u);
+}
+
+// The same for the straight list.
+void appendStraight(uint t) {
+  uint slot = atomicAdd(straightDispatch[prepass.mesh].count, 1u);
+  straightTriangles[prepass.firstIndex / 3u + slot] = t;
+  if (slot % kBentGroup == 0u) atomicMax(straightDispatch[prepass.mesh].groupsX, slot / kBentGroup + 1u);
+}
 
 // Virtual point of vertex v in the physical frame, relative to the map's reference point.
 vec3 vertexRelative(uint v) {

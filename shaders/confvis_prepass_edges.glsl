@@ -1,5 +1,5 @@
-// Conformal pre-pass: edge e's warped midpoint and tessellation level (classify_edges.comp and,
-// for the edges whose midpoint needs the four-texel lookup, classify_edges_across_cut.comp).
+// Conformal pre-pass: edge e's warped midpoint and tessellation level (classify_edges.comp for
+// the straight edges, classify_edges_bent.comp for the others).
 // The level's sign tells whether the edge may lose pieces to confvisDropTriangle (negative: it
 // spans the cut, or part of it lies outside the source field).
 #ifndef CONFVIS_PREPASS_EDGES_GLSL
@@ -13,6 +13,37 @@ vec3 edgeMidpointRelative(uint e) {
   return 0.5 * (vertexRelative(edges[e].x) + vertexRelative(edges[e].y));
 }
 
+// Edge e is drawn in one segment and spans no cut, as writeEdgeLevel would find: it is short,
+// its warped halves are too short to span a jump and its warped midpoint lies within the error
+// bound of the chord. Conservative (chords below angles, with a margin): an edge it does not
+// accept may still be straight.
+bool edgeSurelyStraight(uint e, vec4 midpoint) {
+  uvec2 v = edges[e];
+  vec3 wa = warped[v.x].xyz, wb = warped[v.y].xyz, wm = midpoint.xyz;
+  return chordBelow(directionChord(vertexRelative(v.x), vertexRelative(v.y)),
+                    prepass.maxSegmentAngle) &&
+         chordBelow(max(directionChord(wa, wm), directionChord(wm, wb)),
+                    8.0 * prepass.maxErrorAngle) &&
+         chordBelow(directionChord(wm, 0.5 * (wa + wb)), prepass.maxErrorAngle);
+}
+
+// Edge e's level and flags (EdgeFlags), `segments` its level (negative where it may lose pieces).
+void writeEdge(uint e, vec4 midpoint, float segments) {
+  uvec2 v = edges[e];
+  vec4 wa = warped[v.x], wb = warped[v.y];
+  edgeLevels[e] = vec4(midpoint.xyz, segments);
+  bool small = chordBelow(directionChord(wa.xyz, wb.xyz), prepass.minGap);
+  edgeFlags[e] = (abs(segments) == 1.0 ? kEdgeStraight : 0u) | (small ? kEdgeSmall : 0u) |
+                 (max(wa.w, wb.w) < 0.5 ? kEdgeUnseen : 0u);
+}
+
+// writeEdgeLevel for an edge edgeSurelyStraight accepts: one segment.
+void writeStraightEdgeLevel(uint e, vec4 midpoint) {
+  uvec2 v = edges[e];
+  bool mayDrop = min(midpoint.w, min(warped[v.x].w, warped[v.y].w)) < 1.0;
+  writeEdge(e, midpoint, mayDrop ? -1.0 : 1.0);
+}
+
 void writeEdgeLevel(uint e, vec4 midpoint) {
   uvec2 v = edges[e];
   bool acrossCut;
@@ -20,7 +51,7 @@ void writeEdgeLevel(uint e, vec4 midpoint) {
       vertexRelative(v.x), vertexRelative(v.y), warped[v.x].xyz, warped[v.y].xyz, midpoint,
       prepass.maxErrorAngle, prepass.maxSegmentAngle, acrossCut);
   bool mayDrop = acrossCut || min(midpoint.w, min(warped[v.x].w, warped[v.y].w)) < 1.0;
-  edgeLevels[e] = vec4(midpoint.xyz, mayDrop ? -segments : segments);
+  writeEdge(e, midpoint, mayDrop ? -segments : segments);
 }
 
 #endif

@@ -14,5 +14,5 @@ void main() {
   vec4 w;
   bool plain = confvisWarpRelativeBilinear(vertexRelative(v), w);
   warped[v] = w;
-  if (!plain) queueAcrossCut(kAcrossCutVertices, v);
+  if (!plain) enqueue(kQueueVertices, v);
 }

@@ -9,7 +9,7 @@ layout(local_size_x = 64) in;
 
 void main() {
   uint slot = gl_GlobalInvocationID.x;
-  if (slot >= acrossCutDispatch[kAcrossCutVertices].count) return;
-  uint v = acrossCutVertices[slot];
+  if (slot >= queueDispatch[kQueueVertices].count) return;
+  uint v = queuedVertices[slot];
   warped[v] = confvisWarpRelative(vertexRelative(v));
 }

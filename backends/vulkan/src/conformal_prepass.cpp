@@ -26,6 +26,10 @@ VkDeviceSize ConformalPrepass::commandOffset(std::size_t draw, PrepassList list)
          sizeof(VkDrawIndexedIndirectCommand);
 }
 
+std::uint32_t ConformalPrepass::flatTriangles(std::size_t draw) const {
+  return static_cast<const std::uint32_t*>(flatCounts_.mapped())[draw];
+}
+
 VkDrawIndexedIndirectCommand ConformalPrepass::command(std::size_t draw, PrepassList list) const {
   VkDrawIndexedIndirectCommand c = static_cast<const VkDrawIndexedIndirectCommand*>(
       commands_.mapped())[commandOffset(draw, list) / sizeof(VkDrawIndexedIndirectCommand)];
@@ -54,15 +58,28 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   bentTriangles_ =
       Buffer(context_, std::max<std::size_t>(scene.triangleCount(), 1) * sizeof(std::uint32_t),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+  straightDispatch_ = Buffer(context_, scene.draws().size() * sizeof(BentDispatch),
+                             VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             true);
+  straightTriangles_ =
+      Buffer(context_, std::max<std::size_t>(scene.triangleCount(), 1) * sizeof(std::uint32_t),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 
-  acrossCutDispatch_ = Buffer(context_, 2 * sizeof(BentDispatch),
+  queueDispatch_ = Buffer(context_, 2 * sizeof(BentDispatch),
                               VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                               true);
-  acrossCutVertices_ =
+  queuedVertices_ =
       Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(std::uint32_t),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-  acrossCutEdges_ =
+  queuedEdges_ =
+      Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(std::uint32_t),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+
+  flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+  edgeFlags_ =
       Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(std::uint32_t),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 
@@ -91,8 +108,9 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       flat_.get(),          tessellated_.get(),          commands_.get(),
       scene.edgeBuffer(),   scene.triangleEdgeBuffer(), edgeLevels_.get(),
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
-      bentTriangles_.get(), acrossCutDispatch_.get(), acrossCutVertices_.get(),
-      acrossCutEdges_.get()};
+      bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
+      queuedEdges_.get(),   flatCounts_.get(),           edgeFlags_.get(),
+      straightDispatch_.get(), straightTriangles_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   rangeEnds_.clear();
@@ -105,19 +123,25 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                               VkDescriptorSet frameSet, VkDescriptorSet warpSet,
                               const PrepassThresholds& thresholds) {
   prepare(scene);
-  // Empty lists, one instance, each mesh's own index range and vertex offset.
+  // Empty lists (the flat list spans the mesh's range: writeFlat), one instance, each mesh's own
+  // index range and vertex offset.
   auto* commands = static_cast<VkDrawIndexedIndirectCommand*>(commands_.mapped());
+  auto* flatCounts = static_cast<std::uint32_t*>(flatCounts_.mapped());
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
     const GpuScene::Draw& draw = scene.draws()[d];
     for (std::uint32_t list = 0; list < kPrepassLists; ++list)
       commands[kPrepassLists * d + list] = {0, 1, draw.firstIndex, draw.vertexOffset, 0};
+    commands[kPrepassLists * d + static_cast<std::uint32_t>(PrepassList::Flat)].indexCount =
+        draw.indexCount;
+    flatCounts[d] = 0;
     commands[kPrepassLists * d + static_cast<std::uint32_t>(PrepassList::Pieces)].firstIndex =
         kPieceCapacity * draw.firstIndex;
   }
   auto* bent = static_cast<BentDispatch*>(bentDispatch_.mapped());
-  for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = {0, 1, 1, 0};
-  auto* acrossCut = static_cast<BentDispatch*>(acrossCutDispatch_.mapped());
-  acrossCut[0] = acrossCut[1] = {0, 1, 1, 0};
+  auto* straight = static_cast<BentDispatch*>(straightDispatch_.mapped());
+  for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = straight[d] = {0, 1, 1, 0};
+  auto* queues = static_cast<BentDispatch*>(queueDispatch_.mapped());
+  queues[0] = queues[1] = {0, 1, 1, 0};
 
   // The previous frame's draws read what this frame overwrites.
   vkCmdPipelineBarrier(cmd,
@@ -138,8 +162,8 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
 
-  // A pass's results (and its queue of lookups across the cut, with their dispatch) ready for
-  // the next.
+  // A pass's results (and its queue for the next pass, with that pass's dispatch) ready for the
+  // next.
   VkMemoryBarrier passDone{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   passDone.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   passDone.dstAccessMask =
@@ -151,7 +175,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   };
   barrier();
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVerticesAcrossCut());
-  vkCmdDispatchIndirect(cmd, acrossCutDispatch_.get(), 0);
+  vkCmdDispatchIndirect(cmd, queueDispatch_.get(), 0);
   barrier();
 
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdges());
@@ -159,12 +183,12 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
   barrier();
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdgesAcrossCut());
-  vkCmdDispatchIndirect(cmd, acrossCutDispatch_.get(), sizeof(BentDispatch));
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdgesBent());
+  vkCmdDispatchIndirect(cmd, queueDispatch_.get(), sizeof(BentDispatch));
   barrier();
 
-  // Per mesh: its triangles, directly (first pass) or over its bent list (second pass).
-  const auto classifyMeshes = [&](VkPipeline pipeline, bool bentList) {
+  // Per mesh: its triangles, directly (first pass) or over one of its lists (indirect).
+  const auto classifyMeshes = [&](VkPipeline pipeline, const Buffer* list) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     for (std::size_t d = 0; d < scene.draws().size(); ++d) {
       const GpuScene::Draw& draw = scene.draws()[d];
@@ -173,15 +197,17 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
       push.firstIndex = draw.firstIndex;
       push.vertexOffset = draw.vertexOffset;
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-      if (bentList)
-        vkCmdDispatchIndirect(cmd, bentDispatch_.get(), d * sizeof(BentDispatch));
+      if (list != nullptr)
+        vkCmdDispatchIndirect(cmd, list->get(), d * sizeof(BentDispatch));
       else
         vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
     }
   };
-  classifyMeshes(pipelines_.classifyTriangles(), false);
+  classifyMeshes(pipelines_.classifyTriangles(), nullptr);
+  barrier();
+  classifyMeshes(pipelines_.classifyStraightTriangles(), &straightDispatch_);
 
-  // The bent lists and their dispatches are ready; the second pass appends to the same lists.
+  // The bent lists and their dispatches are ready; the last pass appends to the same lists.
   VkMemoryBarrier bentReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   bentReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
   bentReady.dstAccessMask =
@@ -189,7 +215,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
                        0, 1, &bentReady, 0, nullptr, 0, nullptr);
-  classifyMeshes(pipelines_.classifyBentTriangles(), true);
+  classifyMeshes(pipelines_.classifyBentTriangles(), &bentDispatch_);
 
   VkMemoryBarrier listsReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   listsReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;

@@ -1,16 +1,21 @@
 #pragma once
 // The conformal pre-pass, once per frame for all walls and eyes: warps every scene vertex
-// (warp_vertices.comp; the few next to the source's cut, which need the four-texel lookup, in
-// an indirect pass of their own, as the edges below) and sorts every triangle into "flat" (drawn between its warped corners by
-// a plain vertex shader), "tessellated" (drawn through the tessellation pipeline, which bends and
-// culls it) or "dropping" (tessellation and a geometry shader that drops pieces across the cut or
-// outside the source field), writing one compacted index list and one draw command per mesh and
-// list (classify_triangles.comp: the flat test over every triangle, then
-// classify_bent_triangles.comp, dispatched indirectly over the rest only), with each distinct edge's level measured once before
-// (classify_edges.comp) and copied next to the tessellated lists for warp.tesc. Per-patch
-// tessellation is costly on some devices (lavapipe above all: its vertex, tessellation and
-// geometry stages run on one thread); most triangles of a finely meshed scene need none, and few
-// of the rest need the geometry shader.
+// (warp_vertices.comp; the few next to the source's cut, which need the four-texel lookup, in an
+// indirect pass of their own), measures every distinct edge once (classify_edges.comp: cheap
+// tests finish the straight ones; classify_edges_bent.comp, indirect, measures the rest) and
+// sorts every triangle into "flat" (drawn between its warped corners by a plain vertex shader),
+// "pieces" (split at its edge midpoints, drawn flat), "tessellated" (the tessellation pipeline,
+// which bends and culls it) or "dropping" (tessellation and a geometry shader that drops pieces
+// across the cut or outside the source field): classify_triangles.comp runs the flat test over
+// every triangle from its edges' flags and writes the flat list in the scene's order (degenerate
+// triangles where not flat); classify_straight_triangles.comp, dispatched indirectly, runs the
+// full drop test on the straight triangles too large for the flags' test;
+// classify_bent_triangles.comp, indirectly too, sorts the rest into compacted lists with one
+// draw command per mesh and list. Per-patch tessellation is costly
+// on some devices (lavapipe above all: its vertex, tessellation and geometry stages run on one
+// thread); most triangles of a finely meshed scene need none, and few of the rest need the
+// geometry shader. Lavapipe also runs both sides of every branch for all SIMD lanes, hence the
+// cheap first passes and the short indirect ones.
 #include <cstdint>
 #include <vector>
 
@@ -55,6 +60,9 @@ class ConformalPrepass {
   // (the dropping list ends where the mesh's range does); valid once its submission has
   // completed.
   VkDrawIndexedIndirectCommand command(std::size_t draw, PrepassList list) const;
+  // Mesh `draw`'s triangles in the flat list that are not degenerate (the list holds the whole
+  // mesh's range); valid once the submission has completed.
+  std::uint32_t flatTriangles(std::size_t draw) const;
   // Byte offset of mesh `draw`'s VkDrawIndexedIndirectCommand for `list`.
   static VkDeviceSize commandOffset(std::size_t draw, PrepassList list);
 
@@ -69,8 +77,13 @@ class ConformalPrepass {
   // Per mesh: VkDispatchIndirectCommand and bent-list length (BentDispatch of the shaders).
   Buffer bentDispatch_;
   Buffer bentTriangles_;  // uint per scene triangle
-  // The vertices' and edges' lookups across the cut: two BentDispatch, the lists (uint each).
-  Buffer acrossCutDispatch_, acrossCutVertices_, acrossCutEdges_;
+  // The same for the straight list (classify_straight_triangles.comp).
+  Buffer straightDispatch_, straightTriangles_;
+  // The vertices queued for lookups across the cut, the edges for full measurement: two
+  // BentDispatch, the lists (uint each).
+  Buffer queueDispatch_, queuedVertices_, queuedEdges_;
+  Buffer flatCounts_;  // uint per mesh, host-visible
+  Buffer edgeFlags_;   // uint per scene edge
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

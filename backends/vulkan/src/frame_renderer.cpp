@@ -220,7 +220,7 @@ FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene)
   PrepassCounts counts;
   counts.seconds = prepassSeconds_;
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
-    counts.flat += prepass_.command(d, PrepassList::Flat).indexCount / 3 +
+    counts.flat += prepass_.flatTriangles(d) +
                    prepass_.command(d, PrepassList::Pieces).indexCount / 3;
     counts.tessellated += prepass_.command(d, PrepassList::Tessellated).indexCount / 3;
     counts.dropping += prepass_.command(d, PrepassList::Dropping).indexCount / 3;

@@ -40,7 +40,7 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 16;
+inline constexpr std::uint32_t kPrepassBindings = 20;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -84,8 +84,9 @@ class Pipelines {
   VkPipeline warpVertices() const { return warpVertices_.get(); }
   VkPipeline warpVerticesAcrossCut() const { return warpVerticesAcrossCut_.get(); }
   VkPipeline classifyEdges() const { return classifyEdges_.get(); }
-  VkPipeline classifyEdgesAcrossCut() const { return classifyEdgesAcrossCut_.get(); }
+  VkPipeline classifyEdgesBent() const { return classifyEdgesBent_.get(); }
   VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
+  VkPipeline classifyStraightTriangles() const { return classifyStraightTriangles_.get(); }
   VkPipeline classifyBentTriangles() const { return classifyBentTriangles_.get(); }
 
   // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
@@ -116,8 +117,8 @@ class Pipelines {
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
-  UniquePipeline warpVertices_, warpVerticesAcrossCut_, classifyEdges_, classifyEdgesAcrossCut_,
-      classifyTriangles_, classifyBentTriangles_;
+  UniquePipeline warpVertices_, warpVerticesAcrossCut_, classifyEdges_, classifyEdgesBent_,
+      classifyTriangles_, classifyStraightTriangles_, classifyBentTriangles_;
   std::map<std::uint32_t, Pass> passes_;
 };
 

@@ -1,14 +1,16 @@
-// The conformal pre-pass compute pipelines (warp_vertices.comp, classify_edges.comp, their
-// *_across_cut.comp passes, classify_triangles.comp, classify_bent_triangles.comp) and their
-// layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
+// The conformal pre-pass compute pipelines (warp_vertices.comp, warp_vertices_across_cut.comp,
+// classify_edges.comp, classify_edges_bent.comp, classify_triangles.comp,
+// classify_straight_triangles.comp, classify_bent_triangles.comp) and their layout: set 0 the frame, set 1 the warp map, set 2 the
+// pre-pass buffers.
 #include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
 
 #include "pipelines.hpp"
 #include "vk_check.hpp"
 
 #include "confvis_spirv/classify_bent_triangles_comp.h"
-#include "confvis_spirv/classify_edges_across_cut_comp.h"
+#include "confvis_spirv/classify_edges_bent_comp.h"
 #include "confvis_spirv/classify_edges_comp.h"
+#include "confvis_spirv/classify_straight_triangles_comp.h"
 #include "confvis_spirv/classify_triangles_comp.h"
 #include "confvis_spirv/warp_vertices_across_cut_comp.h"
 #include "confvis_spirv/warp_vertices_comp.h"
@@ -47,16 +49,18 @@ void Pipelines::createComputePipelines() {
   const UniqueShaderModule warpAcrossCut =
       shaderModule(device, kSpirv_warp_vertices_across_cut_comp);
   const UniqueShaderModule edges = shaderModule(device, kSpirv_classify_edges_comp);
-  const UniqueShaderModule edgesAcrossCut =
-      shaderModule(device, kSpirv_classify_edges_across_cut_comp);
+  const UniqueShaderModule edgesBent =
+      shaderModule(device, kSpirv_classify_edges_bent_comp);
   const UniqueShaderModule classify = shaderModule(device, kSpirv_classify_triangles_comp);
   warpVertices_ = computePipeline(device, layout, warp);
   warpVerticesAcrossCut_ = computePipeline(device, layout, warpAcrossCut);
   classifyEdges_ = computePipeline(device, layout, edges);
-  classifyEdgesAcrossCut_ = computePipeline(device, layout, edgesAcrossCut);
+  classifyEdgesBent_ = computePipeline(device, layout, edgesBent);
   classifyTriangles_ = computePipeline(device, layout, classify);
   const UniqueShaderModule bent = shaderModule(device, kSpirv_classify_bent_triangles_comp);
   classifyBentTriangles_ = computePipeline(device, layout, bent);
+  const UniqueShaderModule straight = shaderModule(device, kSpirv_classify_straight_triangles_comp);
+  classifyStraightTriangles_ = computePipeline(device, layout, straight);
 }
 
 }  // namespace confvis::vulkan
