@@ -1,9 +1,9 @@
 // Vulkan backend benchmark (run by hand, never in CI): frame time of conformal rendering as a
 // multiple of plain rendering of the same scene, walls and resolution, measured in the same run
 // (goal <= 1.5), and how that ratio and the image move with the tessellation threshold.
-// Timing maps (analytic): the identity (no bend: the warp's fixed cost), a Moebius zoom (a smooth
-// conformal map) and an azimuth squeeze (a cut along a half-meridian and singular poles: a
-// stress test). Threshold sweeps: under the zoom map against the closed form (checker colours
+// Timing maps: the identity (no bend: the warp's fixed cost), a Moebius zoom (a smooth conformal
+// map), an azimuth squeeze (a cut along a half-meridian and singular poles: a stress test) and
+// the config's real baked map (its cut and rim) at the default threshold. Threshold sweeps: under the zoom map against the closed form (checker colours
 // along T_ray of each pixel's direction), and under the config's real baked map against the
 // Embree backend's render of the centre eye (the backward path of design note §5).
 // Times are medians of wall-clock and of process CPU time (lavapipe renders on the CPU in this
@@ -276,6 +276,11 @@ int main(int argc, char** argv) {
     const RetargetMap squeeze = test::azimuthSqueezeMap(256);
     constexpr double kZoom = 2.0;
     const RetargetMap zoom = test::zoomMap(256, kZoom);
+    // The config's real map (the cut, its rim) at the default threshold, beside the smooth ones.
+    BakeDisplayOptions bakeOptions;
+    bakeOptions.useCache = false;
+    bakeOptions.resolution = bakeResolution;
+    const RetargetMap baked = bakeDisplay(config, bakeOptions).map;
 
     std::vector<std::pair<std::string, std::size_t>> scenes;
     if (!skip20k) scenes.push_back({"sphere-20k", 20000});
@@ -284,8 +289,9 @@ int main(int argc, char** argv) {
                 config.name.c_str(), config.walls.size(), scale,
                 int(std::lround(config.walls[0].width * scale)),
                 int(std::lround(config.walls[0].height * scale)), repeats);
-    std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s %9s\n", "scene", "triangles", "map",
-                "plain s", "conf s", "ratio", "plain cpu", "conf cpu", "ratio", "prepass s");
+    std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s %9s %9s %8s\n", "scene", "triangles",
+                "map", "plain s", "conf s", "ratio", "plain cpu", "conf cpu", "ratio", "prepass s",
+                "tess", "with GS");
     for (const auto& [name, triangles] : scenes) {
       const Scene scene = sphereWithTriangles(triangles);
       backend->setScene(scene);
@@ -296,13 +302,16 @@ int main(int argc, char** argv) {
       for (const auto& [mapName, map] :
            {std::pair<const char*, const RetargetMap*>{"identity", &identity},
             {"zoom", &zoom},
-            {"squeeze", &squeeze}}) {
+            {"squeeze", &squeeze},
+            {"baked", &baked}}) {
         const Timing conformal = timeFrames(*backend, config, map, settings, repeats);
-        std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f %9.4f\n", name.c_str(),
-                    scene.triangleCount(), mapName, plain.seconds, conformal.seconds,
-                    conformal.seconds / plain.seconds, plain.cpu, conformal.cpu,
-                    conformal.cpu / plain.cpu,
-                    conformal.last.stats.value("prepass_seconds", 0.0));
+        std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f %9.4f %9zu %8zu\n",
+                    name.c_str(), scene.triangleCount(), mapName, plain.seconds,
+                    conformal.seconds, conformal.seconds / plain.seconds, plain.cpu,
+                    conformal.cpu, conformal.cpu / plain.cpu,
+                    conformal.last.stats.value("prepass_seconds", 0.0),
+                    conformal.last.stats.value("triangles_tessellated", std::size_t{0}),
+                    conformal.last.stats.value("triangles_through_geometry_shader", std::size_t{0}));
         std::fflush(stdout);
       }
     }
