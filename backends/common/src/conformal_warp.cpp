@@ -78,10 +78,14 @@ std::uint64_t mixHash(std::uint64_t hash, double value) {
 }
 
 std::uint64_t ConformalWarp::fingerprint() const {
+  return fingerprintCubeMap(map_->ray, reference_);
+}
+
+std::uint64_t fingerprintCubeMap(const CubeMap& map, const glm::dvec3& reference) {
   // Four independent lanes (instruction-level parallelism: this runs once per render call over
   // the whole map), folded together at the end.
   std::array<std::uint64_t, 4> lanes = {1, 2, 3, 4};
-  for (const ImageRGBA& face : map_->ray.faces) {
+  for (const ImageRGBA& face : map.faces) {
     const std::size_t words = face.pixels.size() / 2;  // two floats per word
     const float* data = face.pixels.data();
     std::size_t i = 0;
@@ -93,9 +97,9 @@ std::uint64_t ConformalWarp::fingerprint() const {
       }
     for (; 2 * i < face.pixels.size(); ++i) lanes[0] = mixHash(lanes[0], double(data[2 * i]));
   }
-  std::uint64_t hash = static_cast<std::uint64_t>(map_->ray.faceSize);
+  std::uint64_t hash = static_cast<std::uint64_t>(map.faceSize);
   for (std::uint64_t lane : lanes) hash = mixHash(hash, lane);
-  for (double value : {reference_.x, reference_.y, reference_.z}) hash = mixHash(hash, value);
+  for (double value : {reference.x, reference.y, reference.z}) hash = mixHash(hash, value);
   return hash;
 }
 

@@ -67,7 +67,7 @@ class FrameRenderer {
   VkDescriptorSet frameSet_ = VK_NULL_HANDLE, warpSet_ = VK_NULL_HANDLE;
   Image geomMap_;
   UniqueSampler warpSampler_;
-  std::size_t mapHash_ = 0;
+  std::uint64_t mapHash_ = 0;
   ConformalPrepass prepass_;
   double prepassSeconds_ = 0.0;
 };

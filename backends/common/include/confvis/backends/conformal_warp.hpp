@@ -17,6 +17,10 @@ namespace confvis {
 std::uint64_t mixHash(std::uint64_t hash, std::uint64_t word);
 std::uint64_t mixHash(std::uint64_t hash, double value);
 
+// A hash (mixHash) of a cube map's texels, its size and a reference point: identifies a map for
+// caches of values derived from it (once per frame: about 1 ms for 256^2 texels a face).
+std::uint64_t fingerprintCubeMap(const CubeMap& map, const glm::dvec3& reference);
+
 class ConformalWarp {
  public:
   // Checks the map once (well-formed faces, finite reference). Keeps a reference to `map`.
