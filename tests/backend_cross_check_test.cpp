@@ -74,9 +74,7 @@ double holeFraction(const ImageRGBA& vulkan, const ImageRGBA& embree) {
 
 // A hemisphere source: no cut, but next to the wall's corners the map magnifies without bound.
 // Read as jumps of the map, that magnification had the warp drop the triangles there: holes in
-// 6 % and 10 % of the two left monitors here (now 1.3 % and 0.8 %). The rest of the difference
-// is Embree's: at 128 texels a face the bilinear alpha of the unlit bezels between the monitors
-// and along the rim blacks out lines a texel wide that Vulkan draws.
+// 6 % and 10 % of the two left monitors here (now 1.3 % and 0.8 %).
 TEST(BackendCrossCheck, VulkanLeavesNoHolesThroughTheBakedMonitorWallMap) {
   CrossCheck check("md230x6");
   const RenderResult vulkan = check.vulkan(check.map);

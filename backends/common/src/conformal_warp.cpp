@@ -56,6 +56,24 @@ ConformalWarp::Lookup ConformalWarp::lookup(const glm::dvec3& physicalDir) const
   return {v / length, s[3] >= 0.5f, s[3]};
 }
 
+int ConformalWarp::litFootprint(const glm::dvec3& physicalDir,
+                                std::array<glm::dvec3, 4>& directions) const {
+  const int n = map_->ray.faceSize;
+  CubeFace face;
+  double x, y;
+  directionToTexel({physicalDir.x, physicalDir.y, physicalDir.z}, n, face, x, y);
+  const int x0 = static_cast<int>(std::floor(x - 0.5)), y0 = static_cast<int>(std::floor(y - 0.5));
+  int lit = 0;
+  for (int j = y0; j <= y0 + 1; ++j)
+    for (int i = x0; i <= x0 + 1; ++i) {
+      const Vec3d d = texelDirection(face, i, j, n);  // beyond the face where i or j is outside
+      const bool inside = i >= 0 && j >= 0 && i < n && j < n;
+      const float alpha = inside ? map_->ray.face(face).at(i, j)[3] : sampleNearest(map_->ray, d)[3];
+      if (alpha >= 0.5f) directions[static_cast<std::size_t>(lit++)] = {d.x, d.y, d.z};
+    }
+  return lit;
+}
+
 namespace {
 
 // mixHash's body, local so that fingerprint's loop inlines it (an exported function of a

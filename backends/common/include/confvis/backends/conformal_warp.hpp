@@ -4,6 +4,7 @@
 //   W(p)  = c + |p - c| F(dir(p)), which carries a physical point to the virtual point drawn there.
 // W is homogeneous about c (W(c + s x) = c + s (W(c + x) - c) for s > 0), so the image of a
 // straight physical eye ray bends only where it passes close to c.
+#include <array>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -34,6 +35,10 @@ class ConformalWarp {
   // One bilinear lookup of the ray map; d need not be unit but must be non-zero and finite.
   Lookup lookup(const glm::dvec3& physicalDir) const;
   glm::dvec3 direction(const glm::dvec3& physicalDir) const { return lookup(physicalDir).direction; }
+  // The physical directions (from c, through texel centres) of the lit texels (alpha >= 0.5)
+  // among the four of physicalDir's bilinear footprint; returns how many. Beyond a face edge a
+  // texel is the neighbouring face's texel nearest its centre's direction.
+  int litFootprint(const glm::dvec3& physicalDir, std::array<glm::dvec3, 4>& directions) const;
   // W(p); W(c) = c.
   glm::dvec3 warpPoint(const glm::dvec3& physicalPoint) const;
   const glm::dvec3& reference() const { return reference_; }
