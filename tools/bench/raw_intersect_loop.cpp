@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include "../../backends/embree/src/affine_directions.hpp"
+#include "../../backends/embree/src/camera_packet.hpp"
 #include "confvis/engine/view.hpp"
 
 namespace confvis::bench {
@@ -32,7 +33,8 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
                                               glm::vec3(view.rayDirection(1.0, 0.0) - base),
                                               glm::vec3(view.rayDirection(0.0, 1.0) - base)};
     const int across = (width + kTile - 1) / kTile, tiles = across * ((height + kTile - 1) / kTile);
-    // The renderer's layout: tiles in parallel, within a tile rows of 8-pixel packets.
+    // The renderer's layout: tiles in parallel, within a tile packets of 4 x 2 pixels
+    // (embree::PacketSamples), rows of them.
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
@@ -40,14 +42,16 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
       std::uint64_t tileRays = 0, tileHits = 0;
       for (int tile = r.begin(); tile != r.end(); ++tile) {
         const int x0 = (tile % across) * kTile, y0 = (tile / across) * kTile;
-        for (int y = y0; y < std::min(y0 + kTile, height); ++y)
-          for (int x = x0; x < std::min(x0 + kTile, width); x += 8) {
+        const int x1 = std::min(x0 + kTile, width), y1 = std::min(y0 + kTile, height);
+        for (int y = y0; y < y1; y += embree::kBlockRows)
+          for (int x = x0; x < x1; x += embree::kBlockColumns) {
             alignas(32) int valid[8];
             alignas(32) RTCRayHit8 rh;
             alignas(32) std::array<float, 8> px{}, py{};
-            const int count = std::min(x0 + kTile, width) - x;
+            const int columns = std::min(embree::kBlockColumns, x1 - x);
+            const int count = columns * std::min(embree::kBlockRows, y1 - y);
             for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
-            embree::pixelCentres(x, y, count, sx, sy, px, py);
+            embree::pixelCentres(x, y, columns, count, sx, sy, px, py);
             directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
             for (int lane = 0; lane < 8; ++lane) {
               rh.ray.org_x[lane] = origin.x;

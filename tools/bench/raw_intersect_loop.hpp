@@ -1,8 +1,8 @@
 #pragma once
 // The throughput ceiling for the render benchmark: the same primary rays as a plain render,
 // traced with a bare rtcIntersect8 loop (TBB tiles, 8-ray packets, no shading, no output). Ray
-// generation and packet layout follow the renderer (16-pixel tiles, runs of 8 pixels within a
-// tile row, float affine directions), so the fraction of this loop's rate measures what
+// generation and packet layout follow the renderer (16-pixel tiles, packets of 4 x 2 pixels,
+// float affine directions), so the fraction of this loop's rate measures what
 // shading, sampling and output cost, not a different traversal order.
 #include <cstdint>
 

@@ -36,17 +36,18 @@ struct AffineDirections {
   }
 };
 
-// Wall-pixel positions of the centres of output pixels x .. x + count - 1 of row y (lanes past
-// `count` repeat the last pixel), `pixelToWall` wall pixels per output pixel: (x + 0.5) s in
-// double, then float. One sample per pixel sits at the centre (stratifiedSample).
+// Wall-pixel positions of the centres of a packet's output pixels: lane i < count is pixel
+// (x + i % columns, y + i / columns), a block `columns` wide read row by row (lanes from `count`
+// on repeat the last pixel); `pixelToWall` wall pixels per output pixel: (x + 0.5) s in double,
+// then float. One sample per pixel sits at the centre (stratifiedSample).
 template <std::size_t N>
-void pixelCentres(int x, int y, int count, double pixelToWallX, double pixelToWallY,
+void pixelCentres(int x, int y, int columns, int count, double pixelToWallX, double pixelToWallY,
                   std::array<float, N>& px, std::array<float, N>& py) {
   for (std::size_t i = 0; i < N; ++i) {
-    const int column = x + std::min(static_cast<int>(i), count - 1);
-    px[i] = static_cast<float>((column + 0.5) * pixelToWallX);
+    const int lane = std::min(static_cast<int>(i), count - 1);
+    px[i] = static_cast<float>((x + lane % columns + 0.5) * pixelToWallX);
+    py[i] = static_cast<float>((y + lane / columns + 0.5) * pixelToWallY);
   }
-  py.fill(static_cast<float>((y + 0.5) * pixelToWallY));
 }
 
 }  // namespace confvis::embree

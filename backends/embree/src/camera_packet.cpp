@@ -11,7 +11,7 @@ namespace {
 using Lanes = std::array<float, kPacketSize>;
 
 glm::dvec2 lanePosition(const TileJob& job, const PacketSamples& samples, int lane) {
-  return samplePosition(job, samples.x + lane, samples.y, samples.sample,
+  return samplePosition(job, samples.laneX(lane), samples.laneY(lane), samples.sample,
                         samples.pixelSeeds[static_cast<std::size_t>(lane)]);
 }
 
@@ -20,8 +20,8 @@ void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples
                  PacketHits& hits) {
   alignas(32) Lanes px{}, py{};
   if (job.samplesPerPixel == 1) {  // at the pixel centres, as the benchmark's raw loop
-    pixelCentres(samples.x, samples.y, samples.count, job.pixelToWall.x, job.pixelToWall.y, px,
-                 py);
+    pixelCentres(samples.x, samples.y, samples.columns, samples.count, job.pixelToWall.x,
+                 job.pixelToWall.y, px, py);
   } else {
     for (int lane = 0; lane < kPacketSize; ++lane) {
       const glm::dvec2 p = lanePosition(job, samples, std::min(lane, samples.count - 1));
@@ -86,7 +86,7 @@ std::uint64_t traceStraightPacket(const EmbreeScene& scene, const CameraRays& ra
         hits.setStraightRay(lane, origin, direction);
     }
   }
-  return traceStraight(scene.handle(), samples.count, hits);
+  return traceStraight(scene.handle(), samples.count, samples.columns, hits);
 }
 
 }  // namespace
@@ -100,7 +100,7 @@ std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays
     const glm::dvec2 p = lanePosition(job, samples, lane);
     rays.make(p.x, p.y, paths[static_cast<std::size_t>(lane)]);
   }
-  return tracePaths(scene.handle(), paths.data(), samples.count, hits);
+  return tracePaths(scene.handle(), paths.data(), samples.count, samples.columns, hits);
 }
 
 }  // namespace confvis::embree

@@ -13,11 +13,24 @@
 
 namespace confvis::embree {
 
+// A packet's pixels: a block of up to kBlockColumns x kBlockRows output pixels inside a tile,
+// read row by row (lane i: pixel (x + i % columns, y + i / columns)). Two rows of four rather
+// than a row of eight: the rays of a packet then span about half the angle, which where the map
+// squeezes (the missing ceiling) and on finely meshed scenes lets Embree's packet traversal
+// visit fewer nodes: a raw rtcIntersect8 loop over 1M triangles runs ~15 % faster (conformal
+// rays: ~17 %).
+constexpr int kBlockColumns = 4, kBlockRows = 2;
+static_assert(kBlockColumns * kBlockRows == kPacketSize);
+
 struct PacketSamples {
-  int x = 0, y = 0;  // output pixels x .. x + count - 1 of row y
-  int count = 0;     // 1 .. kPacketSize
+  int x = 0, y = 0;  // the block's top-left output pixel
+  int columns = 0;   // 1 .. kBlockColumns: the block's pixels per row inside the tile
+  int count = 0;     // 1 .. kPacketSize: columns x the block's rows inside the tile
   int sample = 0;    // index of the sample within each pixel
   std::array<std::uint32_t, kPacketSize> pixelSeeds{};  // pixelSeed() per lane, if samples > 1
+
+  int laneX(int lane) const { return x + lane % columns; }
+  int laneY(int lane) const { return y + lane / columns; }
 };
 
 // Fills `hits` for the packet; returns the number of camera rays cast (see traceStraight).

@@ -5,9 +5,10 @@
 // camera, as a plain frame does). Unlit samples hold the zero vector.
 //
 // Stored in the order the tile renderer reads it: tile by tile, within a tile sample by sample,
-// then row by row, each row's runs of 8 pixels (one packet) as structure of arrays: 8 x, 8 y, 8
-// z (zeros past the tile's edge). A frame streams the table once (12 bytes a sample, far beyond
-// the caches at full resolution), so each tile reads one contiguous block, and a packet loads its
+// then its packets (blocks of 4 x 2 pixels, PacketSamples) row of blocks by row of blocks, each
+// as structure of arrays: 8 x, 8 y, 8 z (lanes in PacketSamples' order; zeros past the block's
+// pixels inside the tile). A frame streams the table once (12 bytes a sample, far beyond the
+// caches at full resolution), so each tile reads one contiguous block, and a packet loads its
 // three components as vectors.
 #include <algorithm>
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "confvis/backends/wall_map_grid.hpp"
+#include "camera_packet.hpp"
 #include "packet_tracer.hpp"
 #include "tile_renderer.hpp"
 
@@ -27,41 +29,37 @@ class DirectionTable {
   // in tiles of job.tileSize.
   DirectionTable(const WallMapGrid& grid, const TileJob& job);
 
-  // The packet of sample `sample` of pixels x .. x + 7 of row y (x at a run start: the tile's
-  // left edge plus a multiple of 8): unnormalised F (as WallMapGrid::at returns it), or zero
+  // The packet of sample `sample` of the block whose top-left pixel is (x, y) (a tile's corner
+  // plus multiples of the block size): unnormalised F (as WallMapGrid::at returns it), or zero
   // where the map is unlit or past the tile, x components at [0, 8), y at [8, 16), z at [16, 24).
   const float* packet(int x, int y, int sample) const {
-    return &components_[3 * runStart(x, y, sample)];
+    return &components_[3 * kPacketSize * packetIndex(x, y, sample)];
   }
   std::size_t sampleCount() const { return samples_; }
 
  private:
-  // Lanes stored for tile columns before x0 (every tile row run padded to 8 lanes).
-  std::size_t paddedX(int x0) const {
-    const auto tileColumn = static_cast<std::size_t>(x0 / tileSize_);
-    return tileColumn * paddedRun(tileSize_);
+  // The packet holding sample `sample` of pixel (x, y), and the pixel's lane in it.
+  std::size_t packetIndex(int x, int y, int sample) const {
+    const int tileX = x / tileSize_, tileY = y / tileSize_;
+    const int x0 = tileX * tileSize_, y0 = tileY * tileSize_;
+    const int tileWidth = std::min(tileSize_, width_ - x0);
+    const int tileHeight = std::min(tileSize_, height_ - y0);
+    const int blocksAcross = (tileWidth + kBlockColumns - 1) / kBlockColumns;
+    const int blocksDown = (tileHeight + kBlockRows - 1) / kBlockRows;
+    const std::size_t tile = static_cast<std::size_t>(tileY) * tilesAcross_ + tileX;
+    return tileFirstPacket_[tile] +
+           static_cast<std::size_t>((sample * blocksDown + (y - y0) / kBlockRows) * blocksAcross +
+                                    (x - x0) / kBlockColumns);
   }
-  static std::size_t paddedRun(int width) {
-    return static_cast<std::size_t>((width + kPacketSize - 1) / kPacketSize * kPacketSize);
-  }
-  // The first lane of the run that holds sample `sample` of pixel (x, y); a run of 8 lanes holds
-  // 24 floats from 3 x its first lane on.
-  std::size_t runStart(int x, int y, int sample) const {
-    const int x0 = x - x % tileSize_, y0 = y - y % tileSize_;
-    const std::size_t run = paddedRun(std::min(tileSize_, width_ - x0));
-    const auto tileHeight = static_cast<std::size_t>(std::min(tileSize_, height_ - y0));
-    // Every tile above this tile's row, then those to its left in the row.
-    const std::size_t tileStart =
-        static_cast<std::size_t>(y0) * paddedWidth_ + paddedX(x0) * tileHeight;
-    const auto column = static_cast<std::size_t>(x - x0);
-    return tileStart * static_cast<std::size_t>(samplesPerPixel_) +
-           (static_cast<std::size_t>(sample) * tileHeight + static_cast<std::size_t>(y - y0)) *
-               run +
-           column / kPacketSize * kPacketSize;
+  int laneOf(int x, int y) const {
+    const int x0 = x - x % tileSize_;
+    const int bx = x0 + (x - x0) / kBlockColumns * kBlockColumns;
+    const int columns = std::min(kBlockColumns, std::min(x0 + tileSize_, width_) - bx);
+    return (y % tileSize_ % kBlockRows) * columns + (x - bx);
   }
 
-  int width_ = 0, height_ = 0, samplesPerPixel_ = 1, tileSize_ = 1;
-  std::size_t paddedWidth_ = 0;  // lanes stored per image row
+  int width_ = 0, height_ = 0, samplesPerPixel_ = 1, tileSize_ = 1, tilesAcross_ = 1;
+  std::vector<std::size_t> tileFirstPacket_;  // per tile (row-major), its first packet
   std::size_t samples_ = 0;
   std::vector<float> components_;
 };

@@ -86,11 +86,15 @@ void clearMissedLanes(PacketHits& hits) {
   }
 }
 
+// Lanes are pixels in rows of `columns` (the last row possibly cut short by `count`): a lone miss
+// has hits beside it in its row, or the one neighbour at the row's end.
 bool isLoneMiss(const PacketHits& hits, const std::array<bool, kPacketSize>& missed, int lane,
-                int count) {
-  if (!missed[lane] || count < 2) return false;
-  const bool left = lane == 0 || hits.hit[lane - 1];
-  const bool right = lane == count - 1 || hits.hit[lane + 1];
+                int count, int columns) {
+  const int rowStart = lane - lane % columns;
+  const int rowEnd = std::min(rowStart + columns, count) - 1;
+  if (!missed[lane] || rowEnd == rowStart) return false;
+  const bool left = lane == rowStart || hits.hit[lane - 1];
+  const bool right = lane == rowEnd || hits.hit[lane + 1];
   return left && right;
 }
 
@@ -103,7 +107,8 @@ RTCIntersectContext coherentContext() {
 
 // Traces the lone misses among `missed` (lanes traced without a hit) once more from origins[lane]
 // along tails[lane] turned by kRetryAngle; records their hits. Returns the number retried.
-int retryLoneMisses(RTCScene scene, int count, const std::array<bool, kPacketSize>& missed,
+int retryLoneMisses(RTCScene scene, int count, int columns,
+                    const std::array<bool, kPacketSize>& missed,
                     const std::array<glm::vec3, kPacketSize>& origins,
                     const std::array<glm::vec3, kPacketSize>& tails, PacketHits& hits) {
   alignas(32) int valid[kPacketSize];
@@ -111,7 +116,7 @@ int retryLoneMisses(RTCScene scene, int count, const std::array<bool, kPacketSiz
   int retried = 0;
   for (int lane = 0; lane < kPacketSize; ++lane) {
     valid[lane] = 0;
-    if (!isLoneMiss(hits, missed, lane, count)) continue;
+    if (!isLoneMiss(hits, missed, lane, count, columns)) continue;
     setRay(retry.ray, lane, origins[lane], nudged(tails[lane]), kInfinity);
     retry.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
     retry.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
@@ -131,7 +136,7 @@ int retryLoneMisses(RTCScene scene, int count, const std::array<bool, kPacketSiz
 
 }  // namespace
 
-std::uint64_t traceStraight(RTCScene scene, int count, PacketHits& hits) {
+std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& hits) {
   hits.retraced = 0;
   int rays = 0;
   for (int lane = 0; lane < kPacketSize; ++lane) {
@@ -166,13 +171,14 @@ std::uint64_t traceStraight(RTCScene scene, int count, PacketHits& hits) {
                          hits.rayhit.ray.org_z[lane]};
         tails[lane] = hits.direction(lane);
       }
-    hits.retraced = retryLoneMisses(scene, count, missed, origins, tails, hits);
+    hits.retraced = retryLoneMisses(scene, count, columns, missed, origins, tails, hits);
   }
   clearMissedLanes(hits);
   return static_cast<std::uint64_t>(rays + hits.retraced);
 }
 
-std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, PacketHits& hits) {
+std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, int columns,
+                         PacketHits& hits) {
   RTCIntersectContext context = coherentContext();
   std::array<bool, kPacketSize> active{};
   int maxVertices = 0;
@@ -223,7 +229,7 @@ std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, Packet
       origins[lane] = paths[lane].vertices[paths[lane].vertexCount - 1];
       tails[lane] = paths[lane].tail;
     }
-  hits.retraced = retryLoneMisses(scene, count, active, origins, tails, hits);
+  hits.retraced = retryLoneMisses(scene, count, columns, active, origins, tails, hits);
   clearMissedLanes(hits);
   return rays + static_cast<std::uint64_t>(hits.retraced);
 }

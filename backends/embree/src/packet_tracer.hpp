@@ -44,17 +44,18 @@ struct PacketHits {
 };
 
 // Traces the lanes whose `valid` is set (origin and unit direction already in hits.rayhit, see
-// setStraightRay) as unbounded rays. A lane that misses while its packet neighbours (both, or
-// the only one at a packet end of `count` lanes) hit is traced once more turned by 1e-5 rad:
-// Embree's robust mode closes shared edges, but a ray exactly through a shared vertex can still
-// slip between the triangles around it (hits.retraced counts these). Returns the number of
-// rays cast, retries included.
-std::uint64_t traceStraight(RTCScene scene, int count, PacketHits& hits);
+// setStraightRay) as unbounded rays. The packet's `count` lanes are pixels in rows of `columns`
+// (PacketSamples). A lane that misses while its neighbours in its row (both, or the only one at
+// a row's end) hit is traced once more turned by 1e-5 rad: Embree's robust mode closes shared
+// edges, but a ray exactly through a shared vertex can still slip between the triangles around
+// it (hits.retraced counts these). Returns the number of rays cast, retries included.
+std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& hits);
 
 // Traces `count` (<= 8) bent paths: every lane's segments in order until one hits, then the
 // lone-miss retry of traceStraight along the tail. Unlit paths are not traced. Returns the
 // number of rays cast (one per lane and segment, retries included).
-std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, PacketHits& hits);
+std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, int columns,
+                         PacketHits& hits);
 
 struct OcclusionPacket {
   std::array<bool, kPacketSize> active{};

@@ -21,13 +21,14 @@ std::size_t tileCount(int width, int height, int tileSize) {
 
 namespace {
 
-// The colours of a packet's `count` lanes as RGBA pixels from `pixel` on, four lanes at a time
-// transposed with shuffles. (Non-temporal stores, which skip reading the image's lines in, gained
-// nothing: see the README.)
-void storePixels(const PacketColours& c, int count, float* pixel) {
-  int lane = 0;
+// The colours of lanes first .. first + count - 1 as RGBA pixels from `pixel` on, four lanes at a
+// time transposed with shuffles. (Non-temporal stores, which skip reading the image's lines in,
+// gained nothing: see the README.)
+void storeRun(const PacketColours& c, int first, int count, float* pixel) {
+  int lane = first;
+  const int end = first + count;
 #if defined(__SSE2__)
-  for (; lane + 4 <= count; lane += 4, pixel += 16) {
+  for (; lane + 4 <= end; lane += 4, pixel += 16) {
     __m128 r = _mm_load_ps(&c.red[lane]), g = _mm_load_ps(&c.green[lane]);
     __m128 b = _mm_load_ps(&c.blue[lane]), a = _mm_load_ps(&c.alpha[lane]);
     _MM_TRANSPOSE4_PS(r, g, b, a);
@@ -37,10 +38,26 @@ void storePixels(const PacketColours& c, int count, float* pixel) {
     _mm_storeu_ps(pixel + 12, a);
   }
 #endif
-  for (; lane < count; ++lane, pixel += 4) {
+  for (; lane < end; ++lane, pixel += 4) {
     pixel[0] = c.red[lane], pixel[1] = c.green[lane];
     pixel[2] = c.blue[lane], pixel[3] = c.alpha[lane];
   }
+}
+
+// A packet's colours into its block of the image, row by row.
+void storePixels(const PacketColours& c, const PacketSamples& samples, ImageRGBA& image) {
+  for (int first = 0; first < samples.count; first += samples.columns)
+    storeRun(c, first, samples.columns, image.at(samples.x, samples.laneY(first)));
+}
+
+// The packet of the block at (x, y) of the tile ending before (x1, y1).
+PacketSamples blockAt(int x, int y, int x1, int y1) {
+  PacketSamples samples;
+  samples.x = x;
+  samples.y = y;
+  samples.columns = std::min(kBlockColumns, x1 - x);
+  samples.count = samples.columns * std::min(kBlockRows, y1 - y);
+  return samples;
 }
 
 // One sample per pixel, at its centre: the packet's colours are the pixels.
@@ -48,23 +65,20 @@ void renderTileSingleSample(const EmbreeScene& scene, const CameraRays& rays, co
                             int x0, int y0, ImageRGBA& image, RayCounters& counters) {
   const int x1 = std::min(x0 + job.tileSize, job.width);
   const int y1 = std::min(y0 + job.tileSize, job.height);
-  PacketSamples samples;
   PacketHits hits;
   PacketColours colours;
   std::array<std::uint32_t, kPacketSize> sampleSeeds{};  // occlusion rays only
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; x += kPacketSize) {
-      samples.x = x;
-      samples.y = y;
-      samples.count = std::min(kPacketSize, x1 - x);
+  for (int y = y0; y < y1; y += kBlockRows) {
+    for (int x = x0; x < x1; x += kBlockColumns) {
+      const PacketSamples samples = blockAt(x, y, x1, y1);
       if (job.shading.ambientOcclusion)  // the supersampled loop's seeds of sample 0
         for (int lane = 0; lane < samples.count; ++lane)
-          sampleSeeds[lane] = hashU32(pixelSeed(job, x + lane, y));
+          sampleSeeds[lane] = hashU32(pixelSeed(job, samples.laneX(lane), samples.laneY(lane)));
       cameraRays += traceCameraPacket(scene, rays, job, samples, hits);
       retraced += static_cast<std::uint64_t>(hits.retraced);
       occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
-      storePixels(colours, samples.count, image.at(x, y));
+      storePixels(colours, samples, image);
     }
   }
   counters.camera += cameraRays;
@@ -78,19 +92,16 @@ void renderTileSupersampled(const EmbreeScene& scene, const CameraRays& rays,
                             RayCounters& counters) {
   const int x1 = std::min(x0 + job.tileSize, job.width);
   const int y1 = std::min(y0 + job.tileSize, job.height);
-  PacketSamples samples;
   PacketHits hits;
   PacketColours colours;
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
   const float scale = 1.0f / static_cast<float>(job.samplesPerPixel);
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; x += kPacketSize) {
-      samples.x = x;
-      samples.y = y;
-      samples.count = std::min(kPacketSize, x1 - x);
+  for (int y = y0; y < y1; y += kBlockRows) {
+    for (int x = x0; x < x1; x += kBlockColumns) {
+      PacketSamples samples = blockAt(x, y, x1, y1);
       PacketColours mean;  // the sum over the samples, then scaled
       for (int lane = 0; lane < samples.count; ++lane)
-        samples.pixelSeeds[lane] = pixelSeed(job, x + lane, y);
+        samples.pixelSeeds[lane] = pixelSeed(job, samples.laneX(lane), samples.laneY(lane));
       for (int sample = 0; sample < job.samplesPerPixel; ++sample) {
         samples.sample = sample;
         std::array<std::uint32_t, kPacketSize> sampleSeeds{};
@@ -110,7 +121,7 @@ void renderTileSupersampled(const EmbreeScene& scene, const CameraRays& rays,
         mean.red[lane] *= scale, mean.green[lane] *= scale;
         mean.blue[lane] *= scale, mean.alpha[lane] *= scale;
       }
-      storePixels(mean, samples.count, image.at(x, y));
+      storePixels(mean, samples, image);
     }
   }
   counters.camera += cameraRays;
