@@ -86,16 +86,23 @@ void clearMissedLanes(PacketHits& hits) {
   }
 }
 
-// Lanes are pixels in rows of `columns` (the last row possibly cut short by `count`): a lone miss
-// has hits beside it in its row, or the one neighbour at the row's end.
+// Lanes are pixels in rows of `columns` (PacketSamples): a lone miss has hits at every
+// neighbouring pixel of the packet, beside it in its row and above or below it.
 bool isLoneMiss(const PacketHits& hits, const std::array<bool, kPacketSize>& missed, int lane,
                 int count, int columns) {
-  const int rowStart = lane - lane % columns;
-  const int rowEnd = std::min(rowStart + columns, count) - 1;
-  if (!missed[lane] || rowEnd == rowStart) return false;
-  const bool left = lane == rowStart || hits.hit[lane - 1];
-  const bool right = lane == rowEnd || hits.hit[lane + 1];
-  return left && right;
+  if (!missed[lane]) return false;
+  const int column = lane % columns;
+  int neighbours = 0;
+  bool allHit = true;
+  const auto neighbour = [&](int other) {
+    ++neighbours;
+    allHit = allHit && hits.hit[other];
+  };
+  if (column > 0) neighbour(lane - 1);
+  if (column + 1 < columns) neighbour(lane + 1);
+  if (lane + columns < count) neighbour(lane + columns);
+  if (lane >= columns) neighbour(lane - columns);
+  return neighbours > 0 && allHit;
 }
 
 RTCIntersectContext coherentContext() {

@@ -45,8 +45,8 @@ struct PacketHits {
 
 // Traces the lanes whose `valid` is set (origin and unit direction already in hits.rayhit, see
 // setStraightRay) as unbounded rays. The packet's `count` lanes are pixels in rows of `columns`
-// (PacketSamples). A lane that misses while its neighbours in its row (both, or the only one at
-// a row's end) hit is traced once more turned by 1e-5 rad: Embree's robust mode closes shared
+// (PacketSamples). A lane that misses while its neighbours in the packet (beside it in its row,
+// above or below it) all hit is traced once more turned by 1e-5 rad: Embree's robust mode closes shared
 // edges, but a ray exactly through a shared vertex can still slip between the triangles around
 // it (hits.retraced counts these). Returns the number of rays cast, retries included.
 std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& hits);
