@@ -46,6 +46,11 @@ void storeRun(const PacketColours& c, int first, int count, float* pixel) {
 
 // A packet's colours into its block of the image, row by row.
 void storePixels(const PacketColours& c, const PacketSamples& samples, ImageRGBA& image) {
+  if (samples.count == kPacketSize && samples.columns == kBlockColumns) {  // a whole block
+    storeRun(c, 0, kBlockColumns, image.at(samples.x, samples.y));
+    storeRun(c, kBlockColumns, kBlockColumns, image.at(samples.x, samples.y + 1));
+    return;
+  }
   for (int first = 0; first < samples.count; first += samples.columns)
     storeRun(c, first, samples.columns, image.at(samples.x, samples.laneY(first)));
 }
