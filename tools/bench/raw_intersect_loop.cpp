@@ -10,19 +10,52 @@
 
 #include "../../backends/embree/src/affine_directions.hpp"
 #include "../../backends/embree/src/camera_packet.hpp"
+#include "confvis/backends/wall_map_grid.hpp"
 #include "confvis/engine/view.hpp"
 
 namespace confvis::bench {
 
+namespace {
+
+int scaled(int pixels, double scale) {
+  return std::max(1, static_cast<int>(std::lround(pixels * scale)));
+}
+
+}  // namespace
+
+ConformalDirections conformalDirections(const RetargetMap& map, const DisplayConfig& config,
+                                        double scale) {
+  const ConformalWarp warp(map);
+  ConformalDirections out;
+  for (const Wall& wall : config.walls) {
+    const int width = scaled(wall.width, scale), height = scaled(wall.height, scale);
+    const WallMapGrid grid(warp, wall,
+                           WallMapGrid::spacingFor(wall, warp.reference(), map.ray.faceSize, scale));
+    const double sx = static_cast<double>(wall.width) / width;
+    const double sy = static_cast<double>(wall.height) / height;
+    std::vector<glm::vec3> directions(static_cast<std::size_t>(width) * height, glm::vec3(0.0f));
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const WallMapGrid::Sample s = grid.at(static_cast<float>((x + 0.5) * sx),
+                                              static_cast<float>((y + 0.5) * sy));
+        if (s.alpha >= 0.5f)
+          directions[static_cast<std::size_t>(y) * width + x] = glm::normalize(s.direction);
+      }
+    out.walls.push_back(std::move(directions));
+  }
+  return out;
+}
+
 RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& config,
-                               double scale) {
+                               double scale, const ConformalDirections* conformal) {
   constexpr int kTile = 16;  // the renderer's default tile (EmbreeOptions::tileSize)
   std::atomic<std::uint64_t> rays{0}, hits{0};
   const auto start = std::chrono::steady_clock::now();
-  for (const Wall& wall : config.walls) {
+  for (std::size_t w = 0; w < config.walls.size(); ++w) {
+    const Wall& wall = config.walls[w];
+    const glm::vec3* table = conformal ? conformal->walls[w].data() : nullptr;
     const WallView view = makeWallView(wall, config.reference);
-    const int width = std::max(1, static_cast<int>(std::lround(wall.width * scale)));
-    const int height = std::max(1, static_cast<int>(std::lround(wall.height * scale)));
+    const int width = scaled(wall.width, scale), height = scaled(wall.height, scale);
     const double sx = static_cast<double>(wall.width) / width;
     const double sy = static_cast<double>(wall.height) / height;
     const glm::vec3 origin(view.eye_position);
@@ -51,8 +84,18 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
             const int columns = std::min(embree::kBlockColumns, x1 - x);
             const int count = columns * std::min(embree::kBlockRows, y1 - y);
             for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
-            embree::pixelCentres(x, y, columns, count, sx, sy, px, py);
-            directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+            if (table) {
+              for (int lane = 0; lane < 8; ++lane) {
+                const int l = std::min(lane, count - 1);
+                const glm::vec3 d = table[static_cast<std::size_t>(y + l / columns) * width + x +
+                                          l % columns];
+                rh.ray.dir_x[lane] = d.x, rh.ray.dir_y[lane] = d.y, rh.ray.dir_z[lane] = d.z;
+                if (d == glm::vec3(0.0f)) valid[lane] = 0;  // unlit
+              }
+            } else {
+              embree::pixelCentres(x, y, columns, count, sx, sy, px, py);
+              directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+            }
             for (int lane = 0; lane < 8; ++lane) {
               rh.ray.org_x[lane] = origin.x;
               rh.ray.org_y[lane] = origin.y;

@@ -5,8 +5,12 @@
 // float affine directions), so the fraction of this loop's rate measures what
 // shading, sampling and output cost, not a different traversal order.
 #include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "confvis/backends/embree/embree_scene.hpp"
+#include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 
 namespace confvis::bench {
@@ -17,8 +21,19 @@ struct RawLoopResult {
   double seconds = 0;
 };
 
-// Centre-eye pixel-centre rays of every wall at `scale`, as plain rendering shoots them.
+// The conformal centre-eye directions of every wall's output pixels at `scale` (F at the pixel
+// centre through the wall's WallMapGrid, as the renderer's direction table holds them, but unit;
+// zero where unlit), row by row: built once, before timing, as the renderer builds its table.
+struct ConformalDirections {
+  std::vector<std::vector<glm::vec3>> walls;
+};
+ConformalDirections conformalDirections(const RetargetMap& map, const DisplayConfig& config,
+                                        double scale);
+
+// Centre-eye pixel-centre rays of every wall at `scale`: plain ones as plain rendering shoots
+// them or, given `conformal`, those directions (unlit pixels not traced). The conformal loop is
+// the fair ceiling of a conformal render: its rays cross the squeezed parts of the scene too.
 RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& config,
-                               double scale);
+                               double scale, const ConformalDirections* conformal = nullptr);
 
 }  // namespace confvis::bench
