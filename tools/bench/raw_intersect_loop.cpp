@@ -124,4 +124,78 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
 }
 
+RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& config,
+                                 double scale) {
+  constexpr int kTile = 16;
+  std::atomic<std::uint64_t> rays{0}, hits{0};
+  const auto start = std::chrono::steady_clock::now();
+  for (const Wall& wall : config.walls) {
+    const WallView view = makeWallView(wall, config.reference);
+    const int width = scaled(wall.width, scale), height = scaled(wall.height, scale);
+    const double sx = static_cast<double>(wall.width) / width;
+    const double sy = static_cast<double>(wall.height) / height;
+    const glm::vec3 origin(view.eye_position);
+    const glm::dvec3 base = view.rayDirection(0.0, 0.0);
+    const embree::AffineDirections directions{glm::vec3(base),
+                                              glm::vec3(view.rayDirection(1.0, 0.0) - base),
+                                              glm::vec3(view.rayDirection(0.0, 1.0) - base)};
+    const int across = (width + kTile - 1) / kTile, tiles = across * ((height + kTile - 1) / kTile);
+    tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+      std::uint64_t tileRays = 0, tileHits = 0;
+      for (int tile = r.begin(); tile != r.end(); ++tile) {
+        const int x0 = (tile % across) * kTile, y0 = (tile / across) * kTile;
+        const int x1 = std::min(x0 + kTile, width), y1 = std::min(y0 + kTile, height);
+        for (int y = y0; y < y1; y += 2 * embree::kBlockRows)
+          for (int x = x0; x < x1; x += embree::kBlockColumns) {
+            alignas(64) int valid[16];
+            alignas(64) RTCRayHit16 rh;
+            const int columns = std::min(embree::kBlockColumns, x1 - x);
+            for (int half = 0; half < 2; ++half) {
+              const int top = y + half * embree::kBlockRows;
+              const int count = top < y1 ? columns * std::min(embree::kBlockRows, y1 - top) : 0;
+              alignas(32) std::array<float, 8> px{}, py{};
+              alignas(32) float dx[8], dy[8], dz[8];
+              if (count > 0) {
+                embree::pixelCentres(x, top, columns, count, sx, sy, px, py);
+                directions.at(px, py, dx, dy, dz);
+              }
+              for (int lane = 0; lane < 8; ++lane) {
+                const int at = 8 * half + lane;
+                valid[at] = lane < count ? -1 : 0;
+                rh.ray.dir_x[at] = count > 0 ? dx[lane] : 0.0f;
+                rh.ray.dir_y[at] = count > 0 ? dy[lane] : 0.0f;
+                rh.ray.dir_z[at] = count > 0 ? dz[lane] : 1.0f;
+              }
+            }
+            for (int lane = 0; lane < 16; ++lane) {
+              rh.ray.org_x[lane] = origin.x;
+              rh.ray.org_y[lane] = origin.y;
+              rh.ray.org_z[lane] = origin.z;
+              rh.ray.tnear[lane] = 0.0f;
+              rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
+              rh.ray.time[lane] = 0.0f;
+              rh.ray.mask[lane] = ~0u;
+              rh.ray.id[lane] = static_cast<unsigned>(lane);
+              rh.ray.flags[lane] = 0;
+              rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+            }
+            rtcIntersect16(valid, scene.handle(), &context, &rh);
+            for (int lane = 0; lane < 16; ++lane)
+              if (valid[lane]) {
+                ++tileRays;
+                tileHits += rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
+              }
+          }
+      }
+      rays += tileRays;
+      hits += tileHits;
+    });
+  }
+  return {rays.load(), hits.load(),
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+}
+
 }  // namespace confvis::bench

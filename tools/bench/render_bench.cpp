@@ -186,8 +186,8 @@ int main(int argc, char** argv) {
     // CPU seconds of the whole process (all threads): on a shared machine other processes steal
     // wall-clock time, not CPU time, so these ratios are the steadier ones.
     double plainCpu = 1e30, conformalCpu = 1e30, rawCpu = 1e30, freshPlainCpu = 1e30;
-    double rawConformalSeconds = 1e30, rawConformalCpu = 1e30;
-    bench::RawLoopResult raw, rawConformal;
+    double rawConformalSeconds = 1e30, rawConformalCpu = 1e30, raw16Seconds = 1e30;
+    bench::RawLoopResult raw, rawConformal, raw16;
     const bench::ConformalDirections conformalRays = bench::conformalDirections(map, config, scale);
     for (int i = 0; i < repeats; ++i) {  // interleaved, so load changes hit all alike
       double cpu = cpuSeconds();
@@ -211,6 +211,8 @@ int main(int argc, char** argv) {
       rawConformal = bench::rawIntersectLoop(rawScene, config, scale, &conformalRays);
       rawConformalSeconds = std::min(rawConformalSeconds, rawConformal.seconds);
       rawConformalCpu = std::min(rawConformalCpu, cpuSeconds() - cpu);
+      raw16 = bench::rawIntersect16Loop(rawScene, config, scale);
+      raw16Seconds = std::min(raw16Seconds, raw16.seconds);
     }
     const double rays = plainResult.stats["camera_rays"].get<double>();
     const double plainRate = rays / plainSeconds, conformalRate = rays / conformalSeconds;
@@ -228,6 +230,12 @@ int main(int argc, char** argv) {
                 100 * rawCpu / conformalCpu);
     std::printf("           plain by value (fresh images) %.4f s: %.0f %% of raw\n", freshPlainCpu,
                 100 * rawCpu / freshPlainCpu);
+    // The renderer traces two packets per rtcIntersect16: the same-width loop, like for like.
+    const double raw16Rate = static_cast<double>(raw16.rays) / raw16Seconds;
+    std::printf("raw rtcIntersect16 (the renderer's width) %8.4f s  %7.2f Mrays/s  plain %.0f %%, "
+                "conformal %.0f %% of it\n",
+                raw16Seconds, raw16Rate * 1e-6, 100 * plainRate / raw16Rate,
+                100 * conformalRate / raw16Rate);
     // The same loop over the conformal frame's own rays (they cross the squeezed parts of the
     // scene: the fair ceiling of a conformal render, beside the plain-ray loop the goal names).
     const double conformalRayCount = conformalResult.stats["camera_rays"].get<double>();
@@ -272,6 +280,7 @@ int main(int argc, char** argv) {
         {"plain_fraction_of_raw", plainRate / rawRate},
         {"conformal_fraction_of_raw", conformalRate / rawRate},
         {"raw_conformal_rays_per_second", rawConformalRate},
+        {"raw_rtcintersect16_rays_per_second", raw16Rate},
         {"conformal_fraction_of_raw_conformal", (conformalRayCount / conformalSeconds) / rawConformalRate},
         {"first_frame_map_build_seconds", firstFrame.stats["map_build_seconds"]},
         {"second_frame_map_build_seconds", secondFrame.stats["map_build_seconds"]}};

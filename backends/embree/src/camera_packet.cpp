@@ -63,9 +63,9 @@ void tablePacket(const CameraRays& rays, const DirectionTable& table,
   }
 }
 
-std::uint64_t traceStraightPacket(const EmbreeScene& scene, const CameraRays& rays,
-                                  const TileJob& job, const PacketSamples& samples,
-                                  PacketHits& hits) {
+// The packet's straight rays written into hits (valid lanes, origins, directions).
+void setUpStraightPacket(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
+                         PacketHits& hits) {
   RTCRay8& ray = hits.rayhit.ray;
   const glm::vec3& origin = rays.origin();
   for (int lane = 0; lane < kPacketSize; ++lane) {
@@ -86,7 +86,6 @@ std::uint64_t traceStraightPacket(const EmbreeScene& scene, const CameraRays& ra
         hits.setStraightRay(lane, origin, direction);
     }
   }
-  return traceStraight(scene.handle(), samples.count, samples.columns, hits);
 }
 
 }  // namespace
@@ -94,13 +93,28 @@ std::uint64_t traceStraightPacket(const EmbreeScene& scene, const CameraRays& ra
 std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays,
                                 const TileJob& job, const PacketSamples& samples,
                                 PacketHits& hits) {
-  if (rays.straight()) return traceStraightPacket(scene, rays, job, samples, hits);
+  if (rays.straight()) {
+    setUpStraightPacket(rays, job, samples, hits);
+    return traceStraight(scene.handle(), samples.count, samples.columns, hits);
+  }
   std::array<RayPath, kPacketSize> paths;
   for (int lane = 0; lane < samples.count; ++lane) {
     const glm::dvec2 p = lanePosition(job, samples, lane);
     rays.make(p.x, p.y, paths[static_cast<std::size_t>(lane)]);
   }
   return tracePaths(scene.handle(), paths.data(), samples.count, samples.columns, hits);
+}
+
+std::uint64_t traceCameraPacketPair(const EmbreeScene& scene, const CameraRays& rays,
+                                    const TileJob& job, const std::array<PacketSamples, 2>& samples,
+                                    std::array<PacketHits, 2>& hits) {
+  if (samples[1].count == 0) return traceCameraPacket(scene, rays, job, samples[0], hits[0]);
+  if (!rays.straight())
+    return traceCameraPacket(scene, rays, job, samples[0], hits[0]) +
+           traceCameraPacket(scene, rays, job, samples[1], hits[1]);
+  for (int half = 0; half < 2; ++half) setUpStraightPacket(rays, job, samples[half], hits[half]);
+  return traceStraightPair(scene.handle(), {samples[0].count, samples[1].count},
+                           {samples[0].columns, samples[1].columns}, hits);
 }
 
 }  // namespace confvis::embree

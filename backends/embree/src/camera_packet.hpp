@@ -38,4 +38,11 @@ std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays
                                 const TileJob& job, const PacketSamples& samples,
                                 PacketHits& hits);
 
+// Two packets (of a tile's 4 x 4 pixels) at once: straight rays in one 16-wide intersection
+// (traceStraightPair), curved ones packet by packet. samples[1].count may be 0 (the tile's last
+// row of blocks), which traces nothing there.
+std::uint64_t traceCameraPacketPair(const EmbreeScene& scene, const CameraRays& rays,
+                                    const TileJob& job, const std::array<PacketSamples, 2>& samples,
+                                    std::array<PacketHits, 2>& hits);
+
 }  // namespace confvis::embree

@@ -141,22 +141,26 @@ int retryLoneMisses(RTCScene scene, int count, int columns,
   return retried;
 }
 
-}  // namespace
-
-std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& hits) {
+// traceStraight's first step: the lanes to trace counted, the rays' other fields set. Returns
+// the count.
+int prepareStraight(PacketHits& hits) {
   hits.retraced = 0;
   int rays = 0;
   for (int lane = 0; lane < kPacketSize; ++lane) {
     hits.hit[lane] = false;
     rays += hits.valid[lane] != 0;
   }
+  if (rays > 0) resetRays(hits.rayhit);
+  return rays;
+}
+
+// traceStraight's last step, after the intersection: hit flags, lone misses retried, missed
+// lanes cleared. Returns the rays cast, retries included.
+std::uint64_t finishStraight(RTCScene scene, int rays, int count, int columns, PacketHits& hits) {
   if (rays == 0) {
     clearMissedLanes(hits);
     return 0;
   }
-  resetRays(hits.rayhit);
-  RTCIntersectContext context = coherentContext();
-  rtcIntersect8(hits.valid.data(), scene, &context, &hits.rayhit);
   std::array<bool, kPacketSize> missed{};
   bool anyMissed = false;
   // The flags are stored as one 8-byte word: shading reads them so, and a load waits for the
@@ -182,6 +186,71 @@ std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& 
   }
   clearMissedLanes(hits);
   return static_cast<std::uint64_t>(rays + hits.retraced);
+}
+
+// The rays of `half` into lanes offset .. offset + 7 of `wide` (RTCRay8 and RTCRay16 are
+// structures of arrays with the same fields in the same order).
+void packRays(const RTCRay8& half, int offset, RTCRay16& wide) {
+  const auto put = [offset](const auto& from, auto& to) {
+    std::memcpy(to + offset, from, sizeof from);
+  };
+  put(half.org_x, wide.org_x), put(half.org_y, wide.org_y), put(half.org_z, wide.org_z);
+  put(half.tnear, wide.tnear);
+  put(half.dir_x, wide.dir_x), put(half.dir_y, wide.dir_y), put(half.dir_z, wide.dir_z);
+  put(half.time, wide.time), put(half.tfar, wide.tfar), put(half.mask, wide.mask);
+  put(half.id, wide.id), put(half.flags, wide.flags);
+}
+
+// What rtcIntersect16 wrote for lanes offset .. offset + 7 back into `half`.
+void unpackHits(const RTCRayHit16& wide, int offset, RTCRayHit8& half) {
+  const auto get = [offset](const auto& from, auto& to) {
+    std::memcpy(to, from + offset, sizeof to);
+  };
+  get(wide.ray.tfar, half.ray.tfar);
+  get(wide.hit.Ng_x, half.hit.Ng_x), get(wide.hit.Ng_y, half.hit.Ng_y);
+  get(wide.hit.Ng_z, half.hit.Ng_z), get(wide.hit.u, half.hit.u), get(wide.hit.v, half.hit.v);
+  get(wide.hit.primID, half.hit.primID), get(wide.hit.geomID, half.hit.geomID);
+  get(wide.hit.instID[0], half.hit.instID[0]);
+}
+
+}  // namespace
+
+std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& hits) {
+  const int rays = prepareStraight(hits);
+  if (rays > 0) {
+    RTCIntersectContext context = coherentContext();
+    rtcIntersect8(hits.valid.data(), scene, &context, &hits.rayhit);
+  }
+  return finishStraight(scene, rays, count, columns, hits);
+}
+
+std::uint64_t traceStraightPair(RTCScene scene, const std::array<int, 2>& count,
+                                const std::array<int, 2>& columns,
+                                std::array<PacketHits, 2>& hits) {
+  const std::array<int, 2> rays = {prepareStraight(hits[0]), prepareStraight(hits[1])};
+  if (rays[0] > 0 && rays[1] > 0) {
+    alignas(64) std::array<int, 2 * kPacketSize> valid;
+    alignas(64) RTCRayHit16 wide;
+    for (int half = 0; half < 2; ++half) {
+      std::memcpy(valid.data() + half * kPacketSize, hits[half].valid.data(), sizeof hits[half].valid);
+      packRays(hits[half].rayhit.ray, half * kPacketSize, wide.ray);
+      std::memcpy(wide.hit.geomID + half * kPacketSize, hits[half].rayhit.hit.geomID,
+                  sizeof hits[half].rayhit.hit.geomID);
+      std::memcpy(wide.hit.instID[0] + half * kPacketSize, hits[half].rayhit.hit.instID[0],
+                  sizeof hits[half].rayhit.hit.instID[0]);
+    }
+    RTCIntersectContext context = coherentContext();
+    rtcIntersect16(valid.data(), scene, &context, &wide);
+    for (int half = 0; half < 2; ++half) unpackHits(wide, half * kPacketSize, hits[half].rayhit);
+  } else {
+    for (int half = 0; half < 2; ++half)
+      if (rays[half] > 0) {
+        RTCIntersectContext context = coherentContext();
+        rtcIntersect8(hits[half].valid.data(), scene, &context, &hits[half].rayhit);
+      }
+  }
+  return finishStraight(scene, rays[0], count[0], columns[0], hits[0]) +
+         finishStraight(scene, rays[1], count[1], columns[1], hits[1]);
 }
 
 std::uint64_t tracePaths(RTCScene scene, const RayPath* paths, int count, int columns,

@@ -70,20 +70,25 @@ void renderTileSingleSample(const EmbreeScene& scene, const CameraRays& rays, co
                             int x0, int y0, ImageRGBA& image, RayCounters& counters) {
   const int x1 = std::min(x0 + job.tileSize, job.width);
   const int y1 = std::min(y0 + job.tileSize, job.height);
-  PacketHits hits;
+  std::array<PacketHits, 2> hits;
   PacketColours colours;
   std::array<std::uint32_t, kPacketSize> sampleSeeds{};  // occlusion rays only
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
-  for (int y = y0; y < y1; y += kBlockRows) {
+  // Two packets (4 x 4 pixels) traced at once (traceCameraPacketPair), then shaded one by one.
+  for (int y = y0; y < y1; y += 2 * kBlockRows) {
     for (int x = x0; x < x1; x += kBlockColumns) {
-      const PacketSamples samples = blockAt(x, y, x1, y1);
-      if (job.shading.ambientOcclusion)  // the supersampled loop's seeds of sample 0
-        for (int lane = 0; lane < samples.count; ++lane)
-          sampleSeeds[lane] = hashU32(pixelSeed(job, samples.laneX(lane), samples.laneY(lane)));
-      cameraRays += traceCameraPacket(scene, rays, job, samples, hits);
-      retraced += static_cast<std::uint64_t>(hits.retraced);
-      occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
-      storePixels(colours, samples, image);
+      std::array<PacketSamples, 2> samples = {blockAt(x, y, x1, y1), PacketSamples{}};
+      if (y + kBlockRows < y1) samples[1] = blockAt(x, y + kBlockRows, x1, y1);
+      cameraRays += traceCameraPacketPair(scene, rays, job, samples, hits);
+      for (int half = 0; half < 2 && samples[half].count > 0; ++half) {
+        const PacketSamples& packet = samples[half];
+        if (job.shading.ambientOcclusion)  // the supersampled loop's seeds of sample 0
+          for (int lane = 0; lane < packet.count; ++lane)
+            sampleSeeds[lane] = hashU32(pixelSeed(job, packet.laneX(lane), packet.laneY(lane)));
+        retraced += static_cast<std::uint64_t>(hits[half].retraced);
+        occlusionRays += shadePacket(scene, hits[half], job.shading, sampleSeeds, colours);
+        storePixels(colours, packet, image);
+      }
     }
   }
   counters.camera += cameraRays;
