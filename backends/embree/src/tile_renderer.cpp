@@ -102,7 +102,7 @@ void renderTileSupersampled(const EmbreeScene& scene, const CameraRays& rays,
                             RayCounters& counters) {
   const int x1 = std::min(x0 + job.tileSize, job.width);
   const int y1 = std::min(y0 + job.tileSize, job.height);
-  PacketHits hits;
+  std::array<PacketHits, 2> hits;
   PacketColours colours;
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
   const float scale = 1.0f / static_cast<float>(job.samplesPerPixel);
@@ -112,19 +112,26 @@ void renderTileSupersampled(const EmbreeScene& scene, const CameraRays& rays,
       PacketColours mean;  // the sum over the samples, then scaled
       for (int lane = 0; lane < samples.count; ++lane)
         samples.pixelSeeds[lane] = pixelSeed(job, samples.laneX(lane), samples.laneY(lane));
-      for (int sample = 0; sample < job.samplesPerPixel; ++sample) {
-        samples.sample = sample;
-        std::array<std::uint32_t, kPacketSize> sampleSeeds{};
-        for (int lane = 0; lane < samples.count; ++lane)
-          sampleSeeds[lane] = hashU32(samples.pixelSeeds[lane] + static_cast<std::uint32_t>(sample));
-        cameraRays += traceCameraPacket(scene, rays, job, samples, hits);
-        retraced += static_cast<std::uint64_t>(hits.retraced);
-        occlusionRays += shadePacket(scene, hits, job.shading, sampleSeeds, colours);
-        for (int lane = 0; lane < kPacketSize; ++lane) {
-          mean.red[lane] += colours.red[lane];
-          mean.green[lane] += colours.green[lane];
-          mean.blue[lane] += colours.blue[lane];
-          mean.alpha[lane] += colours.alpha[lane];
+      // Two samples of the packet traced at once (traceCameraPacketPair), summed in order.
+      for (int first = 0; first < job.samplesPerPixel; first += 2) {
+        std::array<PacketSamples, 2> pair = {samples, samples};
+        pair[0].sample = first;
+        pair[1].sample = first + 1;
+        if (first + 1 == job.samplesPerPixel) pair[1].count = 0;  // an odd count's last
+        cameraRays += traceCameraPacketPair(scene, rays, job, pair, hits);
+        for (int half = 0; half < 2 && pair[half].count > 0; ++half) {
+          const auto sample = static_cast<std::uint32_t>(pair[half].sample);
+          std::array<std::uint32_t, kPacketSize> sampleSeeds{};
+          for (int lane = 0; lane < samples.count; ++lane)
+            sampleSeeds[lane] = hashU32(samples.pixelSeeds[lane] + sample);
+          retraced += static_cast<std::uint64_t>(hits[half].retraced);
+          occlusionRays += shadePacket(scene, hits[half], job.shading, sampleSeeds, colours);
+          for (int lane = 0; lane < kPacketSize; ++lane) {
+            mean.red[lane] += colours.red[lane];
+            mean.green[lane] += colours.green[lane];
+            mean.blue[lane] += colours.blue[lane];
+            mean.alpha[lane] += colours.alpha[lane];
+          }
         }
       }
       for (int lane = 0; lane < kPacketSize; ++lane) {
