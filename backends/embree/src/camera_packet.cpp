@@ -114,7 +114,7 @@ std::uint64_t traceCameraPacketPair(const EmbreeScene& scene, const CameraRays& 
            traceCameraPacket(scene, rays, job, samples[1], hits[1]);
   for (int half = 0; half < 2; ++half) setUpStraightPacket(rays, job, samples[half], hits[half]);
   return traceStraightPair(scene.handle(), {samples[0].count, samples[1].count},
-                           {samples[0].columns, samples[1].columns}, hits);
+                           {samples[0].columns, samples[1].columns}, hits, scene.nativeRay16());
 }
 
 }  // namespace confvis::embree

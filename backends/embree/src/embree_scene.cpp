@@ -40,6 +40,7 @@ EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(sce
   validateScene(source_);
   buildShadingRecords();
   const auto start = std::chrono::steady_clock::now();
+  nativeRay16_ = rtcGetDeviceProperty(device.handle(), RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) != 0;
   scene_ = rtcNewScene(device.handle());
   try {
     device.check("creating a scene");

@@ -226,9 +226,9 @@ std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& 
 
 std::uint64_t traceStraightPair(RTCScene scene, const std::array<int, 2>& count,
                                 const std::array<int, 2>& columns,
-                                std::array<PacketHits, 2>& hits) {
+                                std::array<PacketHits, 2>& hits, bool native16) {
   const std::array<int, 2> rays = {prepareStraight(hits[0]), prepareStraight(hits[1])};
-  if (rays[0] > 0 && rays[1] > 0) {
+  if (native16 && rays[0] > 0 && rays[1] > 0) {
     alignas(64) std::array<int, 2 * kPacketSize> valid;
     alignas(64) RTCRayHit16 wide;
     for (int half = 0; half < 2; ++half) {

@@ -51,12 +51,13 @@ struct PacketHits {
 // it (hits.retraced counts these). Returns the number of rays cast, retries included.
 std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& hits);
 
-// traceStraight for two packets at once, with one rtcIntersect16 where both have rays (Embree's
-// 16-wide traversal with AVX-512 is ~15 % faster a ray than two 8-wide ones); the lone-miss
-// retry stays per packet.
+// traceStraight for two packets at once: with one rtcIntersect16 where `native16` (the device traces
+// 16-ray packets natively: Embree's 16-wide traversal with AVX-512 is ~20 % faster a ray than
+// two 8-wide ones) and both have rays, else with rtcIntersect8 each; the same hits either way.
+// The lone-miss retry stays per packet.
 std::uint64_t traceStraightPair(RTCScene scene, const std::array<int, 2>& count,
                                 const std::array<int, 2>& columns,
-                                std::array<PacketHits, 2>& hits);
+                                std::array<PacketHits, 2>& hits, bool native16);
 
 // Traces `count` (<= 8) bent paths: every lane's segments in order until one hits, then the
 // lone-miss retry of traceStraight along the tail. Unlit paths are not traced. Returns the

@@ -26,6 +26,9 @@ class EmbreeScene {
   const Scene& scene() const { return source_; }
   // Length of the bounding-box diagonal, metres (a scale for ambient-occlusion distances).
   double diagonal() const { return diagonal_; }
+  // Whether the device traces 16-ray packets natively (AVX-512): the renderer then traces two
+  // 8-ray packets with one rtcIntersect16, otherwise with two rtcIntersect8.
+  bool nativeRay16() const { return nativeRay16_; }
   // What shading reads per hit (Scene::baseColorAt: factor x texture sampled at the uvs, and
   // the vertex normals, both interpolated with Embree's barycentrics), built here so that a hit
   // reads one cache line instead of the triangle's indices and then its vertices.
@@ -58,6 +61,7 @@ class EmbreeScene {
   RTCScene scene_ = nullptr;
   Scene source_;
   double diagonal_ = 0.0;
+  bool nativeRay16_ = false;
   double buildSeconds_ = 0.0;
 };
 
