@@ -21,6 +21,82 @@ int scaled(int pixels, double scale) {
   return std::max(1, static_cast<int>(std::lround(pixels * scale)));
 }
 
+// One wall's output pixels and plain rays, as the renderer's CameraRays make them: the
+// direction is affine in the wall-pixel position, evaluated in float and normalised per ray.
+struct WallRays {
+  std::size_t wall = 0;
+  int width = 0, height = 0;
+  double sx = 1, sy = 1;  // wall pixels per output pixel
+  glm::vec3 origin{0.0f};
+  embree::AffineDirections directions;
+};
+
+// The fields every raw ray shares (origin, bounds, flags) and an empty hit, lanes [0, N).
+template <int N, typename RayHitN>
+void setCommonFields(RayHitN& rh, const glm::vec3& origin) {
+  for (int lane = 0; lane < N; ++lane) {
+    rh.ray.org_x[lane] = origin.x;
+    rh.ray.org_y[lane] = origin.y;
+    rh.ray.org_z[lane] = origin.z;
+    rh.ray.tnear[lane] = 0.0f;
+    rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
+    rh.ray.time[lane] = 0.0f;
+    rh.ray.mask[lane] = ~0u;
+    rh.ray.id[lane] = static_cast<unsigned>(lane);
+    rh.ray.flags[lane] = 0;
+    rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+  }
+}
+
+// Adds the traced lanes and those that hit to `rays` and `hits`.
+template <int N, typename RayHitN>
+void countLanes(const int* valid, const RayHitN& rh, std::uint64_t& rays, std::uint64_t& hits) {
+  for (int lane = 0; lane < N; ++lane)
+    if (valid[lane]) {
+      ++rays;
+      hits += rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
+    }
+}
+
+// The renderer's layout for every wall: 16-pixel tiles in parallel (TBB), each traced by
+// traceTile(wall, context, x0, y0, x1, y1, rays, hits).
+template <typename TraceTile>
+RawLoopResult forEachTile(const DisplayConfig& config, double scale, TraceTile traceTile) {
+  constexpr int kTile = 16;  // the renderer's default tile (EmbreeOptions::tileSize)
+  std::atomic<std::uint64_t> rays{0}, hits{0};
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t w = 0; w < config.walls.size(); ++w) {
+    const Wall& wall = config.walls[w];
+    const WallView view = makeWallView(wall, config.reference);
+    WallRays wallRays;
+    wallRays.wall = w;
+    wallRays.width = scaled(wall.width, scale), wallRays.height = scaled(wall.height, scale);
+    wallRays.sx = static_cast<double>(wall.width) / wallRays.width;
+    wallRays.sy = static_cast<double>(wall.height) / wallRays.height;
+    wallRays.origin = glm::vec3(view.eye_position);
+    const glm::dvec3 base = view.rayDirection(0.0, 0.0);
+    wallRays.directions = {glm::vec3(base), glm::vec3(view.rayDirection(1.0, 0.0) - base),
+                           glm::vec3(view.rayDirection(0.0, 1.0) - base)};
+    const int across = (wallRays.width + kTile - 1) / kTile;
+    const int tiles = across * ((wallRays.height + kTile - 1) / kTile);
+    tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
+      RTCIntersectContext context;
+      rtcInitIntersectContext(&context);
+      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+      std::uint64_t tileRays = 0, tileHits = 0;
+      for (int tile = r.begin(); tile != r.end(); ++tile) {
+        const int x0 = (tile % across) * kTile, y0 = (tile / across) * kTile;
+        traceTile(wallRays, context, x0, y0, std::min(x0 + kTile, wallRays.width),
+                  std::min(y0 + kTile, wallRays.height), tileRays, tileHits);
+      }
+      rays += tileRays;
+      hits += tileHits;
+    });
+  }
+  return {rays.load(), hits.load(),
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+}
+
 }  // namespace
 
 ConformalDirections conformalDirections(const RetargetMap& map, const DisplayConfig& config,
@@ -48,154 +124,69 @@ ConformalDirections conformalDirections(const RetargetMap& map, const DisplayCon
 
 RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& config,
                                double scale, const ConformalDirections* conformal) {
-  constexpr int kTile = 16;  // the renderer's default tile (EmbreeOptions::tileSize)
-  std::atomic<std::uint64_t> rays{0}, hits{0};
-  const auto start = std::chrono::steady_clock::now();
-  for (std::size_t w = 0; w < config.walls.size(); ++w) {
-    const Wall& wall = config.walls[w];
-    const glm::vec3* table = conformal ? conformal->walls[w].data() : nullptr;
-    const WallView view = makeWallView(wall, config.reference);
-    const int width = scaled(wall.width, scale), height = scaled(wall.height, scale);
-    const double sx = static_cast<double>(wall.width) / width;
-    const double sy = static_cast<double>(wall.height) / height;
-    const glm::vec3 origin(view.eye_position);
-    // The direction is affine in the wall-pixel position; like the renderer's plain rays
-    // (CameraRays), evaluate it in float and normalise per ray, a packet at a time.
-    const glm::dvec3 base = view.rayDirection(0.0, 0.0);
-    const embree::AffineDirections directions{glm::vec3(base),
-                                              glm::vec3(view.rayDirection(1.0, 0.0) - base),
-                                              glm::vec3(view.rayDirection(0.0, 1.0) - base)};
-    const int across = (width + kTile - 1) / kTile, tiles = across * ((height + kTile - 1) / kTile);
-    // The renderer's layout: tiles in parallel, within a tile packets of 4 x 2 pixels
-    // (embree::PacketSamples), rows of them.
-    tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-      std::uint64_t tileRays = 0, tileHits = 0;
-      for (int tile = r.begin(); tile != r.end(); ++tile) {
-        const int x0 = (tile % across) * kTile, y0 = (tile / across) * kTile;
-        const int x1 = std::min(x0 + kTile, width), y1 = std::min(y0 + kTile, height);
-        for (int y = y0; y < y1; y += embree::kBlockRows)
-          for (int x = x0; x < x1; x += embree::kBlockColumns) {
-            alignas(32) int valid[8];
-            alignas(32) RTCRayHit8 rh;
-            alignas(32) std::array<float, 8> px{}, py{};
-            const int columns = std::min(embree::kBlockColumns, x1 - x);
-            const int count = columns * std::min(embree::kBlockRows, y1 - y);
-            for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
-            if (table) {
-              for (int lane = 0; lane < 8; ++lane) {
-                const int l = std::min(lane, count - 1);
-                const glm::vec3 d = table[static_cast<std::size_t>(y + l / columns) * width + x +
-                                          l % columns];
-                rh.ray.dir_x[lane] = d.x, rh.ray.dir_y[lane] = d.y, rh.ray.dir_z[lane] = d.z;
-                if (d == glm::vec3(0.0f)) valid[lane] = 0;  // unlit
-              }
-            } else {
-              embree::pixelCentres(x, y, columns, count, sx, sy, px, py);
-              directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
-            }
-            for (int lane = 0; lane < 8; ++lane) {
-              rh.ray.org_x[lane] = origin.x;
-              rh.ray.org_y[lane] = origin.y;
-              rh.ray.org_z[lane] = origin.z;
-              rh.ray.tnear[lane] = 0.0f;
-              rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
-              rh.ray.time[lane] = 0.0f;
-              rh.ray.mask[lane] = ~0u;
-              rh.ray.id[lane] = static_cast<unsigned>(lane);
-              rh.ray.flags[lane] = 0;
-              rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-            }
-            rtcIntersect8(valid, scene.handle(), &context, &rh);
-            for (int lane = 0; lane < 8; ++lane)
-              if (valid[lane]) {
-                ++tileRays;
-                tileHits += rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
-              }
+  // Within a tile packets of 4 x 2 pixels (embree::PacketSamples), rows of them.
+  return forEachTile(config, scale, [&](const WallRays& w, RTCIntersectContext& context, int x0,
+                                        int y0, int x1, int y1, std::uint64_t& rays,
+                                        std::uint64_t& hits) {
+    const glm::vec3* table = conformal ? conformal->walls[w.wall].data() : nullptr;
+    for (int y = y0; y < y1; y += embree::kBlockRows)
+      for (int x = x0; x < x1; x += embree::kBlockColumns) {
+        alignas(32) int valid[8];
+        alignas(32) RTCRayHit8 rh;
+        alignas(32) std::array<float, 8> px{}, py{};
+        const int columns = std::min(embree::kBlockColumns, x1 - x);
+        const int count = columns * std::min(embree::kBlockRows, y1 - y);
+        for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
+        if (table) {
+          for (int lane = 0; lane < 8; ++lane) {
+            const int l = std::min(lane, count - 1);
+            const glm::vec3 d =
+                table[static_cast<std::size_t>(y + l / columns) * w.width + x + l % columns];
+            rh.ray.dir_x[lane] = d.x, rh.ray.dir_y[lane] = d.y, rh.ray.dir_z[lane] = d.z;
+            if (d == glm::vec3(0.0f)) valid[lane] = 0;  // unlit
           }
+        } else {
+          embree::pixelCentres(x, y, columns, count, w.sx, w.sy, px, py);
+          w.directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
+        }
+        setCommonFields<8>(rh, w.origin);
+        rtcIntersect8(valid, scene.handle(), &context, &rh);
+        countLanes<8>(valid, rh, rays, hits);
       }
-      rays += tileRays;
-      hits += tileHits;
-    });
-  }
-  return {rays.load(), hits.load(),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  });
 }
 
 RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& config,
                                  double scale) {
-  constexpr int kTile = 16;
-  std::atomic<std::uint64_t> rays{0}, hits{0};
-  const auto start = std::chrono::steady_clock::now();
-  for (const Wall& wall : config.walls) {
-    const WallView view = makeWallView(wall, config.reference);
-    const int width = scaled(wall.width, scale), height = scaled(wall.height, scale);
-    const double sx = static_cast<double>(wall.width) / width;
-    const double sy = static_cast<double>(wall.height) / height;
-    const glm::vec3 origin(view.eye_position);
-    const glm::dvec3 base = view.rayDirection(0.0, 0.0);
-    const embree::AffineDirections directions{glm::vec3(base),
-                                              glm::vec3(view.rayDirection(1.0, 0.0) - base),
-                                              glm::vec3(view.rayDirection(0.0, 1.0) - base)};
-    const int across = (width + kTile - 1) / kTile, tiles = across * ((height + kTile - 1) / kTile);
-    tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
-      RTCIntersectContext context;
-      rtcInitIntersectContext(&context);
-      context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
-      std::uint64_t tileRays = 0, tileHits = 0;
-      for (int tile = r.begin(); tile != r.end(); ++tile) {
-        const int x0 = (tile % across) * kTile, y0 = (tile / across) * kTile;
-        const int x1 = std::min(x0 + kTile, width), y1 = std::min(y0 + kTile, height);
-        for (int y = y0; y < y1; y += 2 * embree::kBlockRows)
-          for (int x = x0; x < x1; x += embree::kBlockColumns) {
-            alignas(64) int valid[16];
-            alignas(64) RTCRayHit16 rh;
-            const int columns = std::min(embree::kBlockColumns, x1 - x);
-            for (int half = 0; half < 2; ++half) {
-              const int top = y + half * embree::kBlockRows;
-              const int count = top < y1 ? columns * std::min(embree::kBlockRows, y1 - top) : 0;
-              alignas(32) std::array<float, 8> px{}, py{};
-              alignas(32) float dx[8], dy[8], dz[8];
-              if (count > 0) {
-                embree::pixelCentres(x, top, columns, count, sx, sy, px, py);
-                directions.at(px, py, dx, dy, dz);
-              }
-              for (int lane = 0; lane < 8; ++lane) {
-                const int at = 8 * half + lane;
-                valid[at] = lane < count ? -1 : 0;
-                rh.ray.dir_x[at] = count > 0 ? dx[lane] : 0.0f;
-                rh.ray.dir_y[at] = count > 0 ? dy[lane] : 0.0f;
-                rh.ray.dir_z[at] = count > 0 ? dz[lane] : 1.0f;
-              }
-            }
-            for (int lane = 0; lane < 16; ++lane) {
-              rh.ray.org_x[lane] = origin.x;
-              rh.ray.org_y[lane] = origin.y;
-              rh.ray.org_z[lane] = origin.z;
-              rh.ray.tnear[lane] = 0.0f;
-              rh.ray.tfar[lane] = std::numeric_limits<float>::infinity();
-              rh.ray.time[lane] = 0.0f;
-              rh.ray.mask[lane] = ~0u;
-              rh.ray.id[lane] = static_cast<unsigned>(lane);
-              rh.ray.flags[lane] = 0;
-              rh.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
-            }
-            rtcIntersect16(valid, scene.handle(), &context, &rh);
-            for (int lane = 0; lane < 16; ++lane)
-              if (valid[lane]) {
-                ++tileRays;
-                tileHits += rh.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID;
-              }
+  return forEachTile(config, scale, [&](const WallRays& w, RTCIntersectContext& context, int x0,
+                                        int y0, int x1, int y1, std::uint64_t& rays,
+                                        std::uint64_t& hits) {
+    for (int y = y0; y < y1; y += 2 * embree::kBlockRows)
+      for (int x = x0; x < x1; x += embree::kBlockColumns) {
+        alignas(64) int valid[16];
+        alignas(64) RTCRayHit16 rh;
+        const int columns = std::min(embree::kBlockColumns, x1 - x);
+        for (int half = 0; half < 2; ++half) {  // the renderer's two packets, lanes 0-7 and 8-15
+          const int top = y + half * embree::kBlockRows;
+          const int count = top < y1 ? columns * std::min(embree::kBlockRows, y1 - top) : 0;
+          alignas(32) std::array<float, 8> px{}, py{};
+          alignas(32) float dx[8] = {}, dy[8] = {}, dz[8] = {1, 1, 1, 1, 1, 1, 1, 1};
+          if (count > 0) {
+            embree::pixelCentres(x, top, columns, count, w.sx, w.sy, px, py);
+            w.directions.at(px, py, dx, dy, dz);
           }
+          for (int lane = 0; lane < 8; ++lane) {
+            valid[8 * half + lane] = lane < count ? -1 : 0;
+            rh.ray.dir_x[8 * half + lane] = dx[lane];
+            rh.ray.dir_y[8 * half + lane] = dy[lane];
+            rh.ray.dir_z[8 * half + lane] = dz[lane];
+          }
+        }
+        setCommonFields<16>(rh, w.origin);
+        rtcIntersect16(valid, scene.handle(), &context, &rh);
+        countLanes<16>(valid, rh, rays, hits);
       }
-      rays += tileRays;
-      hits += tileHits;
-    });
-  }
-  return {rays.load(), hits.load(),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  });
 }
 
 }  // namespace confvis::bench
