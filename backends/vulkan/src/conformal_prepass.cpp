@@ -52,36 +52,25 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                      true);
 
-  bentDispatch_ = Buffer(context_, scene.draws().size() * sizeof(BentDispatch),
-                         VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                         true);
-  bentTriangles_ =
-      Buffer(context_, std::max<std::size_t>(scene.triangleCount(), 1) * sizeof(std::uint32_t),
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-  straightDispatch_ = Buffer(context_, scene.draws().size() * sizeof(BentDispatch),
-                             VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                             true);
-  straightTriangles_ =
-      Buffer(context_, std::max<std::size_t>(scene.triangleCount(), 1) * sizeof(std::uint32_t),
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-
-  queueDispatch_ = Buffer(context_, 2 * sizeof(BentDispatch),
-                              VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                              true);
-  queuedVertices_ =
-      Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(std::uint32_t),
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-  queuedEdges_ =
-      Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(std::uint32_t),
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-
+  // Indirect dispatches (host-visible: reset before every frame) and the uint lists they run.
+  const auto dispatches = [&](std::size_t count) {
+    return Buffer(context_, count * sizeof(BentDispatch),
+                  VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+  };
+  const auto uintList = [&](std::size_t count) {
+    return Buffer(context_, std::max<std::size_t>(count, 1) * sizeof(std::uint32_t),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+  };
+  bentDispatch_ = dispatches(scene.draws().size());
+  bentTriangles_ = uintList(scene.triangleCount());
+  straightDispatch_ = dispatches(scene.draws().size());
+  straightTriangles_ = uintList(scene.triangleCount());
+  queueDispatch_ = dispatches(2);
+  queuedVertices_ = uintList(scene.vertexCount());
+  queuedEdges_ = uintList(scene.edgeCount());
   flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-  edgeFlags_ =
-      Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(std::uint32_t),
-             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+  edgeFlags_ = uintList(scene.edgeCount());
 
   const VkDevice device = context_.device();
   edgeLevels_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(glm::vec4),
