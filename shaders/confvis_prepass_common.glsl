@@ -144,11 +144,20 @@ void appendStraight(uint t) {
   if (slot % kBentGroup == 0u) atomicMax(straightDispatch[prepass.mesh].groupsX, slot / kBentGroup + 1u);
 }
 
-// Virtual point of vertex v in the physical frame, relative to the map's reference point.
-vec3 vertexRelative(uint v) {
+// Per vertex: its virtual point in the physical frame relative to the map's reference point
+// (xyz), written once by warp_vertices.comp; the later passes read it instead of transforming the
+// vertex again (each edge and triangle reads two or three).
+layout(set = 2, binding = 20, std430) buffer Relative { vec4 relative[]; };
+
+// Virtual point of vertex v in the physical frame, relative to the map's reference point, from
+// the scene's vertices (warp_vertices.comp; the others read vertexRelative).
+vec3 transformVertex(uint v) {
   vec3 p = vec3(vertices[8u * v], vertices[8u * v + 1u], vertices[8u * v + 2u]);
   return (frame.worldToPhysical * vec4(p, 1.0)).xyz - frame.warpCentre.xyz;
 }
+
+// The same, as warp_vertices.comp stored it.
+vec3 vertexRelative(uint v) { return relative[v].xyz; }
 
 // The triangle whose indices start at `base`: its vertex indices, virtual points relative to c
 // and warps (warp_vertices.comp).

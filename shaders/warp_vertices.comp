@@ -11,8 +11,10 @@ layout(local_size_x = 64) in;
 void main() {
   uint v = gl_GlobalInvocationID.x;
   if (v >= prepass.count) return;
+  vec3 r = transformVertex(v);
+  relative[v] = vec4(r, 0.0);
   vec4 w;
-  bool plain = confvisWarpRelativeBilinear(vertexRelative(v), w);
+  bool plain = confvisWarpRelativeBilinear(r, w);
   warped[v] = w;
   if (!plain) enqueue(kQueueVertices, v);
 }

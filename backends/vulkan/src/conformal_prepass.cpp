@@ -71,6 +71,8 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
   edgeFlags_ = uintList(scene.edgeCount());
+  relative_ = Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(glm::vec4),
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 
   const VkDevice device = context_.device();
   edgeLevels_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(glm::vec4),
@@ -99,7 +101,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
       bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
       queuedEdges_.get(),   flatCounts_.get(),           edgeFlags_.get(),
-      straightDispatch_.get(), straightTriangles_.get()};
+      straightDispatch_.get(), straightTriangles_.get(), relative_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   rangeEnds_.clear();

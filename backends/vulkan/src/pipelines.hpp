@@ -40,7 +40,7 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 20;
+inline constexpr std::uint32_t kPrepassBindings = 21;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
