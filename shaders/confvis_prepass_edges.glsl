@@ -37,11 +37,14 @@ void writeEdge(uint e, vec4 midpoint, float segments) {
                  (max(wa.w, wb.w) < 0.5 ? kEdgeUnseen : 0u);
 }
 
+// Part of edge e lies outside the source field (its corners' or midpoint's validity below 1).
+bool edgeLeavesField(uint e, vec4 midpoint) {
+  return min(midpoint.w, min(warped[edges[e].x].w, warped[edges[e].y].w)) < 1.0;
+}
+
 // writeEdgeLevel for an edge edgeSurelyStraight accepts: one segment.
 void writeStraightEdgeLevel(uint e, vec4 midpoint) {
-  uvec2 v = edges[e];
-  bool mayDrop = min(midpoint.w, min(warped[v.x].w, warped[v.y].w)) < 1.0;
-  writeEdge(e, midpoint, mayDrop ? -1.0 : 1.0);
+  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -1.0 : 1.0);
 }
 
 void writeEdgeLevel(uint e, vec4 midpoint) {
@@ -50,7 +53,7 @@ void writeEdgeLevel(uint e, vec4 midpoint) {
   float segments = confvisMeasureEdgeWithMidpoint(
       vertexRelative(v.x), vertexRelative(v.y), warped[v.x].xyz, warped[v.y].xyz, midpoint,
       prepass.maxErrorAngle, prepass.maxSegmentAngle, acrossCut);
-  bool mayDrop = acrossCut || min(midpoint.w, min(warped[v.x].w, warped[v.y].w)) < 1.0;
+  bool mayDrop = acrossCut || edgeLeavesField(e, midpoint);
   writeEdge(e, midpoint, mayDrop ? -segments : segments);
 }
 

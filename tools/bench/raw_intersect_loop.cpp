@@ -134,8 +134,8 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
         alignas(32) int valid[8];
         alignas(32) RTCRayHit8 rh;
         alignas(32) std::array<float, 8> px{}, py{};
-        const int columns = std::min(embree::kBlockColumns, x1 - x);
-        const int count = columns * std::min(embree::kBlockRows, y1 - y);
+        const embree::PacketSamples block = embree::blockAt(x, y, x1, y1);
+        const int columns = block.columns, count = block.count;
         for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
         if (table) {
           for (int lane = 0; lane < 8; ++lane) {
@@ -165,10 +165,10 @@ RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& 
       for (int x = x0; x < x1; x += embree::kBlockColumns) {
         alignas(64) int valid[16];
         alignas(64) RTCRayHit16 rh;
-        const int columns = std::min(embree::kBlockColumns, x1 - x);
         for (int half = 0; half < 2; ++half) {  // the renderer's two packets, lanes 0-7 and 8-15
           const int top = y + half * embree::kBlockRows;
-          const int count = top < y1 ? columns * std::min(embree::kBlockRows, y1 - top) : 0;
+          const embree::PacketSamples block = embree::blockAt(x, top, x1, y1);
+          const int columns = block.columns, count = top < y1 ? block.count : 0;
           alignas(32) std::array<float, 8> px{}, py{};
           alignas(32) float dx[8] = {}, dy[8] = {}, dz[8] = {1, 1, 1, 1, 1, 1, 1, 1};
           if (count > 0) {

@@ -3,6 +3,7 @@
 // sample index each), traced. Straight cameras write their rays straight into the packet: plain
 // and direction-table rays as whole structure-of-arrays packets, other straight rays lane by
 // lane; exact stereo rays go through RayPaths.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -32,6 +33,17 @@ struct PacketSamples {
   int laneX(int lane) const { return x + lane % columns; }
   int laneY(int lane) const { return y + lane / columns; }
 };
+
+// The packet of the block whose top-left pixel is (x, y), in a tile ending before (x1, y1): the
+// one definition of the layout the renderer, its direction table and the raw benchmark loop share.
+inline PacketSamples blockAt(int x, int y, int x1, int y1) {
+  PacketSamples samples;
+  samples.x = x;
+  samples.y = y;
+  samples.columns = std::min(kBlockColumns, x1 - x);
+  samples.count = samples.columns * std::min(kBlockRows, y1 - y);
+  return samples;
+}
 
 // Fills `hits` for the packet; returns the number of camera rays cast (see traceStraight).
 std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays,

@@ -52,10 +52,12 @@ class DirectionTable {
                                     (x - x0) / kBlockColumns);
   }
   int laneOf(int x, int y) const {
-    const int x0 = x - x % tileSize_;
-    const int bx = x0 + (x - x0) / kBlockColumns * kBlockColumns;
-    const int columns = std::min(kBlockColumns, std::min(x0 + tileSize_, width_) - bx);
-    return (y % tileSize_ % kBlockRows) * columns + (x - bx);
+    const int x0 = x - x % tileSize_, y0 = y - y % tileSize_;
+    const PacketSamples block =
+        blockAt(x0 + (x - x0) / kBlockColumns * kBlockColumns,
+                y0 + (y - y0) / kBlockRows * kBlockRows, std::min(x0 + tileSize_, width_),
+                std::min(y0 + tileSize_, height_));
+    return (y - block.y) * block.columns + (x - block.x);
   }
 
   int width_ = 0, height_ = 0, samplesPerPixel_ = 1, tileSize_ = 1, tilesAcross_ = 1;

@@ -213,14 +213,17 @@ void unpackHits(const RTCRayHit16& wide, int offset, RTCRayHit8& half) {
   get(wide.hit.instID[0], half.hit.instID[0]);
 }
 
+// The packet's prepared rays traced with one rtcIntersect8.
+void intersect8(RTCScene scene, PacketHits& hits) {
+  RTCIntersectContext context = coherentContext();
+  rtcIntersect8(hits.valid.data(), scene, &context, &hits.rayhit);
+}
+
 }  // namespace
 
 std::uint64_t traceStraight(RTCScene scene, int count, int columns, PacketHits& hits) {
   const int rays = prepareStraight(hits);
-  if (rays > 0) {
-    RTCIntersectContext context = coherentContext();
-    rtcIntersect8(hits.valid.data(), scene, &context, &hits.rayhit);
-  }
+  if (rays > 0) intersect8(scene, hits);
   return finishStraight(scene, rays, count, columns, hits);
 }
 
@@ -244,10 +247,7 @@ std::uint64_t traceStraightPair(RTCScene scene, const std::array<int, 2>& count,
     for (int half = 0; half < 2; ++half) unpackHits(wide, half * kPacketSize, hits[half].rayhit);
   } else {
     for (int half = 0; half < 2; ++half)
-      if (rays[half] > 0) {
-        RTCIntersectContext context = coherentContext();
-        rtcIntersect8(hits[half].valid.data(), scene, &context, &hits[half].rayhit);
-      }
+      if (rays[half] > 0) intersect8(scene, hits[half]);
   }
   return finishStraight(scene, rays[0], count[0], columns[0], hits[0]) +
          finishStraight(scene, rays[1], count[1], columns[1], hits[1]);

@@ -55,16 +55,6 @@ void storePixels(const PacketColours& c, const PacketSamples& samples, ImageRGBA
     storeRun(c, first, samples.columns, image.at(samples.x, samples.laneY(first)));
 }
 
-// The packet of the block at (x, y) of the tile ending before (x1, y1).
-PacketSamples blockAt(int x, int y, int x1, int y1) {
-  PacketSamples samples;
-  samples.x = x;
-  samples.y = y;
-  samples.columns = std::min(kBlockColumns, x1 - x);
-  samples.count = samples.columns * std::min(kBlockRows, y1 - y);
-  return samples;
-}
-
 // One sample per pixel, at its centre: the packet's colours are the pixels.
 void renderTileSingleSample(const EmbreeScene& scene, const CameraRays& rays, const TileJob& job,
                             int x0, int y0, ImageRGBA& image, RayCounters& counters) {
