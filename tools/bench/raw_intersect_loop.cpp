@@ -157,10 +157,11 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
 }
 
 RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& config,
-                                 double scale) {
+                                 double scale, const ConformalDirections* conformal) {
   return forEachTile(config, scale, [&](const WallRays& w, RTCIntersectContext& context, int x0,
                                         int y0, int x1, int y1, std::uint64_t& rays,
                                         std::uint64_t& hits) {
+    const glm::vec3* table = conformal ? conformal->walls[w.wall].data() : nullptr;
     for (int y = y0; y < y1; y += 2 * embree::kBlockRows)
       for (int x = x0; x < x1; x += embree::kBlockColumns) {
         alignas(64) int valid[16];
@@ -171,12 +172,21 @@ RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& 
           const int columns = block.columns, count = top < y1 ? block.count : 0;
           alignas(32) std::array<float, 8> px{}, py{};
           alignas(32) float dx[8] = {}, dy[8] = {}, dz[8] = {1, 1, 1, 1, 1, 1, 1, 1};
-          if (count > 0) {
+          alignas(32) int lit[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
+          if (count > 0 && table) {
+            for (int lane = 0; lane < count; ++lane) {
+              const glm::vec3 d =
+                  table[static_cast<std::size_t>(top + lane / columns) * w.width + x +
+                        lane % columns];
+              dx[lane] = d.x, dy[lane] = d.y, dz[lane] = d.z;
+              if (d == glm::vec3(0.0f)) lit[lane] = 0, dz[lane] = 1;  // unlit: not traced
+            }
+          } else if (count > 0) {
             embree::pixelCentres(x, top, columns, count, w.sx, w.sy, px, py);
             w.directions.at(px, py, dx, dy, dz);
           }
           for (int lane = 0; lane < 8; ++lane) {
-            valid[8 * half + lane] = lane < count ? -1 : 0;
+            valid[8 * half + lane] = lane < count ? lit[lane] : 0;
             rh.ray.dir_x[8 * half + lane] = dx[lane];
             rh.ray.dir_y[8 * half + lane] = dy[lane];
             rh.ray.dir_z[8 * half + lane] = dz[lane];

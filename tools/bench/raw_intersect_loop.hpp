@@ -36,10 +36,10 @@ ConformalDirections conformalDirections(const RetargetMap& map, const DisplayCon
 RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& config,
                                double scale, const ConformalDirections* conformal = nullptr);
 
-// The plain-ray loop with the renderer's own packet width: two 4 x 2 packets (4 x 4 pixels,
-// lanes as the renderer packs them) per rtcIntersect16. The like-for-like ceiling of the
-// renderer, which traces so (the goal names the rtcIntersect8 loop above).
+// The same loops with the renderer's own packet width: two 4 x 2 packets (4 x 4 pixels, lanes
+// as the renderer packs them) per rtcIntersect16. The like-for-like ceiling of the renderer,
+// which traces so (the goal names the rtcIntersect8 loop above).
 RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& config,
-                                 double scale);
+                                 double scale, const ConformalDirections* conformal = nullptr);
 
 }  // namespace confvis::bench
