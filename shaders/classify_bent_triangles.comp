@@ -124,7 +124,15 @@ void main() {
     wm[k] = levels[k].xyz;
   }
   mayDrop = mayDrop || (bent && distortedPatch(r, w, wm));
-  if (!mayDrop && inner <= 2.0) {
+  // A patch of one segment an edge tessellates into itself alone: warp.geom's test on it, with
+  // every view's gap (the corners' warps are the pre-pass's in every way of drawing), decided
+  // here where the views agree. Kept ones are drawn flat, as a piece; lavapipe's geometry stage
+  // costs some 7 us a patch and wall, most of a 1M-triangle frame's cost at the cut.
+  bool decided = mayDrop && inner <= 1.0 &&
+                 drops == confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.maxGap);
+  if (decided) {
+    if (!drops) appendSplit(i, split, edge);
+  } else if (!mayDrop && inner <= 2.0) {
     appendSplit(i, split, edge);
   } else {
     append(mayDrop ? kListDropping : kListTessellated, i[0], i[1], i[2], rawLevels);

@@ -117,6 +117,7 @@ layout(push_constant) uniform Prepass {
   float maxSegmentAngle;
   float minGap;
   uint midpointBase;  // the scene's vertex count: edge e's midpoint is vertex midpointBase + e
+  float maxGap;       // minGap of the view that tolerates the widest gap (minGap: the strictest)
 } prepass;
 
 // Writes triangle t (vertex indices i) of the current mesh into its flat list, whose slots are

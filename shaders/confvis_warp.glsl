@@ -246,9 +246,16 @@ float confvisTexelAngle(vec3 v) {
 float confvisEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, float maxErrorAngle,
                           float maxSegmentAngle, out vec3 warpedMidpoint);
 
-// The cut test above on the warped halves (angles) of an edge split at its midpoint.
-bool confvisHalvesSpanJump(float halfA, float halfB, float maxErrorAngle) {
-  return max(halfA, halfB) > max(3.0 * min(halfA, halfB), 8.0 * maxErrorAngle);
+// The cut test above on the warped halves (angles) of an edge split at its midpoint, and the
+// warped chord (the angle between the warped ends): one half spans a jump, or both do, the
+// midpoint out across the cut and the ends back on one side (an edge that the cut crosses
+// twice, where it runs along the mesh's lines: the halves then come out alike, and their
+// deviation from the chord asked for up to 64 segments, tessellated and mostly dropped by the
+// geometry shader at the cut). A smooth map bends a short edge into a gentle arc, whose halves
+// add up to barely more than its chord, never three times it.
+bool confvisHalvesSpanJump(float halfA, float halfB, float chord, float maxErrorAngle) {
+  return max(halfA, halfB) > max(3.0 * min(halfA, halfB), 8.0 * maxErrorAngle) ||
+         halfA + halfB > max(3.0 * chord, 8.0 * maxErrorAngle);
 }
 
 // confvisEdgeSegments with more of what it measured: warpedMidpoint.w is the midpoint's validity,
@@ -272,7 +279,7 @@ float confvisMeasureEdgeWithMidpoint(vec3 a, vec3 b, vec3 wa, vec3 wb, vec4 warp
   float edge = confvisAngle(a, b);
   float halfA = confvisAngle(wa, wm), halfB = confvisAngle(wm, wb);
   float segments;
-  acrossCut = confvisHalvesSpanJump(halfA, halfB, maxErrorAngle);
+  acrossCut = confvisHalvesSpanJump(halfA, halfB, confvisAngle(wa, wb), maxErrorAngle);
   if (acrossCut) {
     segments = edge / max(4.0 * maxErrorAngle, confvisTexelAngle(a + b));
   } else {

@@ -146,6 +146,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.maxErrorAngle = thresholds.maxErrorAngle;
   push.maxSegmentAngle = thresholds.maxSegmentAngle;
   push.minGap = thresholds.minGap;
+  push.maxGap = thresholds.maxGap;
   push.midpointBase = static_cast<std::uint32_t>(scene.vertexCount());
   constexpr std::uint32_t kGroup = 64;  // local_size_x of the pre-pass shaders
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVertices());

@@ -35,7 +35,8 @@ constexpr std::uint32_t kPrepassLists = 4;  // commands per mesh, kList* of the 
 struct PrepassThresholds {
   float maxErrorAngle;    // radians: the smallest over the frame's walls
   float maxSegmentAngle;  // radians
-  float minGap;           // radians
+  float minGap;           // radians: the smallest over the frame's views
+  float maxGap;           // radians: the largest (the pre-pass decides a drop only where both agree)
 };
 
 class ConformalPrepass {

@@ -232,13 +232,15 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
   uploadFrame(plan);
   if (conformal) {
     // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
-    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f};
-    for (const ViewData& view : plan.views)
+    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f};
+    for (const ViewData& view : plan.views) {
       if (view.params.w != 0.0f)  // tessellation on
         thresholds = {std::min(thresholds.maxErrorAngle, view.params.x), view.params.y,
-                      std::min(thresholds.minGap, view.params.z)};
+                      std::min(thresholds.minGap, view.params.z), thresholds.maxGap};
       else
         thresholds.minGap = std::min(thresholds.minGap, view.params.z);
+      thresholds.maxGap = std::max(thresholds.maxGap, view.params.z);
+    }
     const auto start = std::chrono::steady_clock::now();
     context_.submitAndWait([&](VkCommandBuffer cmd) {
       prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);

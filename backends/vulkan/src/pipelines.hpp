@@ -52,6 +52,7 @@ struct PrepassConstants {
   float maxSegmentAngle;
   float minGap;
   std::uint32_t midpointBase;  // the scene's vertex count
+  float maxGap;
 };
 
 // Interleaved vertex as uploaded by GpuScene.
