@@ -98,6 +98,107 @@ bool distortedPatch(vec3 r[3], vec4 w[3], vec3 wm[3]) {
   return any;
 }
 
+// Where the source's cut crosses edge e: the parameter t from its first vertex to its second
+// (canonical order, so both triangles on the edge find the same point), by bisection on which
+// end's warp the bilinear lookup lands nearer. The blend flips sides halfway between the texel
+// centres on either side, where the four-texel lookup flips too.
+float cutCrossing(uint e) {
+  uvec2 v = edges[e];
+  vec3 rx = vertexRelative(v.x), ry = vertexRelative(v.y);
+  vec3 wx = warped[v.x].xyz, wy = warped[v.y].xyz;
+  float lo = 0.0, hi = 1.0;
+  for (int step = 0; step < 20; ++step) {
+    float m = 0.5 * (lo + hi);
+    vec3 relative = mix(rx, ry, m);
+    vec3 g = textureLod(confvisGeomMap, relative, 0.0).xyz * length(relative);
+    bool nearFirst = distance(g, wx) <= distance(g, wy);
+    lo = nearFirst ? m : lo;
+    hi = nearFirst ? hi : m;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Writes cut vertex `slot`: the point at t along edge e with the limit of the warp on the side
+// of the edge's vertex `own` (the other end: `other`). False where that limit is not clearly on
+// own's side or lies outside the source field.
+bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
+  uvec2 v = edges[e];
+  CutVertex c;
+  c.position = vec4(mix(vec3(vertices[8u * v.x], vertices[8u * v.x + 1u], vertices[8u * v.x + 2u]),
+                        vec3(vertices[8u * v.y], vertices[8u * v.y + 1u], vertices[8u * v.y + 2u]), t), 1.0);
+  c.normal = vec4(mix(vec3(vertices[8u * v.x + 3u], vertices[8u * v.x + 4u], vertices[8u * v.x + 5u]),
+                      vec3(vertices[8u * v.y + 3u], vertices[8u * v.y + 4u], vertices[8u * v.y + 5u]), t), 0.0);
+  c.uv = vec4(mix(vec2(vertices[8u * v.x + 6u], vertices[8u * v.x + 7u]),
+                  vec2(vertices[8u * v.y + 6u], vertices[8u * v.y + 7u]), t), 0.0, 0.0);
+  vec3 wOwn = warped[own].xyz;
+  c.warped = confvisWarpRelativeToward(mix(vertexRelative(v.x), vertexRelative(v.y), t), wOwn);
+  cutVertices[slot] = c;
+  return c.warped.w >= 0.5 &&
+         distance(c.warped.xyz, wOwn) < distance(c.warped.xyz, warped[other].xyz);
+}
+
+// A triangle that the cut crosses through two of its edges (corner u on one side, the others on
+// the other) and whose third edge is drawn in one or two segments, split exactly along the cut:
+// the corner's piece and the other side's quad (fanned, through the third edge's midpoint where
+// it has two segments) between its corners and four cut vertices, each side's limit of the warp
+// at the two crossings, drawn flat in the pieces list. Instead of tessellating it finely and
+// dropping the pieces across the cut in the geometry shader (a band of two pixels or a texel
+// unshown along the cut, and most of the geometry shader's work). False where it does not apply.
+bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u);
+
+bool splitAlongCut(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
+  bool cut[3];
+  uint cuts = 0u;
+  for (uint k = 0u; k < 3u; ++k) {
+    vec3 wa = w[(k + 1u) % 3u].xyz, wb = w[(k + 2u) % 3u].xyz, wm = rawLevels[k].xyz;
+    cut[k] = confvisHalvesSpanJump(confvisAngle(wa, wm), confvisAngle(wm, wb),
+                                   confvisAngle(wa, wb), prepass.maxErrorAngle);
+    cuts += cut[k] ? 1u : 0u;
+  }
+  uint u = !cut[0] ? 0u : !cut[1] ? 1u : 2u;
+  bool applies = prepass.splitAlongCut != 0u && cuts == 2u && rawLevels[u].w > 0.0 && rawLevels[u].w <= 2.0 &&
+                 min(w[0].w, min(w[1].w, w[2].w)) >= 1.0;
+  // A loop run once or not at all rather than an if: lavapipe runs both sides of an if for all
+  // SIMD lanes, but leaves a loop as soon as no lane runs it, and few triangles here need the
+  // bisections and lookups below.
+  bool split = false;
+  for (uint once = 0u; once < (applies ? 1u : 0u); ++once) split = splitFound(i, w, rawLevels, edge, u);
+  return split;
+}
+
+bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
+  uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 4u);
+  if (slot + 4u > uint(cutVertices.length())) return false;
+  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
+  uint offset = uint(prepass.vertexOffset);
+  uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
+  // X where the cut crosses u-a (the edge opposite b), Y where it crosses b-u (opposite a).
+  float tx = cutCrossing(edge[b]), ty = cutCrossing(edge[a]);
+  bool ok = writeCutVertex(slot, edge[b], tx, vu, va);
+  ok = writeCutVertex(slot + 1u, edge[b], tx, va, vu) && ok;
+  ok = writeCutVertex(slot + 2u, edge[a], ty, vu, vb) && ok;
+  ok = writeCutVertex(slot + 3u, edge[a], ty, vb, vu) && ok;
+  if (!ok) return false;
+  uint cutIndex = kCutVertexBit + slot - offset;  // the draw adds the offset back
+  uint xu = cutIndex, xa = cutIndex + 1u, yu = cutIndex + 2u, yb = cutIndex + 3u;
+  bool midpoint = rawLevels[u].w > 1.0;
+  uint at = kPieceCapacity * prepass.firstIndex +
+            atomicAdd(commands[kLists * prepass.mesh + kListPieces].indexCount,
+                      midpoint ? 12u : 9u);
+  appendPiece(at, i[u], xu, yu);
+  if (midpoint) {
+    uint m = prepass.midpointBase + edge[u] - offset;
+    appendPiece(at + 3u, xa, i[a], m);
+    appendPiece(at + 6u, xa, m, i[b]);
+    appendPiece(at + 9u, xa, i[b], yb);
+  } else {
+    appendPiece(at + 3u, xa, i[a], i[b]);
+    appendPiece(at + 6u, xa, i[b], yb);
+  }
+  atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
+  return true;
+}
+
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= bentDispatch[prepass.mesh].count) return;
@@ -124,6 +225,7 @@ void main() {
     wm[k] = levels[k].xyz;
   }
   mayDrop = mayDrop || (bent && distortedPatch(r, w, wm));
+  if (mayDrop && splitAlongCut(i, w, rawLevels, edge)) return;
   // A patch of one segment an edge tessellates into itself alone: warp.geom's test on it, with
   // every view's gap (the corners' warps are the pre-pass's in every way of drawing), decided
   // here where the views agree. Kept ones are drawn flat, as a piece; lavapipe's geometry stage

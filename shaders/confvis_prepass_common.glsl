@@ -67,10 +67,13 @@ const uint kBentGroup = 64u;  // local_size_x of classify_bent_triangles.comp
 // vertex and edge paid for the four-texel lookup and the full edge measurement (0.13 s of a 0.5 s
 // frame at 1M triangles). [0]: vertices, [1]: edges; BentDispatch's layout, reset to 0, 1, 1, 0
 // from the host.
-layout(set = 2, binding = 13, std430) buffer QueueDispatches { BentDispatch queueDispatch[2]; };
+layout(set = 2, binding = 13, std430) buffer QueueDispatches { BentDispatch queueDispatch[3]; };
 layout(set = 2, binding = 14, std430) buffer QueuedVertices { uint queuedVertices[]; };
 layout(set = 2, binding = 15, std430) buffer QueuedEdges { uint queuedEdges[]; };
 const uint kQueueVertices = 0u, kQueueEdges = 1u;
+// [2].count: the cut vertices' slots taken so far (CutVertices below), [2].groupsX: the triangles
+// split along the cut (for the frame's statistics).
+const uint kQueueCutVertices = 2u;
 
 // Per mesh: its triangles written flat (writeFlat leaves degenerate ones in the list; this
 // counts the rest for the frame's statistics), reset from the host.
@@ -118,6 +121,7 @@ layout(push_constant) uniform Prepass {
   float minGap;
   uint midpointBase;  // the scene's vertex count: edge e's midpoint is vertex midpointBase + e
   float maxGap;       // minGap of the view that tolerates the widest gap (minGap: the strictest)
+  uint splitAlongCut; // VulkanOptions::splitAlongCut (classify_bent_triangles.comp)
 } prepass;
 
 // Writes triangle t (vertex indices i) of the current mesh into its flat list, whose slots are
@@ -149,6 +153,18 @@ void appendStraight(uint t) {
 // (xyz), written once by warp_vertices.comp; the later passes read it instead of transforming the
 // vertex again (each edge and triangle reads two or three).
 layout(set = 2, binding = 20, std430) buffer Relative { vec4 relative[]; };
+
+// The vertices classify_bent_triangles.comp makes where the source's cut crosses an edge, one
+// per side: the point on the cut with that side's limit of the warp, for the pieces list
+// (confvis_pulled_vertex.glsl reads slot s as vertex kCutVertexBit + s).
+struct CutVertex {
+  vec4 position;  // world (virtual)
+  vec4 normal;
+  vec4 uv;        // xy
+  vec4 warped;    // relative to c, w = validity
+};
+layout(set = 2, binding = 21, std430) writeonly buffer CutVertices { CutVertex cutVertices[]; };
+const uint kCutVertexBit = 0x80000000u;
 
 // Virtual point of vertex v in the physical frame, relative to the map's reference point, from
 // the scene's vertices (warp_vertices.comp; the others read vertexRelative).

@@ -1,4 +1,4 @@
-// The conformal pipelines' vertex shaders read their vertices themselves (set 0, bindings 3-7;
+// The conformal pipelines' vertex shaders read their vertices themselves (set 0, bindings 3-8;
 // backends/vulkan/src/frame_renderer.cpp writes them): vertex numbers below push.midpointBase
 // are the scene's vertices with the pre-pass's warps, number midpointBase + e is the midpoint of
 // the scene's edge e with the warp the pre-pass measured for it (classify_edges.comp). The
@@ -16,6 +16,16 @@ layout(set = 0, binding = 4, std430) readonly buffer SceneVertices { float scene
 layout(set = 0, binding = 5, std430) readonly buffer Warped { vec4 warped[]; };
 layout(set = 0, binding = 6, std430) readonly buffer Edges { uvec2 edges[]; };
 layout(set = 0, binding = 7, std430) readonly buffer EdgeLevels { vec4 edgeLevels[]; };
+// The pre-pass's vertices on the source's cut (confvis_prepass_common.glsl): vertex number
+// kCutVertexBit + s is slot s.
+struct CutVertex {
+  vec4 position;
+  vec4 normal;
+  vec4 uv;
+  vec4 warped;
+};
+layout(set = 0, binding = 8, std430) readonly buffer CutVertices { CutVertex cutVertices[]; };
+const uint kCutVertexBit = 0x80000000u;
 
 struct PulledVertex {
   vec3 position;  // world (virtual)
@@ -35,6 +45,10 @@ PulledVertex sceneVertex(uint v) {
 }
 
 PulledVertex pulledVertex(uint v) {
+  if (v >= kCutVertexBit) {
+    CutVertex c = cutVertices[v - kCutVertexBit];
+    return PulledVertex(c.position.xyz, c.normal.xyz, c.uv.xy, c.warped);
+  }
   if (v < push.midpointBase) return sceneVertex(v);
   uint e = v - push.midpointBase;
   PulledVertex a = sceneVertex(edges[e].x), b = sceneVertex(edges[e].y);

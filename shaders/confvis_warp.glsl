@@ -51,6 +51,11 @@ float confvisAngle(vec3 a, vec3 b) { return atan(length(cross(a, b)), dot(a, b))
 // a monitor wall's corners as jumps and tore the triangles there: 5 % of md230x6 black.)
 vec4 confvisSampleGeomAcrossCut(vec3 v);
 
+// confvisSampleGeomAcrossCut continuing the side of the block's texel nearest to `hint` (a
+// physical direction; zero: the texel nearest v, as confvisSampleGeomAcrossCut): at a point on
+// the cut, each side's limit, the hint being a point of that side.
+vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint);
+
 // The hardware's bilinear blend alone, normalised, in `g`; false where the blend comes out too
 // short (the footprint may straddle the cut), where confvisSampleGeom fetches the four texels.
 // Devices that run both sides of a branch for every SIMD lane (lavapipe) pay the costly path
@@ -85,7 +90,9 @@ void confvisGatherGeom(vec3 v, out vec4 corner[4]) {
   corner[3] = vec4(gx.y, gy.y, gz.y, gw.y);
 }
 
-vec4 confvisSampleGeomAcrossCut(vec3 v) {
+vec4 confvisSampleGeomAcrossCut(vec3 v) { return confvisSampleGeomAcrossCutToward(v, vec3(0.0)); }
+
+vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint) {
   // Face, (s, t) and the directions in which s and t grow, exactly as the Vulkan spec's cube-map
   // face selection table.
   vec3 a = abs(v);
@@ -106,15 +113,19 @@ vec4 confvisSampleGeomAcrossCut(vec3 v) {
   vec4 corner[4];
   confvisGatherGeom(v, corner);
   float weight[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
+  vec3 unit[4];
+  for (int k = 0; k < 4; ++k) unit[k] = normalize(corner[k].xyz);
+  bool hinted = dot(hint, hint) > 0.0;
+  vec3 towards = hinted ? normalize(hint) : vec3(0.0);
   int nearest = 0;
   for (int k = 1; k < 4; ++k)
-    if (weight[k] > weight[nearest]) nearest = k;
+    if (hinted ? distance(unit[k], towards) < distance(unit[nearest], towards)
+               : weight[k] > weight[nearest])
+      nearest = k;
   // The sides of the block that span the cut: longer than three times its shortest side (a
   // conformal map keeps the block nearly square, even where it magnifies strongly next to a
   // display corner) and than eight neighbour spacings (2/n radians each where the map does not
   // stretch). The nearest texel's side: the texels joined to it by the other sides.
-  vec3 unit[4];
-  for (int k = 0; k < 4; ++k) unit[k] = normalize(corner[k].xyz);
   float side[4] = float[4](distance(unit[0], unit[1]), distance(unit[1], unit[3]),
                            distance(unit[3], unit[2]), distance(unit[2], unit[0]));
   float longSide = max(3.0 * min(min(side[0], side[1]), min(side[2], side[3])), min(16.0 / n, 1.5));
@@ -201,6 +212,14 @@ vec4 confvisWarpRelative(vec3 relative) {
   float r = length(relative);
   if (r < 1e-9) return vec4(relative, 1.0);  // c itself stays put
   vec4 g = confvisSampleGeom(relative / r);
+  return vec4(r * g.xyz, g.w);
+}
+
+// confvisWarpRelative on the side of `hint` (confvisSampleGeomAcrossCutToward): next to the cut
+// only, where the four texels span it.
+vec4 confvisWarpRelativeToward(vec3 relative, vec3 hint) {
+  float r = length(relative);
+  vec4 g = confvisSampleGeomAcrossCutToward(relative / max(r, 1e-30), hint);
   return vec4(r * g.xyz, g.w);
 }
 

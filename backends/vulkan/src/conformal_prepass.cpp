@@ -30,6 +30,10 @@ std::uint32_t ConformalPrepass::flatTriangles(std::size_t draw) const {
   return static_cast<const std::uint32_t*>(flatCounts_.mapped())[draw];
 }
 
+std::uint32_t ConformalPrepass::trianglesSplitAlongCut() const {
+  return static_cast<const BentDispatch*>(queueDispatch_.mapped())[2].dispatch.x;
+}
+
 VkDrawIndexedIndirectCommand ConformalPrepass::command(std::size_t draw, PrepassList list) const {
   VkDrawIndexedIndirectCommand c = static_cast<const VkDrawIndexedIndirectCommand*>(
       commands_.mapped())[commandOffset(draw, list) / sizeof(VkDrawIndexedIndirectCommand)];
@@ -65,12 +69,17 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   bentTriangles_ = uintList(scene.triangleCount());
   straightDispatch_ = dispatches(scene.draws().size());
   straightTriangles_ = uintList(scene.triangleCount());
-  queueDispatch_ = dispatches(2);
+  queueDispatch_ = dispatches(3);  // vertices, edges; [2].count counts the cut vertices
   queuedVertices_ = uintList(scene.vertexCount());
   queuedEdges_ = uintList(scene.edgeCount());
   flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
   edgeFlags_ = uintList(scene.edgeCount());
+  // Four a triangle split along the cut (classify_bent_triangles.comp); those beyond fall back
+  // to the geometry shader's drop.
+  cutVertices_ = Buffer(context_, 4 * std::clamp<std::size_t>(scene.triangleCount(), 1, 16384) *
+                                      kCutVertexBytes,
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
   relative_ = Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(glm::vec4),
                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 
@@ -101,7 +110,8 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
       bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
       queuedEdges_.get(),   flatCounts_.get(),           edgeFlags_.get(),
-      straightDispatch_.get(), straightTriangles_.get(), relative_.get()};
+      straightDispatch_.get(), straightTriangles_.get(), relative_.get(),
+      cutVertices_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
   rangeEnds_.clear();
@@ -132,7 +142,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   auto* straight = static_cast<BentDispatch*>(straightDispatch_.mapped());
   for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = straight[d] = {0, 1, 1, 0};
   auto* queues = static_cast<BentDispatch*>(queueDispatch_.mapped());
-  queues[0] = queues[1] = {0, 1, 1, 0};
+  queues[0] = queues[1] = queues[2] = {0, 1, 1, 0};
 
   // The previous frame's draws read what this frame overwrites.
   vkCmdPipelineBarrier(cmd,
@@ -147,6 +157,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.maxSegmentAngle = thresholds.maxSegmentAngle;
   push.minGap = thresholds.minGap;
   push.maxGap = thresholds.maxGap;
+  push.splitAlongCut = thresholds.splitAlongCut ? 1u : 0u;
   push.midpointBase = static_cast<std::uint32_t>(scene.vertexCount());
   constexpr std::uint32_t kGroup = 64;  // local_size_x of the pre-pass shaders
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVertices());

@@ -28,6 +28,8 @@ namespace confvis::vulkan {
 // Pieces-list index slots per index of the scene: a triangle split at its edge midpoints makes
 // up to four (classify_bent_triangles.comp, kPieceCapacity).
 constexpr std::uint32_t kPieceCapacity = 4;
+// CutVertex of confvis_prepass_common.glsl: position, normal, uv, warp (four vec4).
+constexpr std::size_t kCutVertexBytes = 4 * 4 * sizeof(float);
 
 enum class PrepassList : std::uint32_t { Flat = 0, Tessellated = 1, Dropping = 2, Pieces = 3 };
 constexpr std::uint32_t kPrepassLists = 4;  // commands per mesh, kList* of the shaders
@@ -37,6 +39,7 @@ struct PrepassThresholds {
   float maxSegmentAngle;  // radians
   float minGap;           // radians: the smallest over the frame's views
   float maxGap;           // radians: the largest (the pre-pass decides a drop only where both agree)
+  bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
 };
 
 class ConformalPrepass {
@@ -55,6 +58,7 @@ class ConformalPrepass {
   VkBuffer commands() const { return commands_.get(); }
   // vec4 per tessellated-lists index: level of the edge opposite that corner (warp.tesc).
   VkBuffer patchLevels() const { return patchLevels_.get(); }
+  VkBuffer cutVertices() const { return cutVertices_.get(); }
   VkBuffer edgeLevels() const { return edgeLevels_.get(); }  // vec4 per scene edge
   std::uint64_t sceneId() const { return sceneId_; }  // of the scene the buffers are for
   // Mesh `draw`'s command for `list` as the pre-pass left it, with the list's true first index
@@ -64,6 +68,9 @@ class ConformalPrepass {
   // Mesh `draw`'s triangles in the flat list that are not degenerate (the list holds the whole
   // mesh's range); valid once the submission has completed.
   std::uint32_t flatTriangles(std::size_t draw) const;
+  // Triangles split along the source's cut (classify_bent_triangles.comp), all meshes; valid
+  // once the submission has completed.
+  std::uint32_t trianglesSplitAlongCut() const;
   // Byte offset of mesh `draw`'s VkDrawIndexedIndirectCommand for `list`.
   static VkDeviceSize commandOffset(std::size_t draw, PrepassList list);
 
@@ -86,6 +93,7 @@ class ConformalPrepass {
   Buffer flatCounts_;  // uint per mesh, host-visible
   Buffer edgeFlags_;   // uint per scene edge
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
+  Buffer cutVertices_;  // CutVertex of confvis_prepass_common.glsl
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

@@ -85,6 +85,7 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
                     const TessellationOptions& tessellation, std::uint32_t maxViews) {
   checkSettings(settings, map, maxViews);
   FramePlan plan;
+  plan.splitAlongCut = tessellation.splitAlongCut;
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;
   const bool conformal = settings.mode == RenderMode::Conformal;

@@ -14,6 +14,7 @@ struct TessellationOptions {
   double errorPixels = 0.5;
   double maxSegmentDegrees = 20.0;
   bool enabled = true;
+  bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
 };
 
 struct FramePlan {
@@ -24,6 +25,7 @@ struct FramePlan {
   FrameUniforms frame{};
   std::vector<ViewData> views;             // index wall * eyes.size() + eye
   double near = 0.01, far = 100.0;
+  bool splitAlongCut = true;  // TessellationOptions::splitAlongCut
 };
 
 // `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.

@@ -215,6 +215,7 @@ std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
 FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene) const {
   PrepassCounts counts;
   counts.seconds = prepassSeconds_;
+  counts.splitAlongCut = prepass_.trianglesSplitAlongCut();
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
     counts.flat += prepass_.flatTriangles(d) +
                    prepass_.command(d, PrepassList::Pieces).indexCount / 3;
@@ -232,11 +233,12 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
   uploadFrame(plan);
   if (conformal) {
     // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
-    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f};
+    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, plan.splitAlongCut};
     for (const ViewData& view : plan.views) {
       if (view.params.w != 0.0f)  // tessellation on
         thresholds = {std::min(thresholds.maxErrorAngle, view.params.x), view.params.y,
-                      std::min(thresholds.minGap, view.params.z), thresholds.maxGap};
+                      std::min(thresholds.minGap, view.params.z), thresholds.maxGap,
+                      thresholds.splitAlongCut};
       else
         thresholds.minGap = std::min(thresholds.minGap, view.params.z);
       thresholds.maxGap = std::max(thresholds.maxGap, view.params.z);
@@ -248,12 +250,13 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
     prepassSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // warp.tesc reads the edge levels (set 0, binding 2), the vertex shaders the tessellated
     // lists, the scene's vertices, their warps, its edges and their midpoints' warps (bindings
-    // 3-7); the set is idle now that the pre-pass has completed.
+    // 3-7) and the cut vertices (8); the set is idle now that the pre-pass has completed.
     if (patchLevelsScene_ != prepass_.sceneId()) {
       patchLevelsScene_ = prepass_.sceneId();
-      const std::array<VkBuffer, 6> buffers = {
+      const std::array<VkBuffer, 7> buffers = {
           prepass_.patchLevels(), prepass_.tessellatedIndices(), scene.vertexBuffer(),
-          prepass_.warped(),      scene.edgeBuffer(),            prepass_.edgeLevels()};
+          prepass_.warped(),      scene.edgeBuffer(),            prepass_.edgeLevels(),
+          prepass_.cutVertices()};
       for (std::uint32_t i = 0; i < buffers.size(); ++i)
         writeBufferDescriptor(context_.device(), frameSet_, 2 + i,
                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);

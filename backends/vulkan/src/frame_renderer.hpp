@@ -31,6 +31,7 @@ class FrameRenderer {
   struct PrepassCounts {
     std::size_t flat = 0, tessellated = 0;  // tessellated: without the geometry shader
     std::size_t dropping = 0;               // tessellated with the geometry shader
+    std::size_t splitAlongCut = 0;          // drawn in flat pieces up to the cut
     double seconds = 0.0;  // wall-clock time of the pre-pass submission
   };
   PrepassCounts prepassCounts(const GpuScene& scene) const;

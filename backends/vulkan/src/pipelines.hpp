@@ -40,7 +40,7 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 21;
+inline constexpr std::uint32_t kPrepassBindings = 22;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -53,6 +53,7 @@ struct PrepassConstants {
   float minGap;
   std::uint32_t midpointBase;  // the scene's vertex count
   float maxGap;
+  std::uint32_t splitAlongCut;  // 0 or 1
 };
 
 // Interleaved vertex as uploaded by GpuScene.

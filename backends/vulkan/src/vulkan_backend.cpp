@@ -56,7 +56,8 @@ class VulkanBackend final : public RenderBackend {
     if (!scene_) throw Error(ErrorCode::InvalidInput, "Vulkan backend: render before setScene");
     const auto start = std::chrono::steady_clock::now();
     const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
-                                                   options_.maxSegmentDegrees, options_.tessellate};
+                                                   options_.maxSegmentDegrees, options_.tessellate,
+                                                   options_.splitAlongCut};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, scene_->bounds(), tessellation,
                           context_.capabilities().maxMultiviewViewCount);
@@ -85,6 +86,7 @@ class VulkanBackend final : public RenderBackend {
       result.stats["triangles_drawn_flat"] = counts.flat;
       result.stats["triangles_tessellated"] = counts.tessellated + counts.dropping;
       result.stats["triangles_through_geometry_shader"] = counts.dropping;
+      result.stats["triangles_split_along_cut"] = counts.splitAlongCut;
       result.stats["prepass_seconds"] = counts.seconds;
     }
     return result;

@@ -45,6 +45,10 @@ struct VulkanOptions {
   // Conformal mode without any subdivision: a deliberately wrong render for tests and for the
   // tessellation benchmark's baseline.
   bool tessellate = true;
+  // Conformal mode: triangles that the source's cut crosses through two edges are split exactly
+  // along it, each side drawn up to the cut. False: they are tessellated finely and the pieces
+  // across the cut dropped, leaving a band of a segment's width unshown (for tests and benchmarks).
+  bool splitAlongCut = true;
 };
 
 struct VulkanDeviceInfo {

@@ -1,0 +1,93 @@
+// Triangles that the source's cut crosses, split exactly along it in the pre-pass
+// (classify_bent_triangles.comp): each side is drawn up to the cut, against the closed form of
+// the azimuth squeeze, where the geometry shader's drop of the pieces across the cut (the path
+// without the split) leaves a band unshown beside it.
+#include <gtest/gtest.h>
+
+#include "confvis/engine/builtin_scenes.hpp"
+#include "vulkan_test_maps.hpp"
+#include "vulkan_test_support.hpp"
+
+namespace confvis {
+namespace {
+
+using test::imageOf;
+
+TEST(VulkanCutSplit, TrianglesAcrossTheCutAreDrawnUpToItOnEachSide) {
+  // The squeeze's cut, the back half-meridian, lands on the middle column of cave6's side walls:
+  // in front of it (z < 0) every pixel shows the sphere, behind it nothing.
+  const DisplayConfig config = test::loadConfig("cave6");
+  const RetargetMap squeeze = test::azimuthSqueezeMap(256);
+  BuiltinSceneOptions sceneOptions;
+  sceneOptions.subdivision = 15;  // 2,700 triangles of about 6 degrees, none with an edge on the cut
+  const Scene scene = builtinScene("checker-sphere", sceneOptions);
+  const auto render = [&](bool split) {
+    VulkanOptions options;
+    options.splitAlongCut = split;
+    // Segments across the cut of four times this (six pixels): the band the drop leaves is
+    // as wide as one.
+    options.tessellationErrorPixels = 1.5;
+    test::ValidatedBackend vk(options);
+    vk->setScene(scene);
+    RenderSettings settings;
+    settings.mode = RenderMode::Conformal;
+    settings.resolutionScale = test::scaleFor(config, 128);
+    RenderResult result = vk->render(config, &squeeze, settings);
+    test::expectNoValidationMessages(vk);
+    return result;
+  };
+  // Pixels whose centre lies 0.5 to 4 pixels in front of the cut's column, away from the poles
+  // (the top and bottom eighth, where the cut ends), and those of them that show nothing.
+  struct Beside {
+    std::size_t pixels = 0, holes = 0;
+  };
+  const auto besideTheCut = [&](const RenderResult& result) {
+    Beside b;
+    for (const char* name : {"left", "right"}) {
+      const Wall& wall = config.wall(name);
+      const ImageRGBA& image = imageOf(result, name).image;
+      const double pixel = glm::length(wall.lowerRight - wall.lowerLeft) / image.width;
+      for (int y = image.height / 8; y < image.height * 7 / 8; ++y)
+        for (int x = 0; x < image.width; ++x) {
+          const double z = wall.pointAt((x + 0.5) / image.width, 0.5).z;
+          if (z > -0.5 * pixel || z < -4.0 * pixel) continue;
+          ++b.pixels;
+          b.holes += image.at(x, y)[3] == 0.0f;
+        }
+    }
+    return b;
+  };
+  const test::DirectionColor expected = [](glm::dvec3 d) -> std::optional<glm::vec3> {
+    const auto v = test::squeezeToVirtual(glm::normalize(d));
+    if (!v) return std::nullopt;
+    return checkerSphereColor(*v);
+  };
+
+  const RenderResult split = render(true);
+  // The sphere's rings of triangles around the half-meridian, between the poles.
+  EXPECT_GE(split.stats.value("triangles_split_along_cut", std::size_t{0}), 16u);
+  const Beside b = besideTheCut(split);
+  EXPECT_GT(b.pixels, 500u);
+  EXPECT_LE(b.holes, b.pixels / 100) << b.holes << " of " << b.pixels << " pixels beside the cut";
+  for (const char* name : {"left", "right"}) {
+    SCOPED_TRACE(name);
+    const test::AnalyticComparison a = test::compareAnalytic(
+        imageOf(split, name).image, config.wall(name), glm::dvec3(0.0), expected, 0.05f);
+    EXPECT_LE(a.bad, a.unambiguous / 100) << a.bad << " of " << a.unambiguous << " pixels off";
+  }
+  // Behind the cut's column nothing is drawn: no piece was given the other side's warp.
+  const ImageRGBA& back = imageOf(split, "back").image;
+  std::size_t drawn = 0;
+  for (std::size_t i = 0; i < back.pixelCount(); ++i) drawn += back.pixels[4 * i + 3] > 0.0f;
+  EXPECT_EQ(drawn, 0u);
+
+  // Without the split the same pixels lose a band (the comparison can fail).
+  const RenderResult dropped = render(false);
+  EXPECT_EQ(dropped.stats.value("triangles_split_along_cut", std::size_t{1}), 0u);
+  const Beside d = besideTheCut(dropped);
+
+  EXPECT_GT(d.holes, d.pixels / 10) << d.holes << " of " << d.pixels;
+}
+
+}  // namespace
+}  // namespace confvis
