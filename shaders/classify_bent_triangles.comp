@@ -138,13 +138,16 @@ bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
 }
 
 // A triangle that the cut crosses through two of its edges (corner u on one side, the others on
-// the other) and whose third edge is drawn in one or two segments, split exactly along the cut:
-// the corner's piece and the other side's quad (fanned, through the third edge's midpoint where
-// it has two segments) between its corners and four cut vertices, each side's limit of the warp
-// at the two crossings, drawn flat in the pieces list. Instead of tessellating it finely and
+// the other) and whose third edge is drawn in at most kMaxUncutSegments segments, split exactly
+// along the cut: the corner's piece and the other side's quad (fanned through the third edge's
+// points, as its neighbour tessellates it) between its corners and four cut vertices, each side's
+// limit of the warp at the two crossings, drawn flat in the pieces list. Instead of tessellating it finely and
 // dropping the pieces across the cut in the geometry shader (a band of two pixels or a texel
 // unshown along the cut, and most of the geometry shader's work). False where it does not apply.
 bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u);
+
+// The most segments of the uncut edge of a triangle split along the cut (its pieces: two more).
+const uint kMaxUncutSegments = 8u;
 
 bool splitAlongCut(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
   bool cut[3];
@@ -156,7 +159,8 @@ bool splitAlongCut(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
     cuts += cut[k] ? 1u : 0u;
   }
   uint u = !cut[0] ? 0u : !cut[1] ? 1u : 2u;
-  bool applies = prepass.splitAlongCut != 0u && cuts == 2u && rawLevels[u].w > 0.0 && rawLevels[u].w <= 2.0 &&
+  bool applies = prepass.splitAlongCut != 0u && cuts == 2u && rawLevels[u].w > 0.0 &&
+                 rawLevels[u].w <= float(kMaxUncutSegments) &&
                  min(w[0].w, min(w[1].w, w[2].w)) >= 1.0;
   // A loop run once or not at all rather than an if: lavapipe runs both sides of an if for all
   // SIMD lanes, but leaves a loop as soon as no lane runs it, and few triangles here need the
@@ -166,35 +170,74 @@ bool splitAlongCut(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
   return split;
 }
 
+// Reserves `indices` slots of the mesh's part of the pieces list, if they fit (a split triangle
+// may take more than its kPieceCapacity share); returns the first, or ~0u.
+uint reservePieces(uint indices) {
+  uint capacity = kPieceCapacity * 3u * prepass.count;
+  uint taken = commands[kLists * prepass.mesh + kListPieces].indexCount;
+  for (;;) {
+    if (taken + indices > capacity) return ~0u;
+    uint seen = atomicCompSwap(commands[kLists * prepass.mesh + kListPieces].indexCount, taken,
+                               taken + indices);
+    if (seen == taken) return kPieceCapacity * prepass.firstIndex + taken;
+    taken = seen;
+  }
+}
+
+// Writes the cut vertex `slot`: the point k / n along edge a-b (the triangle's corners a and b,
+// vertices va and vb), warped as the tessellation evaluation shader warps the points it places
+// there (the neighbour across the edge tessellates it into n segments).
+void writeEdgeVertex(uint slot, uint va, uint vb, float s) {
+  CutVertex c;
+  c.position = vec4(mix(vec3(vertices[8u * va], vertices[8u * va + 1u], vertices[8u * va + 2u]),
+                        vec3(vertices[8u * vb], vertices[8u * vb + 1u], vertices[8u * vb + 2u]), s), 1.0);
+  c.normal = vec4(mix(vec3(vertices[8u * va + 3u], vertices[8u * va + 4u], vertices[8u * va + 5u]),
+                      vec3(vertices[8u * vb + 3u], vertices[8u * vb + 4u], vertices[8u * vb + 5u]), s), 0.0);
+  c.uv = vec4(mix(vec2(vertices[8u * va + 6u], vertices[8u * va + 7u]),
+                  vec2(vertices[8u * vb + 6u], vertices[8u * vb + 7u]), s), 0.0, 0.0);
+  c.warped = confvisWarpRelative((1.0 - s) * vertexRelative(va) + s * vertexRelative(vb));
+  cutVertices[slot] = c;
+}
+
 bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
-  uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 4u);
-  if (slot + 4u > uint(cutVertices.length())) return false;
+  // The uncut edge (opposite u, from corner a to b) in n segments: its points in between are
+  // the pre-pass's midpoint (n = 2) or cut vertices of their own, the other side's quad a fan
+  // from X through them.
+  uint n = uint(rawLevels[u].w);
+  uint between = n > 2u ? n - 1u : 0u;
+  uint pieces = n + 2u;
+  uint at = reservePieces(3u * pieces);
+  if (at == ~0u) return false;
+  uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 4u + between);
+  bool ok = slot + 4u + between <= uint(cutVertices.length());
   uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
   uint offset = uint(prepass.vertexOffset);
   uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
-  // X where the cut crosses u-a (the edge opposite b), Y where it crosses b-u (opposite a).
-  float tx = cutCrossing(edge[b]), ty = cutCrossing(edge[a]);
-  bool ok = writeCutVertex(slot, edge[b], tx, vu, va);
-  ok = writeCutVertex(slot + 1u, edge[b], tx, va, vu) && ok;
-  ok = writeCutVertex(slot + 2u, edge[a], ty, vu, vb) && ok;
-  ok = writeCutVertex(slot + 3u, edge[a], ty, vb, vu) && ok;
-  if (!ok) return false;
+  if (ok) {
+    // X where the cut crosses u-a (the edge opposite b), Y where it crosses b-u (opposite a).
+    float tx = cutCrossing(edge[b]), ty = cutCrossing(edge[a]);
+    ok = writeCutVertex(slot, edge[b], tx, vu, va);
+    ok = writeCutVertex(slot + 1u, edge[b], tx, va, vu) && ok;
+    ok = writeCutVertex(slot + 2u, edge[a], ty, vu, vb) && ok;
+    ok = writeCutVertex(slot + 3u, edge[a], ty, vb, vu) && ok;
+    for (uint k = 1u; k <= between; ++k) writeEdgeVertex(slot + 3u + k, va, vb, float(k) / float(n));
+  }
+  if (!ok) {  // the reserved pieces stay degenerate (no fragments); the patch goes on as before
+    for (uint p = 0u; p < pieces; ++p) appendPiece(at + 3u * p, 0u, 0u, 0u);
+    return false;
+  }
   uint cutIndex = kCutVertexBit + slot - offset;  // the draw adds the offset back
   uint xu = cutIndex, xa = cutIndex + 1u, yu = cutIndex + 2u, yb = cutIndex + 3u;
-  bool midpoint = rawLevels[u].w > 1.0;
-  uint at = kPieceCapacity * prepass.firstIndex +
-            atomicAdd(commands[kLists * prepass.mesh + kListPieces].indexCount,
-                      midpoint ? 12u : 9u);
   appendPiece(at, i[u], xu, yu);
-  if (midpoint) {
-    uint m = prepass.midpointBase + edge[u] - offset;
-    appendPiece(at + 3u, xa, i[a], m);
-    appendPiece(at + 6u, xa, m, i[b]);
-    appendPiece(at + 9u, xa, i[b], yb);
-  } else {
-    appendPiece(at + 3u, xa, i[a], i[b]);
-    appendPiece(at + 6u, xa, i[b], yb);
+  uint previous = i[a];
+  for (uint k = 1u; k < n; ++k) {
+    // The midpoint keeps the pre-pass's warp, as tessellation and the flat pieces do.
+    uint next = 2u * k == n ? prepass.midpointBase + edge[u] - offset : cutIndex + 3u + k;
+    appendPiece(at + 3u * k, xa, previous, next);
+    previous = next;
   }
+  appendPiece(at + 3u * n, xa, previous, i[b]);
+  appendPiece(at + 3u * (n + 1u), xa, i[b], yb);
   atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
   return true;
 }
