@@ -86,6 +86,7 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   checkSettings(settings, map, maxViews);
   FramePlan plan;
   plan.splitAlongCut = tessellation.splitAlongCut;
+  plan.reusePrepass = tessellation.reusePrepass;
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;
   const bool conformal = settings.mode == RenderMode::Conformal;

@@ -15,6 +15,7 @@ struct TessellationOptions {
   double maxSegmentDegrees = 20.0;
   bool enabled = true;
   bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
+  bool reusePrepass = true;   // VulkanOptions::reusePrepass
 };
 
 struct FramePlan {
@@ -26,6 +27,7 @@ struct FramePlan {
   std::vector<ViewData> views;             // index wall * eyes.size() + eye
   double near = 0.01, far = 100.0;
   bool splitAlongCut = true;  // TessellationOptions::splitAlongCut
+  bool reusePrepass = true;   // TessellationOptions::reusePrepass
 };
 
 // `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.

@@ -32,7 +32,8 @@ class FrameRenderer {
     std::size_t flat = 0, tessellated = 0;  // tessellated: without the geometry shader
     std::size_t dropping = 0;               // tessellated with the geometry shader
     std::size_t splitAlongCut = 0;          // drawn in flat pieces up to the cut
-    double seconds = 0.0;  // wall-clock time of the pre-pass submission
+    double seconds = 0.0;  // wall-clock time of the pre-pass submission (0 where reused)
+    bool reused = false;   // the previous conformal frame's pre-pass was still current
   };
   PrepassCounts prepassCounts(const GpuScene& scene) const;
 
@@ -69,8 +70,20 @@ class FrameRenderer {
   Image geomMap_;
   UniqueSampler warpSampler_;
   std::uint64_t mapHash_ = 0;
+  // What the pre-pass read, for telling whether the last one is still current: the warp depends
+  // on the scene, the map, the navigation (virtual to physical) and the error bounds, but not on
+  // the head or the eyes.
+  struct PrepassInputs {
+    std::uint64_t scene = 0, map = 0;
+    FrameUniforms frame{};
+    PrepassThresholds thresholds{};
+    bool operator==(const PrepassInputs& o) const;
+  };
+  bool prepassCurrent_ = false;  // prepassInputs_ describe what the pre-pass's buffers hold
+  PrepassInputs prepassInputs_;
   ConformalPrepass prepass_;
   double prepassSeconds_ = 0.0;
+  bool prepassReused_ = false;
 };
 
 }  // namespace confvis::vulkan

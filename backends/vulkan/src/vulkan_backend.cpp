@@ -57,7 +57,7 @@ class VulkanBackend final : public RenderBackend {
     const auto start = std::chrono::steady_clock::now();
     const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
                                                    options_.maxSegmentDegrees, options_.tessellate,
-                                                   options_.splitAlongCut};
+                                                   options_.splitAlongCut, options_.reusePrepass};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, scene_->bounds(), tessellation,
                           context_.capabilities().maxMultiviewViewCount);
@@ -88,6 +88,7 @@ class VulkanBackend final : public RenderBackend {
       result.stats["triangles_through_geometry_shader"] = counts.dropping;
       result.stats["triangles_split_along_cut"] = counts.splitAlongCut;
       result.stats["prepass_seconds"] = counts.seconds;
+      result.stats["prepass_reused"] = counts.reused;
     }
     return result;
   }

@@ -49,6 +49,11 @@ struct VulkanOptions {
   // along it, each side drawn up to the cut. False: they are tessellated finely and the pieces
   // across the cut dropped, leaving a band of a segment's width unshown (for tests and benchmarks).
   bool splitAlongCut = true;
+  // Conformal mode: a frame whose scene, map, navigation (RenderSettings::camera) and error
+  // bounds equal the previous conformal frame's reuses its compute pre-pass (warps, edge levels,
+  // draw lists); head tracking alone changes none of them. False: every frame runs it (the
+  // benchmark's figure for frames that navigate).
+  bool reusePrepass = true;
 };
 
 struct VulkanDeviceInfo {

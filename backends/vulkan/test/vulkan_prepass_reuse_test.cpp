@@ -1,0 +1,82 @@
+// The conformal pre-pass is reused by a frame whose scene, map, navigation and error bounds are
+// the previous conformal frame's (VulkanOptions::reusePrepass): head tracking alone reuses it,
+// navigating or a new map runs it again, and every frame draws what a fresh backend draws.
+#include <gtest/gtest.h>
+
+#include "confvis/engine/builtin_scenes.hpp"
+#include "vulkan_image_checks.hpp"
+#include "vulkan_test_maps.hpp"
+#include "vulkan_test_support.hpp"
+
+namespace confvis {
+namespace {
+
+// Largest channel difference between two renders' images, all walls.
+double largestDifference(const RenderResult& a, const RenderResult& b) {
+  EXPECT_EQ(a.images.size(), b.images.size());
+  double largest = 0.0;
+  for (std::size_t i = 0; i < a.images.size() && i < b.images.size(); ++i)
+    largest = std::max(
+        largest, test::comparePixels(a.images[i].image, b.images[i].image, 0.0f).maxError);
+  return largest;
+}
+
+TEST(VulkanPrepassReuse, HeadMovesReuseItNavigationAndMapsRunItAgain) {
+  const DisplayConfig config = test::loadConfig("cave5");
+  BuiltinSceneOptions sceneOptions;
+  sceneOptions.subdivision = 8;
+  const Scene scene = builtinScene("checker-sphere", sceneOptions);
+  const RetargetMap squeeze = test::azimuthSqueezeMap(64);  // a cut: every list is drawn
+  const RetargetMap zoom = test::zoomMap(64, 2.0);
+  RenderSettings settings;
+  settings.mode = RenderMode::Conformal;
+  settings.resolutionScale = test::scaleFor(config, 64);
+
+  test::ValidatedBackend vk;
+  vk->setScene(scene);
+  // What a backend that has drawn nothing before draws.
+  const auto fresh = [&](const RetargetMap& map, const RenderSettings& s) {
+    test::ValidatedBackend other;
+    other->setScene(scene);
+    return other->render(config, &map, s);
+  };
+  const auto reused = [](const RenderResult& r) { return r.stats.value("prepass_reused", true); };
+
+  EXPECT_FALSE(reused(vk->render(config, &squeeze, settings)));
+  RenderSettings headMoved = settings;
+  headMoved.head.position = glm::dvec3(0.2, -0.1, 0.3);
+  const RenderResult head = vk->render(config, &squeeze, headMoved);
+  EXPECT_TRUE(reused(head));
+  EXPECT_EQ(largestDifference(head, fresh(squeeze, headMoved)), 0.0);
+
+  RenderSettings navigated = headMoved;
+  navigated.camera.yawDegrees = 30.0;
+  const RenderResult turned = vk->render(config, &squeeze, navigated);
+  EXPECT_FALSE(reused(turned));
+  EXPECT_EQ(largestDifference(turned, fresh(squeeze, navigated)), 0.0);
+  // (The comparisons can fail: the turned frame differs from the one before.)
+  EXPECT_GT(largestDifference(turned, head), 0.5);
+
+  const RenderResult zoomed = vk->render(config, &zoom, navigated);
+  EXPECT_FALSE(reused(zoomed));
+  EXPECT_EQ(largestDifference(zoomed, fresh(zoom, navigated)), 0.0);
+  test::expectNoValidationMessages(vk);
+}
+
+TEST(VulkanPrepassReuse, SwitchedOffEveryFrameRunsIt) {
+  const DisplayConfig config = test::loadConfig("cave5");
+  VulkanOptions options;
+  options.reusePrepass = false;
+  test::ValidatedBackend vk(options);
+  vk->setScene(builtinScene("checker-sphere"));
+  const RetargetMap zoom = test::zoomMap(64, 2.0);
+  RenderSettings settings;
+  settings.mode = RenderMode::Conformal;
+  settings.resolutionScale = test::scaleFor(config, 32);
+  for (int frame = 0; frame < 2; ++frame)
+    EXPECT_FALSE(vk->render(config, &zoom, settings).stats.value("prepass_reused", true));
+  test::expectNoValidationMessages(vk);
+}
+
+}  // namespace
+}  // namespace confvis
