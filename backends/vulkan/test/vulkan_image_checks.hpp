@@ -43,6 +43,13 @@ inline PixelComparison comparePixels(const ImageRGBA& a, const ImageRGBA& b, flo
 // The colour a scene shows along a direction from the eye; nullopt where nothing is drawn.
 using DirectionColor = std::function<std::optional<glm::vec3>(glm::dvec3)>;
 
+// Pixels something was drawn on (alpha above 0).
+inline std::size_t drawnPixels(const ImageRGBA& image) {
+  std::size_t drawn = 0;
+  for (std::size_t i = 0; i < image.pixelCount(); ++i) drawn += image.pixels[4 * i + 3] > 0.0f;
+  return drawn;
+}
+
 struct AnalyticComparison {
   std::size_t pixels = 0, unambiguous = 0, bad = 0, empty = 0;
 };
