@@ -118,18 +118,24 @@ float cutCrossing(uint e) {
   return 0.5 * (lo + hi);
 }
 
+// The scene's position, normal and uv at s from vertex va to vb (the warp left to the caller).
+CutVertex vertexBetween(uint va, uint vb, float s) {
+  CutVertex c;
+  c.position = vec4(mix(vec3(vertices[8u * va], vertices[8u * va + 1u], vertices[8u * va + 2u]),
+                        vec3(vertices[8u * vb], vertices[8u * vb + 1u], vertices[8u * vb + 2u]), s), 1.0);
+  c.normal = vec4(mix(vec3(vertices[8u * va + 3u], vertices[8u * va + 4u], vertices[8u * va + 5u]),
+                      vec3(vertices[8u * vb + 3u], vertices[8u * vb + 4u], vertices[8u * vb + 5u]), s), 0.0);
+  c.uv = vec4(mix(vec2(vertices[8u * va + 6u], vertices[8u * va + 7u]),
+                  vec2(vertices[8u * vb + 6u], vertices[8u * vb + 7u]), s), 0.0, 0.0);
+  return c;
+}
+
 // Writes cut vertex `slot`: the point at t along edge e with the limit of the warp on the side
 // of the edge's vertex `own` (the other end: `other`). False where that limit is not clearly on
 // own's side or lies outside the source field.
 bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
   uvec2 v = edges[e];
-  CutVertex c;
-  c.position = vec4(mix(vec3(vertices[8u * v.x], vertices[8u * v.x + 1u], vertices[8u * v.x + 2u]),
-                        vec3(vertices[8u * v.y], vertices[8u * v.y + 1u], vertices[8u * v.y + 2u]), t), 1.0);
-  c.normal = vec4(mix(vec3(vertices[8u * v.x + 3u], vertices[8u * v.x + 4u], vertices[8u * v.x + 5u]),
-                      vec3(vertices[8u * v.y + 3u], vertices[8u * v.y + 4u], vertices[8u * v.y + 5u]), t), 0.0);
-  c.uv = vec4(mix(vec2(vertices[8u * v.x + 6u], vertices[8u * v.x + 7u]),
-                  vec2(vertices[8u * v.y + 6u], vertices[8u * v.y + 7u]), t), 0.0, 0.0);
+  CutVertex c = vertexBetween(v.x, v.y, t);
   vec3 wOwn = warped[own].xyz;
   c.warped = confvisWarpRelativeToward(mix(vertexRelative(v.x), vertexRelative(v.y), t), wOwn);
   cutVertices[slot] = c;
@@ -188,13 +194,7 @@ uint reservePieces(uint indices) {
 // vertices va and vb), warped as the tessellation evaluation shader warps the points it places
 // there (the neighbour across the edge tessellates it into n segments).
 void writeEdgeVertex(uint slot, uint va, uint vb, float s) {
-  CutVertex c;
-  c.position = vec4(mix(vec3(vertices[8u * va], vertices[8u * va + 1u], vertices[8u * va + 2u]),
-                        vec3(vertices[8u * vb], vertices[8u * vb + 1u], vertices[8u * vb + 2u]), s), 1.0);
-  c.normal = vec4(mix(vec3(vertices[8u * va + 3u], vertices[8u * va + 4u], vertices[8u * va + 5u]),
-                      vec3(vertices[8u * vb + 3u], vertices[8u * vb + 4u], vertices[8u * vb + 5u]), s), 0.0);
-  c.uv = vec4(mix(vec2(vertices[8u * va + 6u], vertices[8u * va + 7u]),
-                  vec2(vertices[8u * vb + 6u], vertices[8u * vb + 7u]), s), 0.0, 0.0);
+  CutVertex c = vertexBetween(va, vb, s);
   c.warped = confvisWarpRelative((1.0 - s) * vertexRelative(va) + s * vertexRelative(vb));
   cutVertices[slot] = c;
 }
