@@ -58,6 +58,22 @@ void countLanes(const int* valid, const RayHitN& rh, std::uint64_t& rays, std::u
     }
 }
 
+// Wall w's output size at `scale` and its plain rays.
+WallRays raysOfWall(const DisplayConfig& config, std::size_t w, double scale) {
+  const Wall& wall = config.walls[w];
+  const WallView view = makeWallView(wall, config.reference);
+  WallRays rays;
+  rays.wall = w;
+  rays.width = scaled(wall.width, scale), rays.height = scaled(wall.height, scale);
+  rays.sx = static_cast<double>(wall.width) / rays.width;
+  rays.sy = static_cast<double>(wall.height) / rays.height;
+  rays.origin = glm::vec3(view.eye_position);
+  const glm::dvec3 base = view.rayDirection(0.0, 0.0);
+  rays.directions = {glm::vec3(base), glm::vec3(view.rayDirection(1.0, 0.0) - base),
+                     glm::vec3(view.rayDirection(0.0, 1.0) - base)};
+  return rays;
+}
+
 // The renderer's layout for every wall: 16-pixel tiles in parallel (TBB), each traced by
 // traceTile(wall, context, x0, y0, x1, y1, rays, hits).
 template <typename TraceTile>
@@ -66,17 +82,7 @@ RawLoopResult forEachTile(const DisplayConfig& config, double scale, TraceTile t
   std::atomic<std::uint64_t> rays{0}, hits{0};
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t w = 0; w < config.walls.size(); ++w) {
-    const Wall& wall = config.walls[w];
-    const WallView view = makeWallView(wall, config.reference);
-    WallRays wallRays;
-    wallRays.wall = w;
-    wallRays.width = scaled(wall.width, scale), wallRays.height = scaled(wall.height, scale);
-    wallRays.sx = static_cast<double>(wall.width) / wallRays.width;
-    wallRays.sy = static_cast<double>(wall.height) / wallRays.height;
-    wallRays.origin = glm::vec3(view.eye_position);
-    const glm::dvec3 base = view.rayDirection(0.0, 0.0);
-    wallRays.directions = {glm::vec3(base), glm::vec3(view.rayDirection(1.0, 0.0) - base),
-                           glm::vec3(view.rayDirection(0.0, 1.0) - base)};
+    const WallRays wallRays = raysOfWall(config, w, scale);
     const int across = (wallRays.width + kTile - 1) / kTile;
     const int tiles = across * ((wallRays.height + kTile - 1) / kTile);
     tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1), [&](const tbb::blocked_range<int>& r) {
@@ -99,10 +105,10 @@ RawLoopResult forEachTile(const DisplayConfig& config, double scale, TraceTile t
 
 }  // namespace
 
-ConformalDirections conformalDirections(const RetargetMap& map, const DisplayConfig& config,
+DirectionTables conformalDirections(const RetargetMap& map, const DisplayConfig& config,
                                         double scale) {
   const ConformalWarp warp(map);
-  ConformalDirections out;
+  DirectionTables out;
   for (const Wall& wall : config.walls) {
     const int width = scaled(wall.width, scale), height = scaled(wall.height, scale);
     const WallMapGrid grid(warp, wall,
@@ -122,33 +128,63 @@ ConformalDirections conformalDirections(const RetargetMap& map, const DisplayCon
   return out;
 }
 
+namespace {
+
+// The rays of the packet of 4 x 2 pixels (embree::PacketSamples) at (x, y) in a tile ending at
+// (x1, y1), as the renderer makes them: 8 lanes of directions (lanes from the block's pixel count
+// on repeat its last pixel) and -1 in `valid` for the lanes to trace; plain directions or, given
+// `table`, the conformal frame's (its unlit pixels not traced).
+void blockRays(const WallRays& w, const glm::vec3* table, int x, int y, int x1, int y1, float* dx,
+               float* dy, float* dz, int* valid) {
+  const embree::PacketSamples block = embree::blockAt(x, y, x1, y1);
+  const int columns = block.columns, count = block.count;
+  for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
+  if (table) {
+    for (int lane = 0; lane < 8; ++lane) {
+      const int l = std::min(lane, count - 1);
+      const glm::vec3 d =
+          table[static_cast<std::size_t>(y + l / columns) * w.width + x + l % columns];
+      dx[lane] = d.x, dy[lane] = d.y, dz[lane] = d.z;
+      if (d == glm::vec3(0.0f)) valid[lane] = 0;  // unlit
+    }
+  } else {
+    alignas(32) std::array<float, 8> px{}, py{};
+    embree::pixelCentres(x, y, columns, count, w.sx, w.sy, px, py);
+    w.directions.at(px, py, dx, dy, dz);
+  }
+}
+
+}  // namespace
+
+DirectionTables plainDirections(const DisplayConfig& config, double scale) {
+  DirectionTables out;
+  for (std::size_t w = 0; w < config.walls.size(); ++w) {
+    const WallRays rays = raysOfWall(config, w, scale);
+    std::vector<glm::vec3> directions(static_cast<std::size_t>(rays.width) * rays.height);
+    for (int y = 0; y < rays.height; ++y)
+      for (int x = 0; x < rays.width; ++x) {
+        std::array<float, 1> px{}, py{};  // the renderer's centre and float arithmetic
+        embree::pixelCentres(x, y, 1, 1, rays.sx, rays.sy, px, py);
+        glm::vec3& d = directions[static_cast<std::size_t>(y) * rays.width + x];
+        rays.directions.at(px, py, &d.x, &d.y, &d.z);
+      }
+    out.walls.push_back(std::move(directions));
+  }
+  return out;
+}
+
 RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& config,
-                               double scale, const ConformalDirections* conformal) {
+                               double scale, const DirectionTables* tables) {
   // Within a tile packets of 4 x 2 pixels (embree::PacketSamples), rows of them.
   return forEachTile(config, scale, [&](const WallRays& w, RTCIntersectContext& context, int x0,
                                         int y0, int x1, int y1, std::uint64_t& rays,
                                         std::uint64_t& hits) {
-    const glm::vec3* table = conformal ? conformal->walls[w.wall].data() : nullptr;
+    const glm::vec3* table = tables ? tables->walls[w.wall].data() : nullptr;
     for (int y = y0; y < y1; y += embree::kBlockRows)
       for (int x = x0; x < x1; x += embree::kBlockColumns) {
         alignas(32) int valid[8];
         alignas(32) RTCRayHit8 rh;
-        alignas(32) std::array<float, 8> px{}, py{};
-        const embree::PacketSamples block = embree::blockAt(x, y, x1, y1);
-        const int columns = block.columns, count = block.count;
-        for (int lane = 0; lane < 8; ++lane) valid[lane] = lane < count ? -1 : 0;
-        if (table) {
-          for (int lane = 0; lane < 8; ++lane) {
-            const int l = std::min(lane, count - 1);
-            const glm::vec3 d =
-                table[static_cast<std::size_t>(y + l / columns) * w.width + x + l % columns];
-            rh.ray.dir_x[lane] = d.x, rh.ray.dir_y[lane] = d.y, rh.ray.dir_z[lane] = d.z;
-            if (d == glm::vec3(0.0f)) valid[lane] = 0;  // unlit
-          }
-        } else {
-          embree::pixelCentres(x, y, columns, count, w.sx, w.sy, px, py);
-          w.directions.at(px, py, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z);
-        }
+        blockRays(w, table, x, y, x1, y1, rh.ray.dir_x, rh.ray.dir_y, rh.ray.dir_z, valid);
         setCommonFields<8>(rh, w.origin);
         rtcIntersect8(valid, scene.handle(), &context, &rh);
         countLanes<8>(valid, rh, rays, hits);
@@ -157,39 +193,25 @@ RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& co
 }
 
 RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& config,
-                                 double scale, const ConformalDirections* conformal) {
+                                 double scale, const DirectionTables* tables) {
   return forEachTile(config, scale, [&](const WallRays& w, RTCIntersectContext& context, int x0,
                                         int y0, int x1, int y1, std::uint64_t& rays,
                                         std::uint64_t& hits) {
-    const glm::vec3* table = conformal ? conformal->walls[w.wall].data() : nullptr;
+    const glm::vec3* table = tables ? tables->walls[w.wall].data() : nullptr;
     for (int y = y0; y < y1; y += 2 * embree::kBlockRows)
       for (int x = x0; x < x1; x += embree::kBlockColumns) {
         alignas(64) int valid[16];
         alignas(64) RTCRayHit16 rh;
         for (int half = 0; half < 2; ++half) {  // the renderer's two packets, lanes 0-7 and 8-15
-          const int top = y + half * embree::kBlockRows;
-          const embree::PacketSamples block = embree::blockAt(x, top, x1, y1);
-          const int columns = block.columns, count = top < y1 ? block.count : 0;
-          alignas(32) std::array<float, 8> px{}, py{};
-          alignas(32) float dx[8] = {}, dy[8] = {}, dz[8] = {1, 1, 1, 1, 1, 1, 1, 1};
-          alignas(32) int lit[8] = {-1, -1, -1, -1, -1, -1, -1, -1};
-          if (count > 0 && table) {
-            for (int lane = 0; lane < count; ++lane) {
-              const glm::vec3 d =
-                  table[static_cast<std::size_t>(top + lane / columns) * w.width + x +
-                        lane % columns];
-              dx[lane] = d.x, dy[lane] = d.y, dz[lane] = d.z;
-              if (d == glm::vec3(0.0f)) lit[lane] = 0, dz[lane] = 1;  // unlit: not traced
-            }
-          } else if (count > 0) {
-            embree::pixelCentres(x, top, columns, count, w.sx, w.sy, px, py);
-            w.directions.at(px, py, dx, dy, dz);
+          const int top = y + half * embree::kBlockRows, first = 8 * half;
+          if (top < y1) {
+            blockRays(w, table, x, top, x1, y1, rh.ray.dir_x + first, rh.ray.dir_y + first,
+                      rh.ray.dir_z + first, valid + first);
+            continue;
           }
-          for (int lane = 0; lane < 8; ++lane) {
-            valid[8 * half + lane] = lane < count ? lit[lane] : 0;
-            rh.ray.dir_x[8 * half + lane] = dx[lane];
-            rh.ray.dir_y[8 * half + lane] = dy[lane];
-            rh.ray.dir_z[8 * half + lane] = dz[lane];
+          for (int lane = first; lane < first + 8; ++lane) {  // past the tile: not traced
+            valid[lane] = 0;
+            rh.ray.dir_x[lane] = rh.ray.dir_y[lane] = 0.0f, rh.ray.dir_z[lane] = 1.0f;
           }
         }
         setCommonFields<16>(rh, w.origin);

@@ -21,25 +21,30 @@ struct RawLoopResult {
   double seconds = 0;
 };
 
-// The conformal centre-eye directions of every wall's output pixels at `scale` (F at the pixel
-// centre through the wall's WallMapGrid, as the renderer's direction table holds them, but unit;
-// zero where unlit), row by row: built once, before timing, as the renderer builds its table.
-struct ConformalDirections {
+// Unit centre-eye directions of every wall's output pixels at `scale`, row by row (zero where
+// unlit), built once before timing as the renderer builds its direction table.
+struct DirectionTables {
   std::vector<std::vector<glm::vec3>> walls;
 };
-ConformalDirections conformalDirections(const RetargetMap& map, const DisplayConfig& config,
-                                        double scale);
+// The conformal ones: F at the pixel centre through the wall's WallMapGrid, as the renderer's
+// direction table holds them.
+DirectionTables conformalDirections(const RetargetMap& map, const DisplayConfig& config,
+                                    double scale);
+// The plain ones, as plain rendering shoots them: read from a table like the conformal ones, a
+// loop over them differs from one over the conformal rays in the rays alone.
+DirectionTables plainDirections(const DisplayConfig& config, double scale);
 
 // Centre-eye pixel-centre rays of every wall at `scale`: plain ones as plain rendering shoots
-// them or, given `conformal`, those directions (unlit pixels not traced). The conformal loop is
-// the fair ceiling of a conformal render: its rays cross the squeezed parts of the scene too.
+// them or, given `table`, its directions (unlit pixels not traced). The loop over the conformal
+// table is the fair ceiling of a conformal render: its rays cross the squeezed parts of the
+// scene too.
 RawLoopResult rawIntersectLoop(const EmbreeScene& scene, const DisplayConfig& config,
-                               double scale, const ConformalDirections* conformal = nullptr);
+                               double scale, const DirectionTables* table = nullptr);
 
 // The same loops with the renderer's own packet width: two 4 x 2 packets (4 x 4 pixels, lanes
 // as the renderer packs them) per rtcIntersect16. The like-for-like ceiling of the renderer,
 // which traces so (the goal names the rtcIntersect8 loop above).
 RawLoopResult rawIntersect16Loop(const EmbreeScene& scene, const DisplayConfig& config,
-                                 double scale, const ConformalDirections* conformal = nullptr);
+                                 double scale, const DirectionTables* table = nullptr);
 
 }  // namespace confvis::bench
