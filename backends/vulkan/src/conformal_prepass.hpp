@@ -40,6 +40,7 @@ struct PrepassThresholds {
   float minGap;           // radians: the smallest over the frame's views
   float maxGap;           // radians: the largest (the pre-pass decides a drop only where both agree)
   bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
+  bool operator==(const PrepassThresholds&) const = default;
 };
 
 class ConformalPrepass {

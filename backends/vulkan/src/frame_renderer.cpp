@@ -96,15 +96,6 @@ void FrameRenderer::uploadFrame(const FramePlan& plan) {
   std::memcpy(viewBuffer_.mapped(), plan.views.data(), bytes);
 }
 
-bool FrameRenderer::PrepassInputs::operator==(const PrepassInputs& o) const {
-  const auto& t = thresholds;
-  return scene == o.scene && map == o.map &&
-         std::memcmp(&frame, &o.frame, sizeof frame) == 0 &&
-         t.maxErrorAngle == o.thresholds.maxErrorAngle &&
-         t.maxSegmentAngle == o.thresholds.maxSegmentAngle && t.minGap == o.thresholds.minGap &&
-         t.maxGap == o.thresholds.maxGap && t.splitAlongCut == o.thresholds.splitAlongCut;
-}
-
 void FrameRenderer::uploadMap(const RetargetMap& map) {
   // Every frame passes its map: the hash of its texels tells whether the upload is still current
   // (validating and converting a 256^2 map each frame cost ~5 ms, 5-10 % of a 20k-triangle
@@ -245,12 +236,11 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
     // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
     PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, plan.splitAlongCut};
     for (const ViewData& view : plan.views) {
-      if (view.params.w != 0.0f)  // tessellation on
-        thresholds = {std::min(thresholds.maxErrorAngle, view.params.x), view.params.y,
-                      std::min(thresholds.minGap, view.params.z), thresholds.maxGap,
-                      thresholds.splitAlongCut};
-      else
-        thresholds.minGap = std::min(thresholds.minGap, view.params.z);
+      if (view.params.w != 0.0f) {  // tessellation on
+        thresholds.maxErrorAngle = std::min(thresholds.maxErrorAngle, view.params.x);
+        thresholds.maxSegmentAngle = view.params.y;
+      }
+      thresholds.minGap = std::min(thresholds.minGap, view.params.z);
       thresholds.maxGap = std::max(thresholds.maxGap, view.params.z);
     }
     const PrepassInputs inputs{scene.id(), mapHash_, plan.frame, thresholds};

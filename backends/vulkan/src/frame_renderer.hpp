@@ -77,7 +77,7 @@ class FrameRenderer {
     std::uint64_t scene = 0, map = 0;
     FrameUniforms frame{};
     PrepassThresholds thresholds{};
-    bool operator==(const PrepassInputs& o) const;
+    bool operator==(const PrepassInputs&) const = default;
   };
   bool prepassCurrent_ = false;  // prepassInputs_ describe what the pre-pass's buffers hold
   PrepassInputs prepassInputs_;

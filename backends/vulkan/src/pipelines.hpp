@@ -21,6 +21,7 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 struct FrameUniforms {
   glm::mat4 worldToPhysical;
   glm::vec4 warpCentre;
+  bool operator==(const FrameUniforms&) const = default;
 };
 
 // std430 element `View` of confvis_render_common.glsl.
