@@ -30,9 +30,9 @@ void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
 }
 
 // Draws a triangle whose edges need two segments at most (edge k, opposite corner k, when
-// split[k]) in flat pieces (the pieces list, warp_pieces.vert) between its corners and the split
+// split[k]) in flat pieces (the pieces list, warp_simple.vert) between its corners and the split
 // edges' midpoints, instead of tessellating it: the midpoints' warps are the pre-pass's
-// (confvis_pulled_vertex.glsl numbers them after the scene's vertices), exactly what
+// (GpuScene numbers them after the scene's vertices), exactly what
 // tessellation at level 2 places there, without its warped centre and its cost (lavapipe
 // tessellates on one thread; most bent triangles of a finely meshed scene under a baked map bend
 // by two segments).
@@ -121,12 +121,12 @@ float cutCrossing(uint e) {
 // The scene's position, normal and uv at s from vertex va to vb (the warp left to the caller).
 CutVertex vertexBetween(uint va, uint vb, float s) {
   CutVertex c;
-  c.position = vec4(mix(vec3(vertices[8u * va], vertices[8u * va + 1u], vertices[8u * va + 2u]),
-                        vec3(vertices[8u * vb], vertices[8u * vb + 1u], vertices[8u * vb + 2u]), s), 1.0);
-  c.normal = vec4(mix(vec3(vertices[8u * va + 3u], vertices[8u * va + 4u], vertices[8u * va + 5u]),
-                      vec3(vertices[8u * vb + 3u], vertices[8u * vb + 4u], vertices[8u * vb + 5u]), s), 0.0);
-  c.uv = vec4(mix(vec2(vertices[8u * va + 6u], vertices[8u * va + 7u]),
-                  vec2(vertices[8u * vb + 6u], vertices[8u * vb + 7u]), s), 0.0, 0.0);
+  c.position = mix(vec3(vertices[8u * va], vertices[8u * va + 1u], vertices[8u * va + 2u]),
+                   vec3(vertices[8u * vb], vertices[8u * vb + 1u], vertices[8u * vb + 2u]), s);
+  c.normal = mix(vec3(vertices[8u * va + 3u], vertices[8u * va + 4u], vertices[8u * va + 5u]),
+                 vec3(vertices[8u * vb + 3u], vertices[8u * vb + 4u], vertices[8u * vb + 5u]), s);
+  c.uv = mix(vec2(vertices[8u * va + 6u], vertices[8u * va + 7u]),
+             vec2(vertices[8u * vb + 6u], vertices[8u * vb + 7u]), s);
   return c;
 }
 
@@ -138,7 +138,7 @@ bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
   CutVertex c = vertexBetween(v.x, v.y, t);
   vec3 wOwn = warped[own].xyz;
   c.warped = confvisWarpRelativeToward(mix(vertexRelative(v.x), vertexRelative(v.y), t), wOwn);
-  cutVertices[slot] = c;
+  storeCutVertex(slot, c);
   return c.warped.w >= 0.5 &&
          distance(c.warped.xyz, wOwn) < distance(c.warped.xyz, warped[other].xyz);
 }
@@ -196,7 +196,7 @@ uint reservePieces(uint indices) {
 void writeEdgeVertex(uint slot, uint va, uint vb, float s) {
   CutVertex c = vertexBetween(va, vb, s);
   c.warped = confvisWarpRelative((1.0 - s) * vertexRelative(va) + s * vertexRelative(vb));
-  cutVertices[slot] = c;
+  storeCutVertex(slot, c);
 }
 
 bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
@@ -209,7 +209,7 @@ bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
   uint at = reservePieces(3u * pieces);
   if (at == ~0u) return false;
   uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 4u + between);
-  bool ok = slot + 4u + between <= uint(cutVertices.length());
+  bool ok = slot + 4u + between <= cutVertexCapacity();
   uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
   uint offset = uint(prepass.vertexOffset);
   uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
@@ -226,7 +226,7 @@ bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
     for (uint p = 0u; p < pieces; ++p) appendPiece(at + 3u * p, 0u, 0u, 0u);
     return false;
   }
-  uint cutIndex = kCutVertexBit + slot - offset;  // the draw adds the offset back
+  uint cutIndex = prepass.cutVertexBase + slot - offset;  // the draw adds the offset back
   uint xu = cutIndex, xa = cutIndex + 1u, yu = cutIndex + 2u, yb = cutIndex + 3u;
   appendPiece(at, i[u], xu, yu);
   uint previous = i[a];

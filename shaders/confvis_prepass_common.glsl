@@ -17,6 +17,9 @@ struct DrawCommand {  // VkDrawIndexedIndirectCommand
 // Vertices as uploaded (position, normal, uv: 8 floats each).
 layout(set = 2, binding = 0, std430) readonly buffer Vertices { float vertices[]; };
 layout(set = 2, binding = 1, std430) readonly buffer Indices { uint indices[]; };
+// Per scene vertex: its warp relative to c, w = validity. The first part of the warps the draws
+// read (backends/vulkan/src/gpu_scene.hpp): the edge midpoints' (EdgeLevels) and the cut
+// vertices' (CutWarps) follow it.
 layout(set = 2, binding = 2, std430) buffer Warped { vec4 warped[]; };
 layout(set = 2, binding = 3, std430) writeonly buffer SimpleIndices { uint simpleIndices[]; };
 layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint complexIndices[]; };
@@ -31,7 +34,8 @@ layout(set = 2, binding = 5, std430) buffer Commands { DrawCommand commands[]; }
 layout(set = 2, binding = 6, std430) readonly buffer Edges { uvec2 edges[]; };
 layout(set = 2, binding = 7, std430) readonly buffer TriangleEdges { uint triangleEdges[]; };
 // Per edge: xyz = warped midpoint relative to c, w = tessellation segments, negative where pieces
-// of the edge's triangles may be dropped (classify_edges.comp).
+// of the edge's triangles may be dropped (classify_edges.comp). The midpoints' part of Warped, so
+// the flat pieces draw the midpoints by index with fixed-function fetch (warp_simple.vert).
 layout(set = 2, binding = 8, std430) buffer EdgeLevels { vec4 edgeLevels[]; };
 // Per slot of the tessellated lists, laid out like their indices: the edge levels opposite each
 // corner (w: segments, negative where the edge may lose pieces), for warp.tesc
@@ -119,9 +123,10 @@ layout(push_constant) uniform Prepass {
   float maxErrorAngle;
   float maxSegmentAngle;
   float minGap;
-  uint midpointBase;  // the scene's vertex count: edge e's midpoint is vertex midpointBase + e
+  uint midpointBase;  // edge e's midpoint is vertex midpointBase + e (GpuScene::midpointBase)
   float maxGap;       // minGap of the view that tolerates the widest gap (minGap: the strictest)
   uint splitAlongCut; // VulkanOptions::splitAlongCut (classify_bent_triangles.comp)
+  uint cutVertexBase; // cut vertex slot s is vertex cutVertexBase + s (GpuScene::cutVertexBase)
 } prepass;
 
 // Writes triangle t (vertex indices i) of the current mesh into its flat list, whose slots are
@@ -155,16 +160,29 @@ void appendStraight(uint t) {
 layout(set = 2, binding = 20, std430) buffer Relative { vec4 relative[]; };
 
 // The vertices classify_bent_triangles.comp makes where the source's cut crosses an edge, one
-// per side: the point on the cut with that side's limit of the warp, for the pieces list
-// (confvis_pulled_vertex.glsl reads slot s as vertex kCutVertexBit + s).
+// per side: the point on the cut with that side's limit of the warp, for the pieces list. Slot s
+// is vertex prepass.cutVertexBase + s: its attributes (8 floats, as uploaded) in the cut part of
+// the scene's vertex buffer, its warp in the cut part of the warps (storeCutVertex).
 struct CutVertex {
-  vec4 position;  // world (virtual)
-  vec4 normal;
-  vec4 uv;        // xy
+  vec3 position;  // world (virtual)
+  vec3 normal;
+  vec2 uv;
   vec4 warped;    // relative to c, w = validity
 };
-layout(set = 2, binding = 21, std430) writeonly buffer CutVertices { CutVertex cutVertices[]; };
-const uint kCutVertexBit = 0x80000000u;
+layout(set = 2, binding = 21, std430) writeonly buffer CutAttributes { float cutAttributes[]; };
+layout(set = 2, binding = 22, std430) writeonly buffer CutWarps { vec4 cutWarps[]; };
+
+uint cutVertexCapacity() { return uint(cutAttributes.length()) / 8u; }
+
+void storeCutVertex(uint slot, CutVertex c) {
+  uint at = 8u * slot;
+  cutAttributes[at] = c.position.x; cutAttributes[at + 1u] = c.position.y;
+  cutAttributes[at + 2u] = c.position.z;
+  cutAttributes[at + 3u] = c.normal.x; cutAttributes[at + 4u] = c.normal.y;
+  cutAttributes[at + 5u] = c.normal.z;
+  cutAttributes[at + 6u] = c.uv.x; cutAttributes[at + 7u] = c.uv.y;
+  cutWarps[slot] = c.warped;
+}
 
 // Virtual point of vertex v in the physical frame, relative to the map's reference point, from
 // the scene's vertices (warp_vertices.comp; the others read vertexRelative).

@@ -27,7 +27,6 @@ layout(push_constant) uniform Push {
   uint viewBase;    // views[] index of this pass's view 0
   uint hasNormals;
   int vertexOffset;  // tessellated draws: the mesh's, added to the indices of the lists
-  uint midpointBase; // conformal draws: vertex numbers from here on are edge midpoints
 } push;
 
 View currentView() { return views[push.viewBase + gl_ViewIndex]; }

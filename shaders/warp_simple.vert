@@ -1,7 +1,9 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Conformal mode, triangles the pre-pass found straight enough: drawn flat between the corners
-// it warped (classify_triangles.comp).
+// Conformal mode, triangles the pre-pass found straight enough and the pieces of those it split:
+// drawn flat between the corners it warped (classify_triangles.comp), edge midpoints and points
+// on the source's cut (classify_bent_triangles.comp; GpuScene numbers them after the scene's
+// vertices, with their warps in the same buffer).
 #include "confvis_render_common.glsl"
 
 layout(location = 0) in vec3 inPosition;

@@ -66,6 +66,39 @@ Timing timeFrames(RenderBackend& backend, const DisplayConfig& config, const Ret
   return t;
 }
 
+struct TimedRun {
+  RenderBackend* backend;
+  const RetargetMap* map;  // nullptr: plain
+};
+
+// Times the runs one frame each in turn, round after round, so that the machine's drift (a
+// shared VM's speed moves by 10-20 % within seconds) weighs on every run alike and the ratios
+// between them hold even where their absolute times do not.
+std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const DisplayConfig& config,
+                                    RenderSettings settings, int repeats) {
+  const auto settingsFor = [&](const TimedRun& run) {
+    settings.mode = run.map ? RenderMode::Conformal : RenderMode::Plain;
+    return settings;
+  };
+  for (const TimedRun& run : runs) run.backend->render(config, run.map, settingsFor(run));  // warm-up
+  std::vector<std::vector<double>> wall(runs.size()), cpu(runs.size());
+  std::vector<Timing> timings(runs.size());
+  for (int i = 0; i < repeats; ++i)
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+      const RenderSettings frameSettings = settingsFor(runs[r]);
+      const auto start = Clock::now();
+      const double cpuStart = cpuSeconds();
+      timings[r].last = runs[r].backend->render(config, runs[r].map, frameSettings);
+      cpu[r].push_back(cpuSeconds() - cpuStart);
+      wall[r].push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    }
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    timings[r].seconds = median(wall[r]);
+    timings[r].cpu = median(cpu[r]);
+  }
+  return timings;
+}
+
 // Fraction of the unambiguous pixels (away from colour edges) of the centre-eye render that are
 // off the closed form by more than 0.05: checker colour along T_ray(d), times Lambert.
 double closedFormError(const RenderResult& result, const DisplayConfig& config, bool flatShaded,
@@ -238,6 +271,8 @@ int main(int argc, char** argv) {
   int repeats = 3;
   int bakeResolution = 128;
   std::string imageDir;
+  std::vector<std::size_t> extraSizes;
+  std::vector<std::string> mapNames = {"identity", "zoom", "squeeze", "baked"};
   bool skip1m = false, skip20k = false, skipSweep = false, skipZoomSweep = false,
        skipEmbree = false;
   app.add_option("--device", device, "Vulkan device (name part or index; default: auto)");
@@ -247,6 +282,12 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_flag("--skip-1m", skip1m, "leave out the ~1M-triangle scene");
   app.add_flag("--skip-20k", skip20k, "leave the ~20k-triangle scene out of the timing table");
+  app.add_option("--triangles", extraSizes,
+                 "more checker-sphere sizes for the timing table (about this many triangles)")
+      ->delimiter(',');
+  app.add_option("--maps", mapNames, "maps of the timing table (identity, zoom, squeeze, baked)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"identity", "zoom", "squeeze", "baked"}));
   app.add_flag("--skip-sweep", skipSweep, "leave out the threshold sweeps");
   app.add_flag("--skip-zoom-sweep", skipZoomSweep,
                "leave out the threshold sweeps under the zoom map (keep the baked-map one)");
@@ -291,6 +332,7 @@ int main(int argc, char** argv) {
     std::vector<std::pair<std::string, std::size_t>> scenes;
     if (!skip20k) scenes.push_back({"sphere-20k", 20000});
     if (!skip1m) scenes.push_back({"sphere-1M", 1000000});
+    for (std::size_t size : extraSizes) scenes.push_back({"sphere-" + std::to_string(size), size});
     std::printf("config %s, %zu walls at scale %.3g (%d x %d px), median of %d frames\n",
                 config.name.c_str(), config.walls.size(), scale,
                 int(std::lround(config.walls[0].width * scale)),
@@ -302,17 +344,18 @@ int main(int argc, char** argv) {
       const Scene scene = sphereWithTriangles(triangles);
       backend->setScene(scene);
       reuseBackend->setScene(scene);
-      settings.mode = RenderMode::Plain;
-      const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
-      device = plain.last.stats.value("device", "?");
-      settings.mode = RenderMode::Conformal;
       for (const auto& [mapName, map] :
            {std::pair<const char*, const RetargetMap*>{"identity", &identity},
             {"zoom", &zoom},
             {"squeeze", &squeeze},
             {"baked", &baked}}) {
-        const Timing conformal = timeFrames(*backend, config, map, settings, repeats);
-        const Timing reused = timeFrames(*reuseBackend, config, map, settings, repeats);
+        if (std::find(mapNames.begin(), mapNames.end(), mapName) == mapNames.end()) continue;
+        // Plain, conformal and the reused pre-pass, a frame each in turn.
+        const std::vector<Timing> t = timeInterleaved(
+            {{backend.get(), nullptr}, {backend.get(), map}, {reuseBackend.get(), map}}, config,
+            settings, repeats);
+        const Timing &plain = t[0], &conformal = t[1], &reused = t[2];
+        device = plain.last.stats.value("device", "?");
         std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f %9.4f %9zu %8zu %14.2f\n",
                     name.c_str(), scene.triangleCount(), mapName, plain.seconds,
                     conformal.seconds, conformal.seconds / plain.seconds, plain.cpu,

@@ -46,7 +46,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   const std::size_t indexBytes = scene.triangleCount() * 3 * sizeof(std::uint32_t);
   const VkBufferUsageFlags indexUsage =
       VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-  warped_ = Buffer(context_, scene.vertexCount() * sizeof(glm::vec4),
+  warped_ = Buffer(context_, scene.extendedVertexCount() * sizeof(glm::vec4),
                    VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
   flat_ = Buffer(context_, indexBytes, indexUsage, false);
   pieces_ = Buffer(context_, kPieceCapacity * indexBytes, indexUsage, false);
@@ -75,17 +75,10 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
   edgeFlags_ = uintList(scene.edgeCount());
-  // Four a triangle split along the cut (classify_bent_triangles.comp); those beyond fall back
-  // to the geometry shader's drop.
-  cutVertices_ = Buffer(context_, 4 * std::clamp<std::size_t>(scene.triangleCount(), 1, 16384) *
-                                      kCutVertexBytes,
-                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
   relative_ = Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(glm::vec4),
                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 
   const VkDevice device = context_.device();
-  edgeLevels_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * sizeof(glm::vec4),
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
   patchLevels_ = Buffer(context_, scene.triangleCount() * 3 * sizeof(glm::vec4),
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
   const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kPrepassBindings};
@@ -102,18 +95,36 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   allocInfo.descriptorSetCount = 1;
   allocInfo.pSetLayouts = &layout;
   check(vkAllocateDescriptorSets(device, &allocInfo, &set_), "vkAllocateDescriptorSets");
-  // Bindings of confvis_prepass_common.glsl, in order.
+  // Bindings of confvis_prepass_common.glsl, in order; the scene's vertices, their warps, the
+  // edge levels and the cut vertices below.
   const std::array<VkBuffer, kPrepassBindings> buffers = {
-      scene.vertexBuffer(), scene.indexBuffer(),         warped_.get(),
+      VK_NULL_HANDLE,       scene.indexBuffer(),         VK_NULL_HANDLE,
       flat_.get(),          tessellated_.get(),          commands_.get(),
-      scene.edgeBuffer(),   scene.triangleEdgeBuffer(), edgeLevels_.get(),
+      scene.edgeBuffer(),   scene.triangleEdgeBuffer(), VK_NULL_HANDLE,
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
       bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
       queuedEdges_.get(),   flatCounts_.get(),           edgeFlags_.get(),
       straightDispatch_.get(), straightTriangles_.get(), relative_.get(),
-      cutVertices_.get()};
+      VK_NULL_HANDLE,       VK_NULL_HANDLE};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
-    writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
+    if (buffers[i] != VK_NULL_HANDLE)
+      writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
+  // The parts of the scene's vertex buffer and of the warps (GpuScene's layout: scene vertices,
+  // edge midpoints, cut vertices), each bound on its own so that synchronization validation
+  // sees the passes touch disjoint ranges.
+  const auto bindPart = [&](std::uint32_t binding, VkBuffer buffer, VkDeviceSize elementBytes,
+                            std::size_t first, std::size_t end) {
+    writeBufferDescriptor(device, set_, binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer,
+                          first * elementBytes, (end - first) * elementBytes);
+  };
+  const std::size_t midpoints = scene.midpointBase(), cuts = scene.cutVertexBase();
+  bindPart(kPrepassVerticesBinding, scene.vertexBuffer(), sizeof(Vertex), 0, midpoints);
+  bindPart(kPrepassWarpedBinding, warped_.get(), sizeof(glm::vec4), 0, midpoints);
+  bindPart(kPrepassEdgeLevelsBinding, warped_.get(), sizeof(glm::vec4), midpoints, cuts);
+  bindPart(kPrepassCutAttributesBinding, scene.vertexBuffer(), sizeof(Vertex), cuts,
+           scene.extendedVertexCount());
+  bindPart(kPrepassCutWarpsBinding, warped_.get(), sizeof(glm::vec4), cuts,
+           scene.extendedVertexCount());
   rangeEnds_.clear();
   for (const GpuScene::Draw& draw : scene.draws())
     rangeEnds_.push_back(draw.firstIndex + draw.indexCount);
@@ -124,6 +135,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                               VkDescriptorSet frameSet, VkDescriptorSet warpSet,
                               const PrepassThresholds& thresholds) {
   prepare(scene);
+
   // Empty lists (the flat list spans the mesh's range: writeFlat), one instance, each mesh's own
   // index range and vertex offset.
   auto* commands = static_cast<VkDrawIndexedIndirectCommand*>(commands_.mapped());
@@ -158,7 +170,8 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.minGap = thresholds.minGap;
   push.maxGap = thresholds.maxGap;
   push.splitAlongCut = thresholds.splitAlongCut ? 1u : 0u;
-  push.midpointBase = static_cast<std::uint32_t>(scene.vertexCount());
+  push.midpointBase = scene.midpointBase();
+  push.cutVertexBase = scene.cutVertexBase();
   constexpr std::uint32_t kGroup = 64;  // local_size_x of the pre-pass shaders
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVertices());
   push.count = static_cast<std::uint32_t>(scene.vertexCount());

@@ -28,8 +28,6 @@ namespace confvis::vulkan {
 // Pieces-list index slots per index of the scene: a triangle split at its edge midpoints makes
 // up to four (classify_bent_triangles.comp, kPieceCapacity).
 constexpr std::uint32_t kPieceCapacity = 4;
-// CutVertex of confvis_prepass_common.glsl: position, normal, uv, warp (four vec4).
-constexpr std::size_t kCutVertexBytes = 4 * 4 * sizeof(float);
 
 enum class PrepassList : std::uint32_t { Flat = 0, Tessellated = 1, Dropping = 2, Pieces = 3 };
 constexpr std::uint32_t kPrepassLists = 4;  // commands per mesh, kList* of the shaders
@@ -52,15 +50,15 @@ class ConformalPrepass {
   void record(VkCommandBuffer cmd, const GpuScene& scene, VkDescriptorSet frameSet,
               VkDescriptorSet warpSet, const PrepassThresholds& thresholds);
 
-  VkBuffer warped() const { return warped_.get(); }  // vec4 per vertex: warp relative to c, validity
+  // vec4 per vertex of the scene's vertex buffer (GpuScene's layout: scene vertices, edge
+  // midpoints, cut vertices): warp relative to c, w = validity (midpoints: their segments).
+  VkBuffer warped() const { return warped_.get(); }
   VkBuffer flatIndices() const { return flat_.get(); }
   VkBuffer pieceIndices() const { return pieces_.get(); }  // kPieceCapacity slots per scene index
   VkBuffer tessellatedIndices() const { return tessellated_.get(); }  // both tessellated lists
   VkBuffer commands() const { return commands_.get(); }
   // vec4 per tessellated-lists index: level of the edge opposite that corner (warp.tesc).
   VkBuffer patchLevels() const { return patchLevels_.get(); }
-  VkBuffer cutVertices() const { return cutVertices_.get(); }
-  VkBuffer edgeLevels() const { return edgeLevels_.get(); }  // vec4 per scene edge
   std::uint64_t sceneId() const { return sceneId_; }  // of the scene the buffers are for
   // Mesh `draw`'s command for `list` as the pre-pass left it, with the list's true first index
   // (the dropping list ends where the mesh's range does); valid once its submission has
@@ -82,7 +80,7 @@ class ConformalPrepass {
   const Pipelines& pipelines_;
   std::uint64_t sceneId_ = 0;
   std::vector<std::uint32_t> rangeEnds_;  // per mesh: one past its last index
-  Buffer warped_, flat_, pieces_, tessellated_, commands_, edgeLevels_, patchLevels_;
+  Buffer warped_, flat_, pieces_, tessellated_, commands_, patchLevels_;
   // Per mesh: VkDispatchIndirectCommand and bent-list length (BentDispatch of the shaders).
   Buffer bentDispatch_;
   Buffer bentTriangles_;  // uint per scene triangle
@@ -94,7 +92,6 @@ class ConformalPrepass {
   Buffer flatCounts_;  // uint per mesh, host-visible
   Buffer edgeFlags_;   // uint per scene edge
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
-  Buffer cutVertices_;  // CutVertex of confvis_prepass_common.glsl
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

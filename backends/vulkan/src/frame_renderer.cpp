@@ -21,7 +21,7 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 7},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
   }};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
@@ -179,8 +179,7 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
                               0, nullptr);
       const PushConstants push{draw.baseColorFactor, request.viewBase,
-                               draw.hasNormals ? 1u : 0u, 0,
-                               static_cast<std::uint32_t>(scene.vertexCount())};
+                               draw.hasNormals ? 1u : 0u, 0};
       vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
       if (!request.conformal)
         vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
@@ -196,7 +195,8 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
     return;
   }
   drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), PrepassList::Flat);
-  drawAll(pass.conformalPieces.get(), prepass_.pieceIndices(), PrepassList::Pieces);
+  // The pieces index the edge midpoints and cut vertices after the scene's (GpuScene's layout).
+  drawAll(pass.conformalFlat.get(), prepass_.pieceIndices(), PrepassList::Pieces);
   drawAll(pass.conformalTessellated.get(), VK_NULL_HANDLE, PrepassList::Tessellated);
   drawAll(pass.conformalDropping.get(), VK_NULL_HANDLE, PrepassList::Dropping);
 }
@@ -257,15 +257,14 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
       prepassInputs_ = inputs;
       prepassCurrent_ = true;
     }
-    // warp.tesc reads the edge levels (set 0, binding 2), the vertex shaders the tessellated
-    // lists, the scene's vertices, their warps, its edges and their midpoints' warps (bindings
-    // 3-7) and the cut vertices (8); the set is idle now that the pre-pass has completed.
+    // warp.tesc reads the edge levels (set 0, binding 2), warp.vert the tessellated lists, the
+    // scene's vertices and their warps (bindings 3-5); the set is idle now that the pre-pass has
+    // completed.
     if (patchLevelsScene_ != prepass_.sceneId()) {
       patchLevelsScene_ = prepass_.sceneId();
-      const std::array<VkBuffer, 7> buffers = {
-          prepass_.patchLevels(), prepass_.tessellatedIndices(), scene.vertexBuffer(),
-          prepass_.warped(),      scene.edgeBuffer(),            prepass_.edgeLevels(),
-          prepass_.cutVertices()};
+      const std::array<VkBuffer, 4> buffers = {prepass_.patchLevels(),
+                                               prepass_.tessellatedIndices(),
+                                               scene.vertexBuffer(), prepass_.warped()};
       for (std::uint32_t i = 0; i < buffers.size(); ++i)
         writeBufferDescriptor(context_.device(), frameSet_, 2 + i,
                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);

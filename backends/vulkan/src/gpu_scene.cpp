@@ -1,5 +1,6 @@
 #include "gpu_scene.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <limits>
 #include <string>
@@ -102,20 +103,45 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
   vertexCount_ = vertices.size();
   static std::atomic<std::uint64_t> nextId{1};
   id_ = nextId++;
-  vertices_ = uploadBuffer(context, vertices.data(), vertices.size() * sizeof(Vertex),
-                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  indices_ = uploadBuffer(context, indices.data(), indices.size() * sizeof(std::uint32_t),
-                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   std::vector<IndexRange> ranges;
   for (const Draw& draw : draws_) ranges.push_back({draw.firstIndex, draw.indexCount, draw.vertexOffset});
   const MeshEdges edges = buildMeshEdges(indices, ranges);
   edgeCount_ = edges.edges.size();
+  appendConformalVertices(vertices, edges.edges);
+  vertices_ = uploadBuffer(context, vertices.data(), vertices.size() * sizeof(Vertex),
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  indices_ = uploadBuffer(context, indices.data(), indices.size() * sizeof(std::uint32_t),
+                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   edges_ = uploadBuffer(context, edges.edges.data(), edges.edges.size() * sizeof(glm::uvec2),
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   triangleEdges_ =
       uploadBuffer(context, edges.triangleEdges.data(),
                    edges.triangleEdges.size() * sizeof(std::uint32_t),
                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+}
+
+void GpuScene::appendConformalVertices(std::vector<Vertex>& vertices,
+                                       const std::vector<glm::uvec2>& edges) {
+  const auto roundUp = [](std::size_t n) { return (n + 15) / 16 * 16; };
+  // Four a triangle split along the cut (classify_bent_triangles.comp), for at most 16384 such
+  // triangles; those beyond fall back to the geometry shader's drop.
+  const std::size_t cutCapacity = 4 * std::clamp<std::size_t>(triangleCount_, 1, 16384);
+  const std::size_t midpointBase = roundUp(vertices.size());
+  const std::size_t cutBase = midpointBase + roundUp(std::max<std::size_t>(edges.size(), 1));
+  if (cutBase + cutCapacity > std::numeric_limits<std::int32_t>::max())
+    throw Error(ErrorCode::InvalidInput, "scene is too large for 32-bit vertex indices with its "
+                                         "edge midpoints (" + std::to_string(edges.size()) +
+                                             " edges)");
+  vertices.resize(cutBase + cutCapacity, Vertex{});
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const Vertex& a = vertices[edges[e].x];
+    const Vertex& b = vertices[edges[e].y];
+    vertices[midpointBase + e] = {0.5f * (a.position + b.position), 0.5f * (a.normal + b.normal),
+                                  0.5f * (a.uv + b.uv)};
+  }
+  midpointBase_ = static_cast<std::uint32_t>(midpointBase);
+  cutVertexBase_ = static_cast<std::uint32_t>(cutBase);
+  cutVertexCapacity_ = static_cast<std::uint32_t>(cutCapacity);
 }
 
 }  // namespace confvis::vulkan

@@ -1,7 +1,11 @@
 #pragma once
 // A Scene on the device: one interleaved vertex buffer and one index buffer for all meshes (also
 // read as storage buffers by the conformal pre-pass), base-colour textures as float images, one
-// descriptor set per texture (plus a white one).
+// descriptor set per texture (plus a white one). The vertex buffer holds more than the scene's
+// vertices: conformal draws split triangles at their edges' midpoints and along the source's cut
+// (classify_bent_triangles.comp), and drawing those pieces from the same buffer by index, with
+// fixed-function vertex fetch and the vertex cache, costs a fraction of a vertex shader that
+// assembles them (lavapipe: ~0.015 s a 20k-triangle frame under a baked map).
 #include <cstdint>
 #include <vector>
 
@@ -37,10 +41,24 @@ class GpuScene {
   const Bounds& bounds() const { return bounds_; }
   std::size_t triangleCount() const { return triangleCount_; }
   std::size_t vertexCount() const { return vertexCount_; }
+  // The vertex buffer's layout: the scene's vertices; from midpointBase() on, edge e's midpoint
+  // at midpointBase() + e (position, normal and uv averaged; the pre-pass measures its warp);
+  // from cutVertexBase() on, cutVertexCapacity() slots the pre-pass fills with points on the
+  // source's cut. The bases are multiples of 16, so that per-vertex arrays of vec4 split at them
+  // satisfy every device's storage-buffer offset alignment (at most 256 bytes).
+  std::uint32_t midpointBase() const { return midpointBase_; }
+  std::uint32_t cutVertexBase() const { return cutVertexBase_; }
+  std::uint32_t cutVertexCapacity() const { return cutVertexCapacity_; }
+  std::size_t extendedVertexCount() const {
+    return std::size_t{cutVertexBase_} + cutVertexCapacity_;
+  }
   // Distinct for every GpuScene ever built, so that derived buffers know when to rebuild.
   std::uint64_t id() const { return id_; }
 
  private:
+  // Appends the edge midpoints and the cut-vertex slots to `vertices` (the layout above).
+  void appendConformalVertices(std::vector<Vertex>& vertices, const std::vector<glm::uvec2>& edges);
+
   std::vector<Draw> draws_;
   Buffer vertices_, indices_, edges_, triangleEdges_;
   std::vector<Image> textures_;  // textures_.back() is the white 1x1 texture
@@ -50,6 +68,7 @@ class GpuScene {
   std::size_t triangleCount_ = 0;
   std::size_t vertexCount_ = 0;
   std::size_t edgeCount_ = 0;
+  std::uint32_t midpointBase_ = 0, cutVertexBase_ = 0, cutVertexCapacity_ = 0;
   std::uint64_t id_ = 0;
 };
 

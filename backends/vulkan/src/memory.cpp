@@ -125,7 +125,13 @@ void uploadFloatImage(VulkanContext& context, const Image& image, const float* r
 
 void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
                            VkDescriptorType type, VkBuffer buffer) {
-  const VkDescriptorBufferInfo info{buffer, 0, VK_WHOLE_SIZE};
+  writeBufferDescriptor(device, set, binding, type, buffer, 0, VK_WHOLE_SIZE);
+}
+
+void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                           VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset,
+                           VkDeviceSize range) {
+  const VkDescriptorBufferInfo info{buffer, offset, range};
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = set;
   write.dstBinding = binding;

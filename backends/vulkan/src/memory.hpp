@@ -73,6 +73,10 @@ void uploadFloatImage(VulkanContext& context, const Image& image, const float* r
 // (shader-read-only layout).
 void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
                            VkDescriptorType type, VkBuffer buffer);
+// The same for `range` bytes from `offset` (a multiple of the device's buffer offset alignment).
+void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                           VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset,
+                           VkDeviceSize range);
 void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
                           VkSampler sampler, VkImageView view);
 

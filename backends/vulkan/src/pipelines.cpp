@@ -15,7 +15,6 @@
 #include "confvis_spirv/scene_vert.h"
 #include "confvis_spirv/warp_geom.h"
 #include "confvis_spirv/warp_tesc.h"
-#include "confvis_spirv/warp_pieces_vert.h"
 #include "confvis_spirv/warp_projected_tese.h"
 #include "confvis_spirv/warp_tese.h"
 #include "confvis_spirv/warp_simple_vert.h"
@@ -81,7 +80,6 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   warpTesc_ = shaderModule(device, kSpirv_warp_tesc);
   warpTese_ = shaderModule(device, kSpirv_warp_tese);
   warpProjectedTese_ = shaderModule(device, kSpirv_warp_projected_tese);
-  warpPiecesVert_ = shaderModule(device, kSpirv_warp_pieces_vert);
   warpGeom_ = shaderModule(device, kSpirv_warp_geom);
 
   frameSetLayout_ = setLayout(
@@ -94,10 +92,7 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
                // (confvis_pulled_vertex.glsl).
                {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
                {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-               {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-               {6, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-               {7, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
-               {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
+               {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
   warpSetLayout_ =
       setLayout(device, {warpLayoutBinding(kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT)});
   materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
@@ -118,7 +113,6 @@ const Pipelines::Pass& Pipelines::pass(std::uint32_t viewCount) {
   pass.conformalFlat = createPipeline(pass.renderPass.get(), Kind::ConformalFlat);
   pass.conformalTessellated = createPipeline(pass.renderPass.get(), Kind::ConformalTessellated);
   pass.conformalDropping = createPipeline(pass.renderPass.get(), Kind::ConformalDropping);
-  pass.conformalPieces = createPipeline(pass.renderPass.get(), Kind::ConformalPieces);
   return passes_.emplace(viewCount, std::move(pass)).first->second;
 }
 
@@ -194,9 +188,6 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
       break;
     case Kind::ConformalFlat:
       stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpSimpleVert_)};
-      break;
-    case Kind::ConformalPieces:
-      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpPiecesVert_)};
       break;
     case Kind::ConformalTessellated:
       stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),

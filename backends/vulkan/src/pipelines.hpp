@@ -37,11 +37,16 @@ struct PushConstants {
   std::uint32_t viewBase;
   std::uint32_t hasNormals;
   std::int32_t vertexOffset;   // tessellated draws: the mesh's (warp.vert reads the indices)
-  std::uint32_t midpointBase;  // conformal draws: the scene's vertex count (edge midpoints after)
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 22;
+inline constexpr std::uint32_t kPrepassBindings = 23;
+// Those bound to parts of the scene's vertex buffer and of the warps (GpuScene's layout).
+inline constexpr std::uint32_t kPrepassVerticesBinding = 0;
+inline constexpr std::uint32_t kPrepassWarpedBinding = 2;
+inline constexpr std::uint32_t kPrepassEdgeLevelsBinding = 8;
+inline constexpr std::uint32_t kPrepassCutAttributesBinding = 21;
+inline constexpr std::uint32_t kPrepassCutWarpsBinding = 22;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -52,9 +57,10 @@ struct PrepassConstants {
   float maxErrorAngle;
   float maxSegmentAngle;
   float minGap;
-  std::uint32_t midpointBase;  // the scene's vertex count
+  std::uint32_t midpointBase;   // GpuScene::midpointBase()
   float maxGap;
   std::uint32_t splitAlongCut;  // 0 or 1
+  std::uint32_t cutVertexBase;  // GpuScene::cutVertexBase()
 };
 
 // Interleaved vertex as uploaded by GpuScene.
@@ -93,30 +99,29 @@ class Pipelines {
   VkPipeline classifyBentTriangles() const { return classifyBentTriangles_.get(); }
 
   // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
-  // built on first use. Conformal mode draws with three, one per list of the pre-pass:
-  // conformalFlat for the triangles it found straight enough, conformalTessellated
-  // (tessellation) for the bent ones and conformalDropping (tessellation + the geometry shader
-  // that drops pieces) for those on the cut, at the source's rim or strongly distorted, and
-  // conformalPieces for the flat pieces of the triangles it split at their edge midpoints.
+  // built on first use. Conformal mode draws with three, for the pre-pass's lists:
+  // conformalFlat for the triangles it found straight enough and the flat pieces of those it
+  // split, conformalTessellated (tessellation) for the bent ones and conformalDropping
+  // (tessellation + the geometry shader that drops pieces) for those on the cut, at the source's
+  // rim or strongly distorted.
   struct Pass {
     UniqueRenderPass renderPass;
     UniquePipeline plain;
     UniquePipeline conformalFlat;
     UniquePipeline conformalTessellated;
     UniquePipeline conformalDropping;
-    UniquePipeline conformalPieces;
   };
   const Pass& pass(std::uint32_t viewCount);
 
  private:
-  enum class Kind { Plain, ConformalFlat, ConformalTessellated, ConformalDropping, ConformalPieces };
+  enum class Kind { Plain, ConformalFlat, ConformalTessellated, ConformalDropping };
   UniqueRenderPass createRenderPass(std::uint32_t viewCount) const;
   UniquePipeline createPipeline(VkRenderPass renderPass, Kind kind) const;
   void createComputePipelines();  // pipelines_compute.cpp
 
   VulkanContext& context_;
   UniqueShaderModule sceneVert_, sceneFrag_, warpSimpleVert_, warpVert_, warpTesc_, warpTese_,
-      warpProjectedTese_, warpGeom_, warpPiecesVert_;
+      warpProjectedTese_, warpGeom_;
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
