@@ -251,7 +251,7 @@ void main() {
   vec3 r[3];
   vec4 w[3];
   loadTriangle(base, i, r, w);
-  bool drops = confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.minGap);
+  bool drops = dropsTriangle(r, w, prepass.minGap);
   vec4 levels[3], rawLevels[3];  // raw: w < 0 where the edge may lose pieces
   bool bent = false, mayDrop = drops, split[3];
   uint edge[3];
@@ -267,14 +267,21 @@ void main() {
     inner = max(inner, levels[k].w);
     wm[k] = levels[k].xyz;
   }
-  mayDrop = mayDrop || (bent && distortedPatch(r, w, wm));
-  if (mayDrop && splitAlongCut(i, w, rawLevels, edge)) return;
+  // The tests below in loops entered once or not at all, not ifs: lavapipe runs both sides of an
+  // if for all SIMD lanes but leaves a loop that no lane runs.
+  for (uint once = 0u; once < (bent && !mayDrop ? 1u : 0u); ++once)
+    mayDrop = distortedPatch(r, w, wm);
+  bool splitAtCut = false;
+  for (uint once = 0u; once < (mayDrop ? 1u : 0u); ++once)
+    splitAtCut = splitAlongCut(i, w, rawLevels, edge);
+  if (splitAtCut) return;
   // A patch of one segment an edge tessellates into itself alone: warp.geom's test on it, with
   // every view's gap (the corners' warps are the pre-pass's in every way of drawing), decided
   // here where the views agree. Kept ones are drawn flat, as a piece; lavapipe's geometry stage
   // costs some 7 us a patch and wall, most of a 1M-triangle frame's cost at the cut.
-  bool decided = mayDrop && inner <= 1.0 &&
-                 drops == confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], prepass.maxGap);
+  bool decided = false;
+  for (uint once = 0u; once < (mayDrop && inner <= 1.0 ? 1u : 0u); ++once)
+    decided = drops == dropsTriangle(r, w, prepass.maxGap);
   if (decided) {
     if (!drops) appendSplit(i, split, edge);
   } else if (!mayDrop && inner <= 2.0) {

@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Conformal pre-pass, once per frame and mesh, first pass over every triangle: the cheap test,
-// from its edges' flags alone (confvis_prepass_edges.glsl). Triangles entirely outside the
+// from its edges' flags (confvis_prepass_edges.glsl) and, where they do not tell, chords. Triangles entirely outside the
 // source field are dropped; those the warp leaves straight enough to draw flat between their
 // warped corners (every edge at one segment) and too small after the warp for
 // confvisDropTriangle to drop (no two corners further apart than minGap: the common case) are
@@ -23,6 +23,16 @@ void classify(uint t) {
   bool unseen = (flags & kEdgeUnseen) != 0u;  // every corner outside the source field
   bool straight = !unseen && (flags & kEdgeStraight) != 0u;
   bool drawnFlat = straight && (flags & kEdgeSmall) != 0u;
+  // Straight but too large after the warp for the flags: kept flat where the chord test tells
+  // (most of a coarse scene's triangles; a loop entered only where a SIMD lane needs it, as
+  // lavapipe runs both sides of an if), the rest to the exact test.
+  for (uint once = 0u; once < (straight && !drawnFlat ? 1u : 0u); ++once) {
+    uint corner[3];
+    vec3 r[3];
+    vec4 w[3];
+    loadTriangle(base, corner, r, w);
+    drawnFlat = surelyKept(r, w, prepass.minGap);
+  }
   uint none[3] = uint[3](0u, 0u, 0u);  // degenerate: no fragments
   writeFlat(t, drawnFlat ? i : none);
   if (drawnFlat) atomicAdd(groupFlat, 1u);

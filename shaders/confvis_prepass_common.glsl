@@ -5,6 +5,7 @@
 #define CONFVIS_PREPASS_COMMON_GLSL
 
 #include "confvis_frame.glsl"
+#include "confvis_warp.glsl"
 
 struct DrawCommand {  // VkDrawIndexedIndirectCommand
   uint indexCount;
@@ -182,6 +183,35 @@ void storeCutVertex(uint slot, CutVertex c) {
   cutAttributes[at + 5u] = c.normal.z;
   cutAttributes[at + 6u] = c.uv.x; cutAttributes[at + 7u] = c.uv.y;
   cutWarps[slot] = c.warped;
+}
+
+// confvisDropTriangle surely keeps the triangle (virtual points r relative to c, warps w): some
+// corner inside the source field and, unless its warped sides are all within `gap`, warped sides
+// no more than 16 times the virtual ones and neither flipped nor torn (confvisDropTriangle's own
+// expressions). Chords instead of angles, so no atan: a chord is below its angle and, up to 0.4
+// (23 degrees), above it by less than 0.7 %; with a 1 % margin the rules hold for the angles. A
+// triangle it does not accept may still be kept.
+bool surelyKept(vec3 r[3], vec4 w[3], float gap) {
+  float warpedChord = max(directionChord(w[0].xyz, w[1].xyz),
+                          max(directionChord(w[1].xyz, w[2].xyz), directionChord(w[2].xyz, w[0].xyz)));
+  float virtualChord = max(directionChord(r[0], r[1]),
+                           max(directionChord(r[1], r[2]), directionChord(r[2], r[0])));
+  bool flipped = dot(cross(r[1] - r[0], r[2] - r[0]), r[0] + r[1] + r[2]) *
+                     dot(cross(w[1].xyz - w[0].xyz, w[2].xyz - w[0].xyz), w[0].xyz + w[1].xyz + w[2].xyz) <
+                 0.0;
+  bool torn = 16.0 * confvisRoundness(w[0].xyz, w[1].xyz, w[2].xyz) < confvisRoundness(r[0], r[1], r[2]);
+  bool seen = max(w[0].w, max(w[1].w, w[2].w)) >= 0.5;
+  return seen && (chordBelow(warpedChord, gap) ||
+                  (warpedChord <= 0.4 && 1.01 * warpedChord <= 16.0 * virtualChord && !flipped && !torn));
+}
+
+// confvisDropTriangle, its atans spent only where surelyKept cannot tell (a loop run once or not
+// at all: lavapipe runs both sides of an if for all SIMD lanes, but leaves a loop no lane runs).
+bool dropsTriangle(vec3 r[3], vec4 w[3], float gap) {
+  bool drops = false;
+  for (uint once = 0u; once < (surelyKept(r, w, gap) ? 0u : 1u); ++once)
+    drops = confvisDropTriangle(r[0], r[1], r[2], w[0], w[1], w[2], gap);
+  return drops;
 }
 
 // Virtual point of vertex v in the physical frame, relative to the map's reference point, from

@@ -47,6 +47,30 @@ void writeStraightEdgeLevel(uint e, vec4 midpoint) {
   writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -1.0 : 1.0);
 }
 
+// Edge e's warped halves surely do not span a jump (confvisHalvesSpanJump would find none): its
+// rules on chords instead of angles. A chord c = 2 sin(angle / 2) is below its angle and, up to
+// c = 0.4 (23 degrees), above it by less than 0.7 %: with a 1 % margin every rule holds for the
+// angles too. An edge it does not accept may still be smooth (classify_edges_bent.comp decides).
+bool edgeSurelyWithoutJump(uint e, vec4 midpoint) {
+  uvec2 v = edges[e];
+  vec3 wa = warped[v.x].xyz, wb = warped[v.y].xyz, wm = midpoint.xyz;
+  float halfA = directionChord(wa, wm), halfB = directionChord(wm, wb);
+  float longer = max(halfA, halfB), shorter = min(halfA, halfB);
+  float floor8 = 8.0 * prepass.maxErrorAngle;
+  return longer <= 0.4 && 1.01 * longer <= max(3.0 * shorter, floor8) &&
+         1.01 * (halfA + halfB) <= max(3.0 * directionChord(wa, wb), floor8);
+}
+
+// writeEdgeLevel for an edge edgeSurelyWithoutJump accepts, with its midpoint's bilinear warp
+// (confvisWarpRelativeBilinear true: the full lookup gives the same).
+void writeSmoothEdgeLevel(uint e, vec4 midpoint) {
+  uvec2 v = edges[e];
+  float segments = confvisSmoothEdgeSegments(vertexRelative(v.x), vertexRelative(v.y),
+                                             warped[v.x].xyz, warped[v.y].xyz, midpoint.xyz,
+                                             prepass.maxErrorAngle, prepass.maxSegmentAngle);
+  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -segments : segments);
+}
+
 void writeEdgeLevel(uint e, vec4 midpoint) {
   uvec2 v = edges[e];
   bool acrossCut;

@@ -277,6 +277,11 @@ bool confvisHalvesSpanJump(float halfA, float halfB, float chord, float maxError
          halfA + halfB > max(3.0 * chord, 8.0 * maxErrorAngle);
 }
 
+// confvisMeasureEdgeWithMidpoint's segments for an edge that does not span the cut (wm: its
+// midpoint's warp).
+float confvisSmoothEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, vec3 wm, float maxErrorAngle,
+                                float maxSegmentAngle);
+
 // confvisEdgeSegments with more of what it measured: warpedMidpoint.w is the midpoint's validity,
 // acrossCut whether the edge was taken to span the cut (the two-pixel segments).
 float confvisMeasureEdgeWithMidpoint(vec3 a, vec3 b, vec3 wa, vec3 wb, vec4 warpedMidpoint,
@@ -297,14 +302,16 @@ float confvisMeasureEdgeWithMidpoint(vec3 a, vec3 b, vec3 wa, vec3 wb, vec4 warp
   vec3 wm = warpedMidpoint.xyz;
   float edge = confvisAngle(a, b);
   float halfA = confvisAngle(wa, wm), halfB = confvisAngle(wm, wb);
-  float segments;
   acrossCut = confvisHalvesSpanJump(halfA, halfB, confvisAngle(wa, wb), maxErrorAngle);
-  if (acrossCut) {
-    segments = edge / max(4.0 * maxErrorAngle, confvisTexelAngle(a + b));
-  } else {
-    float deviation = confvisAngle(wm, 0.5 * (wa + wb));
-    segments = max(sqrt(deviation / maxErrorAngle), edge / maxSegmentAngle);
-  }
+  if (acrossCut)
+    return clamp(ceil(edge / max(4.0 * maxErrorAngle, confvisTexelAngle(a + b))), 1.0, 64.0);
+  return confvisSmoothEdgeSegments(a, b, wa, wb, wm, maxErrorAngle, maxSegmentAngle);
+}
+
+float confvisSmoothEdgeSegments(vec3 a, vec3 b, vec3 wa, vec3 wb, vec3 wm, float maxErrorAngle,
+                                float maxSegmentAngle) {
+  float deviation = confvisAngle(wm, 0.5 * (wa + wb));
+  float segments = max(sqrt(deviation / maxErrorAngle), confvisAngle(a, b) / maxSegmentAngle);
   return clamp(ceil(segments), 1.0, 64.0);
 }
 
