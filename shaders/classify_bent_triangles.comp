@@ -98,51 +98,6 @@ bool distortedPatch(vec3 r[3], vec4 w[3], vec3 wm[3]) {
   return any;
 }
 
-// Where the source's cut crosses edge e: the parameter t from its first vertex to its second
-// (canonical order, so both triangles on the edge find the same point), by bisection on which
-// end's warp the bilinear lookup lands nearer. The blend flips sides halfway between the texel
-// centres on either side, where the four-texel lookup flips too.
-float cutCrossing(uint e) {
-  uvec2 v = edges[e];
-  vec3 rx = vertexRelative(v.x), ry = vertexRelative(v.y);
-  vec3 wx = warped[v.x].xyz, wy = warped[v.y].xyz;
-  float lo = 0.0, hi = 1.0;
-  for (int step = 0; step < 20; ++step) {
-    float m = 0.5 * (lo + hi);
-    vec3 relative = mix(rx, ry, m);
-    vec3 g = textureLod(confvisGeomMap, relative, 0.0).xyz * length(relative);
-    bool nearFirst = distance(g, wx) <= distance(g, wy);
-    lo = nearFirst ? m : lo;
-    hi = nearFirst ? hi : m;
-  }
-  return 0.5 * (lo + hi);
-}
-
-// The scene's position, normal and uv at s from vertex va to vb (the warp left to the caller).
-CutVertex vertexBetween(uint va, uint vb, float s) {
-  CutVertex c;
-  c.position = mix(vec3(vertices[8u * va], vertices[8u * va + 1u], vertices[8u * va + 2u]),
-                   vec3(vertices[8u * vb], vertices[8u * vb + 1u], vertices[8u * vb + 2u]), s);
-  c.normal = mix(vec3(vertices[8u * va + 3u], vertices[8u * va + 4u], vertices[8u * va + 5u]),
-                 vec3(vertices[8u * vb + 3u], vertices[8u * vb + 4u], vertices[8u * vb + 5u]), s);
-  c.uv = mix(vec2(vertices[8u * va + 6u], vertices[8u * va + 7u]),
-             vec2(vertices[8u * vb + 6u], vertices[8u * vb + 7u]), s);
-  return c;
-}
-
-// Writes cut vertex `slot`: the point at t along edge e with the limit of the warp on the side
-// of the edge's vertex `own` (the other end: `other`). False where that limit is not clearly on
-// own's side or lies outside the source field.
-bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
-  uvec2 v = edges[e];
-  CutVertex c = vertexBetween(v.x, v.y, t);
-  vec3 wOwn = warped[own].xyz;
-  c.warped = confvisWarpRelativeToward(mix(vertexRelative(v.x), vertexRelative(v.y), t), wOwn);
-  storeCutVertex(slot, c);
-  return c.warped.w >= 0.5 &&
-         distance(c.warped.xyz, wOwn) < distance(c.warped.xyz, warped[other].xyz);
-}
-
 // A triangle that the cut crosses through two of its edges (corner u on one side, the others on
 // the other) and whose third edge is drawn in at most kMaxUncutSegments segments, split exactly
 // along the cut: the corner's piece and the other side's quad (fanned through the third edge's
@@ -159,9 +114,7 @@ bool splitAlongCut(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
   bool cut[3];
   uint cuts = 0u;
   for (uint k = 0u; k < 3u; ++k) {
-    vec3 wa = w[(k + 1u) % 3u].xyz, wb = w[(k + 2u) % 3u].xyz, wm = rawLevels[k].xyz;
-    cut[k] = confvisHalvesSpanJump(confvisAngle(wa, wm), confvisAngle(wm, wb),
-                                   confvisAngle(wa, wb), prepass.maxErrorAngle);
+    cut[k] = (edgeFlags[edge[k]] & kEdgeAcrossCut) != 0u;
     cuts += cut[k] ? 1u : 0u;
   }
   uint u = !cut[0] ? 0u : !cut[1] ? 1u : 2u;
@@ -200,39 +153,37 @@ void writeEdgeVertex(uint slot, uint va, uint vb, float s) {
 }
 
 bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
+  // X where the cut crosses u-a (edge[b], opposite b), Y where it crosses b-u (edge[a]): the
+  // edges' cut vertices (classify_edges_bent.comp).
+  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
+  uint x = edgeCutVertex[edge[b]], y = edgeCutVertex[edge[a]];
+  if (x == ~0u || y == ~0u) return false;
   // The uncut edge (opposite u, from corner a to b) in n segments: its points in between are
   // the pre-pass's midpoint (n = 2) or cut vertices of their own, the other side's quad a fan
   // from X through them.
   uint n = uint(rawLevels[u].w);
   uint between = n > 2u ? n - 1u : 0u;
+  uint slot = 0u;
+  for (uint once = 0u; once < (between > 0u ? 1u : 0u); ++once) {
+    slot = atomicAdd(queueDispatch[kQueueCutVertices].count, between);
+    if (slot + between > cutVertexCapacity()) return false;
+  }
   uint pieces = n + 2u;
   uint at = reservePieces(3u * pieces);
   if (at == ~0u) return false;
-  uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 4u + between);
-  bool ok = slot + 4u + between <= cutVertexCapacity();
-  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
   uint offset = uint(prepass.vertexOffset);
   uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
-  if (ok) {
-    // X where the cut crosses u-a (the edge opposite b), Y where it crosses b-u (opposite a).
-    float tx = cutCrossing(edge[b]), ty = cutCrossing(edge[a]);
-    ok = writeCutVertex(slot, edge[b], tx, vu, va);
-    ok = writeCutVertex(slot + 1u, edge[b], tx, va, vu) && ok;
-    ok = writeCutVertex(slot + 2u, edge[a], ty, vu, vb) && ok;
-    ok = writeCutVertex(slot + 3u, edge[a], ty, vb, vu) && ok;
-    for (uint k = 1u; k <= between; ++k) writeEdgeVertex(slot + 3u + k, va, vb, float(k) / float(n));
-  }
-  if (!ok) {  // the reserved pieces stay degenerate (no fragments); the patch goes on as before
-    for (uint p = 0u; p < pieces; ++p) appendPiece(at + 3u * p, 0u, 0u, 0u);
-    return false;
-  }
-  uint cutIndex = prepass.cutVertexBase + slot - offset;  // the draw adds the offset back
-  uint xu = cutIndex, xa = cutIndex + 1u, yu = cutIndex + 2u, yb = cutIndex + 3u;
+  for (uint k = 1u; k <= between; ++k) writeEdgeVertex(slot + k - 1u, va, vb, float(k) / float(n));
+  // Each edge's first cut vertex continues the side of its first vertex.
+  uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
+  bool uFirstOnX = edges[edge[b]].x == vu, uFirstOnY = edges[edge[a]].x == vu;
+  uint xu = cutBase + x + (uFirstOnX ? 0u : 1u), xa = cutBase + x + (uFirstOnX ? 1u : 0u);
+  uint yu = cutBase + y + (uFirstOnY ? 0u : 1u), yb = cutBase + y + (uFirstOnY ? 1u : 0u);
   appendPiece(at, i[u], xu, yu);
   uint previous = i[a];
   for (uint k = 1u; k < n; ++k) {
     // The midpoint keeps the pre-pass's warp, as tessellation and the flat pieces do.
-    uint next = 2u * k == n ? prepass.midpointBase + edge[u] - offset : cutIndex + 3u + k;
+    uint next = 2u * k == n ? prepass.midpointBase + edge[u] - offset : cutBase + slot + k - 1u;
     appendPiece(at + 3u * k, xa, previous, next);
     previous = next;
   }

@@ -27,14 +27,60 @@ bool edgeSurelyStraight(uint e, vec4 midpoint) {
          chordBelow(directionChord(wm, 0.5 * (wa + wb)), prepass.maxErrorAngle);
 }
 
+// Where the source's cut crosses edge e: the parameter t from its first vertex to its second,
+// by bisection on which end's warp the bilinear lookup lands nearer. The blend flips sides
+// halfway between the texel centres on either side, where the four-texel lookup flips too.
+// 14 steps: 1/16384 of an edge (a few thousandths of a pixel at 480-pixel walls).
+float cutCrossing(uint e) {
+  uvec2 v = edges[e];
+  vec3 rx = vertexRelative(v.x), ry = vertexRelative(v.y);
+  vec3 wx = warped[v.x].xyz, wy = warped[v.y].xyz;
+  float lo = 0.0, hi = 1.0;
+  for (int step = 0; step < 14; ++step) {
+    float m = 0.5 * (lo + hi);
+    vec3 relative = mix(rx, ry, m);
+    vec3 g = textureLod(confvisGeomMap, relative, 0.0).xyz * length(relative);
+    bool nearFirst = distance(g, wx) <= distance(g, wy);
+    lo = nearFirst ? m : lo;
+    hi = nearFirst ? hi : m;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Writes cut vertex `slot`: the point at t along edge e with the limit of the warp on the side
+// of the edge's vertex `own` (the other end: `other`). False where that limit is not clearly on
+// own's side or lies outside the source field.
+bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
+  uvec2 v = edges[e];
+  CutVertex c = vertexBetween(v.x, v.y, t);
+  vec3 wOwn = warped[own].xyz;
+  c.warped = confvisWarpRelativeToward(mix(vertexRelative(v.x), vertexRelative(v.y), t), wOwn);
+  storeCutVertex(slot, c);
+  return c.warped.w >= 0.5 &&
+         distance(c.warped.xyz, wOwn) < distance(c.warped.xyz, warped[other].xyz);
+}
+
+// Edge e's two cut vertices (EdgeCutVertices).
+void writeEdgeCutVertices(uint e) {
+  uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 2u);
+  bool ok = slot + 2u <= cutVertexCapacity();
+  for (uint once = 0u; once < (ok ? 1u : 0u); ++once) {
+    uvec2 v = edges[e];
+    float t = cutCrossing(e);
+    ok = writeCutVertex(slot, e, t, v.x, v.y);
+    ok = writeCutVertex(slot + 1u, e, t, v.y, v.x) && ok;
+  }
+  edgeCutVertex[e] = ok ? slot : ~0u;
+}
+
 // Edge e's level and flags (EdgeFlags), `segments` its level (negative where it may lose pieces).
-void writeEdge(uint e, vec4 midpoint, float segments) {
+void writeEdge(uint e, vec4 midpoint, float segments, bool acrossCut) {
   uvec2 v = edges[e];
   vec4 wa = warped[v.x], wb = warped[v.y];
   edgeLevels[e] = vec4(midpoint.xyz, segments);
   bool small = chordBelow(directionChord(wa.xyz, wb.xyz), prepass.minGap);
   edgeFlags[e] = (abs(segments) == 1.0 ? kEdgeStraight : 0u) | (small ? kEdgeSmall : 0u) |
-                 (max(wa.w, wb.w) < 0.5 ? kEdgeUnseen : 0u);
+                 (max(wa.w, wb.w) < 0.5 ? kEdgeUnseen : 0u) | (acrossCut ? kEdgeAcrossCut : 0u);
 }
 
 // Part of edge e lies outside the source field (its corners' or midpoint's validity below 1).
@@ -44,7 +90,7 @@ bool edgeLeavesField(uint e, vec4 midpoint) {
 
 // writeEdgeLevel for an edge edgeSurelyStraight accepts: one segment.
 void writeStraightEdgeLevel(uint e, vec4 midpoint) {
-  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -1.0 : 1.0);
+  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -1.0 : 1.0, false);
 }
 
 // Edge e's warped halves surely do not span a jump (confvisHalvesSpanJump would find none): its
@@ -68,7 +114,7 @@ void writeSmoothEdgeLevel(uint e, vec4 midpoint) {
   float segments = confvisSmoothEdgeSegments(vertexRelative(v.x), vertexRelative(v.y),
                                              warped[v.x].xyz, warped[v.y].xyz, midpoint.xyz,
                                              prepass.maxErrorAngle, prepass.maxSegmentAngle);
-  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -segments : segments);
+  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -segments : segments, false);
 }
 
 void writeEdgeLevel(uint e, vec4 midpoint) {
@@ -78,7 +124,10 @@ void writeEdgeLevel(uint e, vec4 midpoint) {
       vertexRelative(v.x), vertexRelative(v.y), warped[v.x].xyz, warped[v.y].xyz, midpoint,
       prepass.maxErrorAngle, prepass.maxSegmentAngle, acrossCut);
   bool mayDrop = acrossCut || edgeLeavesField(e, midpoint);
-  writeEdge(e, midpoint, mayDrop ? -segments : segments);
+  writeEdge(e, midpoint, mayDrop ? -segments : segments, acrossCut);
+  // A loop entered once or not at all (lavapipe runs both sides of an if for all SIMD lanes).
+  for (uint once = 0u; once < (acrossCut && prepass.splitAlongCut != 0u ? 1u : 0u); ++once)
+    writeEdgeCutVertices(e);
 }
 
 #endif

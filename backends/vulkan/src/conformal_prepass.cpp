@@ -75,6 +75,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
   edgeFlags_ = uintList(scene.edgeCount());
+  edgeCutVertices_ = uintList(scene.edgeCount());
   relative_ = Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(glm::vec4),
                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 
@@ -105,7 +106,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
       queuedEdges_.get(),   flatCounts_.get(),           edgeFlags_.get(),
       straightDispatch_.get(), straightTriangles_.get(), relative_.get(),
-      VK_NULL_HANDLE,       VK_NULL_HANDLE};
+      VK_NULL_HANDLE,       VK_NULL_HANDLE,              edgeCutVertices_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
     if (buffers[i] != VK_NULL_HANDLE)
       writeBufferDescriptor(device, set_, i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);

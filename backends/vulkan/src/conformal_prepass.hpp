@@ -91,6 +91,7 @@ class ConformalPrepass {
   Buffer queueDispatch_, queuedVertices_, queuedEdges_;
   Buffer flatCounts_;  // uint per mesh, host-visible
   Buffer edgeFlags_;   // uint per scene edge
+  Buffer edgeCutVertices_;  // uint per scene edge: its cut vertices' first slot
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

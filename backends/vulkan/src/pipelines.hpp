@@ -40,7 +40,7 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 23;
+inline constexpr std::uint32_t kPrepassBindings = 24;
 // Those bound to parts of the scene's vertex buffer and of the warps (GpuScene's layout).
 inline constexpr std::uint32_t kPrepassVerticesBinding = 0;
 inline constexpr std::uint32_t kPrepassWarpedBinding = 2;
