@@ -236,6 +236,38 @@ CutVertex vertexBetween(uint va, uint vb, float s) {
   return c;
 }
 
+// The frame's walls with the bend error each tolerates (backends/vulkan/src/frame_plan.cpp,
+// errorWall): lit rectangle relative to c, and lowerLeft.w = errorPixels x pixel pitch / plane
+// distance. Zero entries (normal 0) pad the buffer.
+struct ErrorWall {
+  vec4 lowerLeft;
+  vec4 right;   // unit; w: width, metres
+  vec4 up;      // unit; w: height, metres
+  vec4 normal;  // unit, towards c; w: the plane's distance from c
+};
+layout(set = 2, binding = 24, std430) readonly buffer ErrorWalls { ErrorWall errorWalls[]; };
+
+// The bend error bound (radians seen from c) in physical direction d from c: errorPixels of the
+// pixels of the wall that shows d (the nearest wall whose lit rectangle the ray meets), which
+// subtend pitch cos^2 / D there; prepass.maxErrorAngle (the smallest pixel anywhere) where no
+// wall shows d. Up to three times the strictest bound at a CAVE wall's centre: fewer bent edges
+// split where the drawn error stays within the option's pixels.
+float errorAngleToward(vec3 d) {
+  d = normalize(d);
+  float nearest = 1e30, bound = prepass.maxErrorAngle;
+  for (uint k = 0u; k < uint(errorWalls.length()); ++k) {
+    ErrorWall wall = errorWalls[k];
+    float cosine = -dot(d, wall.normal.xyz);
+    float along = cosine > 1e-6 ? wall.normal.w / cosine : 1e30;
+    vec3 onWall = along * d - wall.lowerLeft.xyz;
+    float s = dot(onWall, wall.right.xyz), t = dot(onWall, wall.up.xyz);
+    bool shows = along < nearest && s >= 0.0 && s <= wall.right.w && t >= 0.0 && t <= wall.up.w;
+    nearest = shows ? along : nearest;
+    bound = shows ? max(prepass.maxErrorAngle, wall.lowerLeft.w * cosine * cosine) : bound;
+  }
+  return bound;
+}
+
 // Virtual point of vertex v in the physical frame, relative to the map's reference point, from
 // the scene's vertices (warp_vertices.comp; the others read vertexRelative).
 vec3 transformVertex(uint v) {

@@ -113,16 +113,22 @@ void writeSmoothEdgeLevel(uint e, vec4 midpoint) {
   uvec2 v = edges[e];
   float segments = confvisSmoothEdgeSegments(vertexRelative(v.x), vertexRelative(v.y),
                                              warped[v.x].xyz, warped[v.y].xyz, midpoint.xyz,
-                                             prepass.maxErrorAngle, prepass.maxSegmentAngle);
+                                             errorAngleToward(midpoint.xyz),
+                                             prepass.maxSegmentAngle);
   writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -segments : segments, false);
 }
 
 void writeEdgeLevel(uint e, vec4 midpoint) {
   uvec2 v = edges[e];
   bool acrossCut;
+  // The cut and its segments by the strictest bound, a smooth bend by the local one.
   float segments = confvisMeasureEdgeWithMidpoint(
       vertexRelative(v.x), vertexRelative(v.y), warped[v.x].xyz, warped[v.y].xyz, midpoint,
       prepass.maxErrorAngle, prepass.maxSegmentAngle, acrossCut);
+  if (!acrossCut)
+    segments = confvisSmoothEdgeSegments(vertexRelative(v.x), vertexRelative(v.y),
+                                         warped[v.x].xyz, warped[v.y].xyz, midpoint.xyz,
+                                         errorAngleToward(midpoint.xyz), prepass.maxSegmentAngle);
   bool mayDrop = acrossCut || edgeLeavesField(e, midpoint);
   writeEdge(e, midpoint, mayDrop ? -segments : segments, acrossCut);
   // A loop entered once or not at all (lavapipe runs both sides of an if for all SIMD lanes).

@@ -7,7 +7,9 @@
 // along T_ray of each pixel's direction), and under the config's real baked map against the
 // Embree backend's render of the centre eye (the backward path of design note §5).
 // Times are medians of wall-clock and of process CPU time (lavapipe renders on the CPU in this
-// process, so CPU time is the steadier measure on a shared machine).
+// process, so CPU time is the steadier measure on a shared machine). The timing table renders
+// plain, conformal and reused-pre-pass frames in turn, round after round, and its ratios are
+// medians of each round's ratio, so that a shared machine's drift cancels.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -46,8 +48,17 @@ double median(std::vector<double> v) {
 
 struct Timing {
   double seconds = 0, cpu = 0;  // medians per frame
+  std::vector<double> wall, cpuFrames;  // every timed frame, in order
   RenderResult last;
 };
+
+// Median over the rounds of a's frame time over b's (timeInterleaved: frame i of each was timed
+// in the same round), so that the machine's drift between rounds cancels.
+double pairedRatio(const std::vector<double>& a, const std::vector<double>& b) {
+  std::vector<double> ratios;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) ratios.push_back(a[i] / b[i]);
+  return ratios.empty() ? 0.0 : median(ratios);
+}
 
 Timing timeFrames(RenderBackend& backend, const DisplayConfig& config, const RetargetMap* map,
                   const RenderSettings& settings, int repeats) {
@@ -95,6 +106,8 @@ std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const Dis
   for (std::size_t r = 0; r < runs.size(); ++r) {
     timings[r].seconds = median(wall[r]);
     timings[r].cpu = median(cpu[r]);
+    timings[r].wall = wall[r];
+    timings[r].cpuFrames = cpu[r];
   }
   return timings;
 }
@@ -358,12 +371,12 @@ int main(int argc, char** argv) {
         device = plain.last.stats.value("device", "?");
         std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f %9.4f %9zu %8zu %14.2f\n",
                     name.c_str(), scene.triangleCount(), mapName, plain.seconds,
-                    conformal.seconds, conformal.seconds / plain.seconds, plain.cpu,
-                    conformal.cpu, conformal.cpu / plain.cpu,
+                    conformal.seconds, pairedRatio(conformal.wall, plain.wall), plain.cpu,
+                    conformal.cpu, pairedRatio(conformal.cpuFrames, plain.cpuFrames),
                     conformal.last.stats.value("prepass_seconds", 0.0),
                     conformal.last.stats.value("triangles_tessellated", std::size_t{0}),
                     conformal.last.stats.value("triangles_through_geometry_shader", std::size_t{0}),
-                    reused.seconds / plain.seconds);
+                    pairedRatio(reused.wall, plain.wall));
         std::fflush(stdout);
       }
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 #include <vector>
 
 #include "vk_check.hpp"
@@ -136,6 +137,16 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                               VkDescriptorSet frameSet, VkDescriptorSet warpSet,
                               const PrepassThresholds& thresholds) {
   prepare(scene);
+  // The walls' error bounds (a wall, at least, for the binding; none says: the strictest bound).
+  const std::size_t wallBytes =
+      std::max<std::size_t>(thresholds.errorWalls.size(), 1) * sizeof(ErrorWall);
+  if (errorWalls_.size() < wallBytes)
+    errorWalls_ = Buffer(context_, wallBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+  writeBufferDescriptor(context_.device(), set_, kPrepassErrorWallsBinding,
+                        VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, errorWalls_.get());
+  std::memset(errorWalls_.mapped(), 0, errorWalls_.size());  // zero walls are never hit
+  std::memcpy(errorWalls_.mapped(), thresholds.errorWalls.data(),
+              thresholds.errorWalls.size() * sizeof(ErrorWall));
 
   // Empty lists (the flat list spans the mesh's range: writeFlat), one instance, each mesh's own
   // index range and vertex offset.

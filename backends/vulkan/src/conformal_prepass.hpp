@@ -38,6 +38,9 @@ struct PrepassThresholds {
   float minGap;           // radians: the smallest over the frame's views
   float maxGap;           // radians: the largest (the pre-pass decides a drop only where both agree)
   bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
+  // The walls' local bend error bounds (FramePlan::errorWalls): segments of bent edges keep to
+  // errorPixels of the pixels where they are shown; maxErrorAngle is the smallest anywhere.
+  std::vector<ErrorWall> errorWalls;
   bool operator==(const PrepassThresholds&) const = default;
 };
 
@@ -93,6 +96,7 @@ class ConformalPrepass {
   Buffer edgeFlags_;   // uint per scene edge
   Buffer edgeCutVertices_;  // uint per scene edge: its cut vertices' first slot
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
+  Buffer errorWalls_;  // ErrorWall per wall, host-visible
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

@@ -64,6 +64,30 @@ double smallestPixelAngle(const Wall& wall, std::uint32_t w, std::uint32_t h,
   return std::max(pitch * perpendicular / (farthest * farthest), 1e-9);
 }
 
+// The wall's lit rectangle relative to c with its local bend error bound: a bend of e radians
+// seen from c, in direction d at obliquity cos to the wall (distance D of its plane), moves the
+// drawn point by about e D / cos^2 on the wall, so errorPixels pixels of pitch p tolerate
+// e = errorPixels p / D cos^2 (the smallest pixel angle alone is up to three times stricter at a
+// CAVE wall's centre than at its corners).
+ErrorWall errorWall(const Wall& wall, std::uint32_t w, std::uint32_t h, const glm::dvec3& c,
+                    double errorPixels) {
+  const Wall lit = wall.litRectangle();
+  const double pitch = std::min(lit.widthMetres() / w, lit.heightMetres() / h);
+  glm::dvec3 normal = lit.normal();
+  double distance = glm::dot(normal, c - lit.lowerLeft);
+  if (distance < 0.0) {
+    normal = -normal;
+    distance = -distance;
+  }
+  ErrorWall e;
+  e.lowerLeft = glm::vec4(glm::vec3(lit.lowerLeft - c),
+                          static_cast<float>(errorPixels * pitch / std::max(distance, 1e-9)));
+  e.right = glm::vec4(glm::vec3(lit.right()), static_cast<float>(lit.widthMetres()));
+  e.up = glm::vec4(glm::vec3(lit.up()), static_cast<float>(lit.heightMetres()));
+  e.normal = glm::vec4(glm::vec3(normal), static_cast<float>(distance));
+  return e;
+}
+
 }  // namespace
 
 glm::dvec3 virtualEyePosition(const glm::dvec3& eye, const DisplayConfig& config,
@@ -130,6 +154,8 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
     plan.heights.push_back(h);
     const double pixelAngle = smallestPixelAngle(*wall, w, h, warpCentre);
     plan.pixelAngles.push_back(pixelAngle);
+    if (conformal)
+      plan.errorWalls.push_back(errorWall(*wall, w, h, warpCentre, tessellation.errorPixels));
     const glm::vec4 params(static_cast<float>(tessellation.errorPixels * pixelAngle),
                            static_cast<float>(glm::radians(tessellation.maxSegmentDegrees)),
                            static_cast<float>(4.0 * pixelAngle), tessellation.enabled ? 1.0f : 0.0f);

@@ -25,6 +25,7 @@ struct FramePlan {
   std::vector<double> pixelAngles;         // per wall: smallest pixel seen from c, radians
   FrameUniforms frame{};
   std::vector<ViewData> views;             // index wall * eyes.size() + eye
+  std::vector<ErrorWall> errorWalls;       // conformal: per wall, its local bend error bound
   double near = 0.01, far = 100.0;
   bool splitAlongCut = true;  // TessellationOptions::splitAlongCut
   bool reusePrepass = true;   // TessellationOptions::reusePrepass

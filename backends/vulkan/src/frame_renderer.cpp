@@ -234,11 +234,12 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
   uploadFrame(plan);
   if (conformal) {
     // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
-    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, plan.splitAlongCut};
+    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, plan.splitAlongCut, {}};
     for (const ViewData& view : plan.views) {
       if (view.params.w != 0.0f) {  // tessellation on
         thresholds.maxErrorAngle = std::min(thresholds.maxErrorAngle, view.params.x);
         thresholds.maxSegmentAngle = view.params.y;
+        thresholds.errorWalls = plan.errorWalls;
       }
       thresholds.minGap = std::min(thresholds.minGap, view.params.z);
       thresholds.maxGap = std::max(thresholds.maxGap, view.params.z);

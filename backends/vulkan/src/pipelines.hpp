@@ -40,13 +40,14 @@ struct PushConstants {
 };
 
 // Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 24;
+inline constexpr std::uint32_t kPrepassBindings = 25;
 // Those bound to parts of the scene's vertex buffer and of the warps (GpuScene's layout).
 inline constexpr std::uint32_t kPrepassVerticesBinding = 0;
 inline constexpr std::uint32_t kPrepassWarpedBinding = 2;
 inline constexpr std::uint32_t kPrepassEdgeLevelsBinding = 8;
 inline constexpr std::uint32_t kPrepassCutAttributesBinding = 21;
 inline constexpr std::uint32_t kPrepassCutWarpsBinding = 22;
+inline constexpr std::uint32_t kPrepassErrorWallsBinding = 24;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -61,6 +62,16 @@ struct PrepassConstants {
   float maxGap;
   std::uint32_t splitAlongCut;  // 0 or 1
   std::uint32_t cutVertexBase;  // GpuScene::cutVertexBase()
+};
+
+// std430 element `ErrorWall` of confvis_prepass_common.glsl: a wall's lit rectangle relative to
+// the warp centre c and the bend error it tolerates, errorPixels of its pixels.
+struct ErrorWall {
+  glm::vec4 lowerLeft;  // xyz relative to c; w: errorPixels * pixel pitch / distance of the plane
+  glm::vec4 right;      // xyz unit; w: width, metres
+  glm::vec4 up;         // xyz unit; w: height, metres
+  glm::vec4 normal;     // xyz unit, towards c; w: distance of the plane from c
+  bool operator==(const ErrorWall&) const = default;
 };
 
 // Interleaved vertex as uploaded by GpuScene.

@@ -177,8 +177,9 @@ TEST(VulkanConformal, TrianglesBentByTwoSegmentsAreDrawnInFlatPiecesThatMatchThe
   const RenderResult result = vk->render(config, &zoom, settings);
   const auto flat = result.stats.value("triangles_drawn_flat", std::size_t{0});
   const auto tessellated = result.stats.value("triangles_tessellated", std::size_t{0});
-  // Split triangles count each piece (2-4): measured 1524 drawn flat, none tessellated.
-  EXPECT_GT(flat, scene.triangleCount() * 3 / 2) << "pieces of split triangles";
+  // Split triangles count each piece (2-4): measured 1104 drawn flat (1524 when every wall
+  // point had the bound of the walls' smallest pixel), none tessellated.
+  EXPECT_GT(flat, scene.triangleCount() * 5 / 4) << "pieces of split triangles";
   EXPECT_LT(tessellated, scene.triangleCount() / 10);
   EXPECT_EQ(result.stats.value("triangles_through_geometry_shader", std::size_t{1}), 0u);
   for (const WallImage& image : result.images) {
