@@ -129,6 +129,7 @@ layout(push_constant) uniform Prepass {
   float maxGap;       // minGap of the view that tolerates the widest gap (minGap: the strictest)
   uint splitAlongCut; // VulkanOptions::splitAlongCut (classify_bent_triangles.comp)
   uint cutVertexBase; // cut vertex slot s is vertex cutVertexBase + s (GpuScene::cutVertexBase)
+  uint errorWallCount; // ErrorWalls entries in use
 } prepass;
 
 // Writes triangle t (vertex indices i) of the current mesh into its flat list, whose slots are
@@ -238,14 +239,15 @@ CutVertex vertexBetween(uint va, uint vb, float s) {
 
 // The frame's walls with the bend error each tolerates (backends/vulkan/src/frame_plan.cpp,
 // errorWall): lit rectangle relative to c, and lowerLeft.w = errorPixels x pixel pitch / plane
-// distance. Zero entries (normal 0) pad the buffer.
+// distance; prepass.errorWallCount of them (a uniform buffer: lavapipe loads an element once for
+// all SIMD lanes where the index is uniform).
 struct ErrorWall {
   vec4 lowerLeft;
   vec4 right;   // unit; w: width, metres
   vec4 up;      // unit; w: height, metres
   vec4 normal;  // unit, towards c; w: the plane's distance from c
 };
-layout(set = 2, binding = 24, std430) readonly buffer ErrorWalls { ErrorWall errorWalls[]; };
+layout(set = 2, binding = 24, std140) uniform ErrorWalls { ErrorWall errorWalls[64]; };
 
 // The bend error bound (radians seen from c) in physical direction d from c: errorPixels of the
 // pixels of the wall that shows d (the nearest wall whose lit rectangle the ray meets), which
@@ -255,7 +257,7 @@ layout(set = 2, binding = 24, std430) readonly buffer ErrorWalls { ErrorWall err
 float errorAngleToward(vec3 d) {
   d = normalize(d);
   float nearest = 1e30, bound = prepass.maxErrorAngle;
-  for (uint k = 0u; k < uint(errorWalls.length()); ++k) {
+  for (uint k = 0u; k < prepass.errorWallCount; ++k) {
     ErrorWall wall = errorWalls[k];
     float cosine = -dot(d, wall.normal.xyz);
     float along = cosine > 1e-6 ? wall.normal.w / cosine : 1e30;

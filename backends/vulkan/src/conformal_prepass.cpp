@@ -83,11 +83,14 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   const VkDevice device = context_.device();
   patchLevels_ = Buffer(context_, scene.triangleCount() * 3 * sizeof(glm::vec4),
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kPrepassBindings};
+  const std::array<VkDescriptorPoolSize, 2> sizes = {{
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kPrepassBindings - 1},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+  }};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
-  poolInfo.poolSizeCount = 1;
-  poolInfo.pPoolSizes = &size;
+  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
   VkDescriptorPool pool = VK_NULL_HANDLE;
   check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
   pool_ = UniqueDescriptorPool(device, pool);
@@ -137,16 +140,17 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                               VkDescriptorSet frameSet, VkDescriptorSet warpSet,
                               const PrepassThresholds& thresholds) {
   prepare(scene);
-  // The walls' error bounds (a wall, at least, for the binding; none says: the strictest bound).
-  const std::size_t wallBytes =
-      std::max<std::size_t>(thresholds.errorWalls.size(), 1) * sizeof(ErrorWall);
-  if (errorWalls_.size() < wallBytes)
-    errorWalls_ = Buffer(context_, wallBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+  // The walls' error bounds: a uniform buffer, whose loads with the loop's uniform index
+  // lavapipe makes once for all lanes (as a storage buffer, the bound cost 3 ms of a
+  // 20k-triangle pre-pass). More walls than it holds: the strictest bound everywhere.
+  if (errorWalls_.get() == VK_NULL_HANDLE)
+    errorWalls_ = Buffer(context_, kMaxErrorWalls * sizeof(ErrorWall),
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
   writeBufferDescriptor(context_.device(), set_, kPrepassErrorWallsBinding,
-                        VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, errorWalls_.get());
-  std::memset(errorWalls_.mapped(), 0, errorWalls_.size());  // zero walls are never hit
-  std::memcpy(errorWalls_.mapped(), thresholds.errorWalls.data(),
-              thresholds.errorWalls.size() * sizeof(ErrorWall));
+                        VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, errorWalls_.get());
+  const std::size_t errorWalls =
+      thresholds.errorWalls.size() <= kMaxErrorWalls ? thresholds.errorWalls.size() : 0;
+  std::memcpy(errorWalls_.mapped(), thresholds.errorWalls.data(), errorWalls * sizeof(ErrorWall));
 
   // Empty lists (the flat list spans the mesh's range: writeFlat), one instance, each mesh's own
   // index range and vertex offset.
@@ -184,6 +188,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.splitAlongCut = thresholds.splitAlongCut ? 1u : 0u;
   push.midpointBase = scene.midpointBase();
   push.cutVertexBase = scene.cutVertexBase();
+  push.errorWallCount = static_cast<std::uint32_t>(errorWalls);
   constexpr std::uint32_t kGroup = 64;  // local_size_x of the pre-pass shaders
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVertices());
   push.count = static_cast<std::uint32_t>(scene.vertexCount());

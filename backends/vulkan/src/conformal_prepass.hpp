@@ -96,7 +96,7 @@ class ConformalPrepass {
   Buffer edgeFlags_;   // uint per scene edge
   Buffer edgeCutVertices_;  // uint per scene edge: its cut vertices' first slot
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
-  Buffer errorWalls_;  // ErrorWall per wall, host-visible
+  Buffer errorWalls_;  // uniform: ErrorWall[kMaxErrorWalls], host-visible
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
 };

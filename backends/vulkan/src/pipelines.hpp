@@ -47,7 +47,10 @@ inline constexpr std::uint32_t kPrepassWarpedBinding = 2;
 inline constexpr std::uint32_t kPrepassEdgeLevelsBinding = 8;
 inline constexpr std::uint32_t kPrepassCutAttributesBinding = 21;
 inline constexpr std::uint32_t kPrepassCutWarpsBinding = 22;
-inline constexpr std::uint32_t kPrepassErrorWallsBinding = 24;
+inline constexpr std::uint32_t kPrepassErrorWallsBinding = 24;  // a uniform buffer
+// Walls the uniform buffer holds (std140 ErrorWall[64], 4 KB); frames with more use the
+// strictest bound everywhere.
+inline constexpr std::uint32_t kMaxErrorWalls = 64;
 
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
@@ -62,6 +65,7 @@ struct PrepassConstants {
   float maxGap;
   std::uint32_t splitAlongCut;  // 0 or 1
   std::uint32_t cutVertexBase;  // GpuScene::cutVertexBase()
+  std::uint32_t errorWallCount;  // ErrorWall entries in use (at most kMaxErrorWalls)
 };
 
 // std430 element `ErrorWall` of confvis_prepass_common.glsl: a wall's lit rectangle relative to

@@ -38,8 +38,10 @@ void Pipelines::createComputePipelines() {
   const VkDevice device = context_.device();
   std::vector<VkDescriptorSetLayoutBinding> buffers;
   for (std::uint32_t binding = 0; binding < kPrepassBindings; ++binding)
-    buffers.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                       VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+    buffers.push_back({binding,
+                       binding == kPrepassErrorWallsBinding ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                                            : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                       1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
   prepassSetLayout_ = setLayout(device, buffers);
   computeLayout_ = pipelineLayout(
       device, {frameSetLayout_.get(), warpSetLayout_.get(), prepassSetLayout_.get()},
