@@ -4,8 +4,8 @@
 // classify_triangles.comp and classify_straight_triangles.comp fill): sorts the triangles that are not flat as they are into those
 // drawn in flat pieces between their corners and edge midpoints, those that need tessellation
 // only (tessellation pipeline without a geometry shader) and those that may lose pieces to
-// confvisDropTriangle: on or next to the cut, partly outside the source field or strongly
-// distorted (tessellation and the geometry shader that drops pieces, exactly as if it drew
+// confvisDropTriangle: on or next to the cut or partly outside the source field
+// (tessellation and the geometry shader that drops pieces, exactly as if it drew
 // everything; lavapipe runs it in its single-threaded draw stage, so only these pay for it).
 // A pass of its own because lavapipe evaluates both sides of a branch for all SIMD lanes: in one
 // pass every triangle of the scene paid for the tests below. Tessellated triangles copy their
@@ -66,36 +66,6 @@ void appendSplit(uint i[3], bool split[3], uint edge[3]) {
   appendPiece(at, i[u], m[b], m[a]);
   appendPiece(at + 3u, i[a], i[b], m[a]);
   appendPiece(at + 6u, i[a], m[a], m[b]);
-}
-
-// A triangle that the warp stretches more than 4 times, flips or flattens 4 times. Chords
-// instead of angles (the warp keeps distances to c, so they compare alike) and no branches worth
-// skipping: lavapipe runs both sides of a branch for its SIMD lanes (in one pass over every
-// triangle, atan-based angles cost about 0.05 s of pre-pass a frame at 1M triangles).
-bool distorted(vec3 r0, vec3 r1, vec3 r2, vec3 w0, vec3 w1, vec3 w2) {
-  vec3 rab = r1 - r0, rbc = r2 - r1, rca = r0 - r2;
-  vec3 wab = w1 - w0, wbc = w2 - w1, wca = w0 - w2;
-  float virtualSize = max(dot(rab, rab), max(dot(rbc, rbc), dot(rca, rca)));
-  float warpedSize = max(dot(wab, wab), max(dot(wbc, wbc), dot(wca, wca)));
-  bool flipped = dot(cross(rab, -rca), r0 + r1 + r2) * dot(cross(wab, -wca), w0 + w1 + w2) < 0.0;
-  return warpedSize > 16.0 * virtualSize || flipped ||
-         4.0 * confvisRoundness(w0, w1, w2) < confvisRoundness(r0, r1, r2);
-}
-
-// A patch distorted as a whole or in one of the four halves-sized triangles between its corners
-// and edge midpoints (m[k]: midpoint of the edge opposite corner k, wm[k] its warp): next to a
-// singular point or the cut (near the ends of a cut, where the jump is too small for the edge
-// test), where its tessellated pieces may meet confvisDropTriangle's 16-times rules even though
-// the patch's edges do not.
-bool distortedPatch(vec3 r[3], vec4 w[3], vec3 wm[3]) {
-  vec3 m[3] = vec3[3](0.5 * (r[1] + r[2]), 0.5 * (r[2] + r[0]), 0.5 * (r[0] + r[1]));
-  bool any = distorted(r[0], r[1], r[2], w[0].xyz, w[1].xyz, w[2].xyz) ||
-             distorted(m[0], m[1], m[2], wm[0], wm[1], wm[2]);
-  for (int k = 0; k < 3; ++k) {
-    int i = (k + 1) % 3, j = (k + 2) % 3;  // corner k with the midpoints of its two edges
-    any = any || distorted(r[k], m[j], m[i], w[k].xyz, wm[j], wm[i]);
-  }
-  return any;
 }
 
 // A triangle that the cut crosses through two of its edges (corner u on one side, the others on
@@ -204,32 +174,23 @@ void main() {
   loadTriangle(base, i, r, w);
   bool drops = dropsTriangle(r, w, prepass.minGap);
   vec4 levels[3], rawLevels[3];  // raw: w < 0 where the edge may lose pieces
-  bool bent = false, mayDrop = drops, split[3];
+  bool mayDrop = drops, split[3];
   uint edge[3];
-  vec3 wm[3];
   float inner = 1.0;
   for (uint k = 0u; k < 3u; ++k) {
     edge[k] = triangleEdges[base + k];
     rawLevels[k] = levels[k] = edgeLevels[edge[k]];
     mayDrop = mayDrop || levels[k].w < 0.0;
     levels[k].w = abs(levels[k].w);
-    bent = bent || levels[k].w > 1.0;
     split[k] = levels[k].w > 1.0;
     inner = max(inner, levels[k].w);
-    wm[k] = levels[k].xyz;
   }
   // The tests below in loops entered once or not at all, not ifs: lavapipe runs both sides of an
-  // if for all SIMD lanes but leaves a loop that no lane runs.
-  // A distorted patch may hide a piece across the cut only next to it (near the cut's ends the
-  // jump is too small for the edge test); elsewhere the map is continuous, its distortion a
-  // singular point's (a CAVE's corners), and the geometry shader would drop nothing there (at
-  // 1M triangles under a baked cave5 map, 690 such patches took it).
-  bool nearCut = false;
-  for (uint k = 0u; k < 3u; ++k)
-    nearCut = nearCut || relative[uint(prepass.vertexOffset) + i[k]].w > 0.5 ||
-              (edgeFlags[edge[k]] & kEdgeNearCut) != 0u;
-  for (uint once = 0u; once < (bent && !mayDrop && nearCut ? 1u : 0u); ++once)
-    mayDrop = distortedPatch(r, w, wm);
+  // if for all SIMD lanes but leaves a loop that no lane runs. (A patch the warp stretched 4
+  // times or flattened, in itself or its midpoint triangles, went to the geometry shader too
+  // until measured: the same images or better without, at 20k and 300k triangles on cave5,
+  // cave3 and md230x6, and up to 40 % fewer patches through the geometry shader; the edges'
+  // jump test and the flags of edges across the cut find the pieces to drop.)
   bool splitAtCut = false;
   for (uint once = 0u; once < (mayDrop ? 1u : 0u); ++once)
     splitAtCut = splitAlongCut(i, w, rawLevels, edge);

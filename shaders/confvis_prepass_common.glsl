@@ -89,11 +89,8 @@ layout(set = 2, binding = 16, std430) buffer FlatCounts { uint flatCounts[]; };
 // confvisDropTriangle keeps it), kEdgeUnseen where both corners lie outside the source field (a
 // triangle of three such edges shows nothing).
 layout(set = 2, binding = 17, std430) buffer EdgeFlags { uint edgeFlags[]; };
-// kEdgeAcrossCut where the edge spans the source's cut (confvisHalvesSpanJump on its halves),
-// kEdgeNearCut where the first edge pass could not tell that it spans no jump (next to the cut,
-// or bent so much that its halves' rules were unsure).
-const uint kEdgeStraight = 1u, kEdgeSmall = 2u, kEdgeUnseen = 4u, kEdgeAcrossCut = 8u,
-           kEdgeNearCut = 16u;
+// kEdgeAcrossCut where the edge spans the source's cut (confvisHalvesSpanJump on its halves).
+const uint kEdgeStraight = 1u, kEdgeSmall = 2u, kEdgeUnseen = 4u, kEdgeAcrossCut = 8u;
 
 // Per mesh, as the bent list: the straight triangles too large after the warp for
 // classify_triangles.comp to tell whether confvisDropTriangle keeps them, for
@@ -161,8 +158,7 @@ void appendStraight(uint t) {
 }
 
 // Per vertex: its virtual point in the physical frame relative to the map's reference point
-// (xyz; w = 1 next to the cut: the bilinear footprint of its direction spans it), written once by
-// warp_vertices.comp; the later passes read it instead of transforming the
+// (xyz), written once by warp_vertices.comp; the later passes read it instead of transforming the
 // vertex again (each edge and triangle reads two or three).
 layout(set = 2, binding = 20, std430) buffer Relative { vec4 relative[]; };
 

@@ -74,14 +74,13 @@ void writeEdgeCutVertices(uint e) {
 }
 
 // Edge e's level and flags (EdgeFlags), `segments` its level (negative where it may lose pieces).
-void writeEdge(uint e, vec4 midpoint, float segments, bool acrossCut, bool nearCut) {
+void writeEdge(uint e, vec4 midpoint, float segments, bool acrossCut) {
   uvec2 v = edges[e];
   vec4 wa = warped[v.x], wb = warped[v.y];
   edgeLevels[e] = vec4(midpoint.xyz, segments);
   bool small = chordBelow(directionChord(wa.xyz, wb.xyz), prepass.minGap);
   edgeFlags[e] = (abs(segments) == 1.0 ? kEdgeStraight : 0u) | (small ? kEdgeSmall : 0u) |
-                 (max(wa.w, wb.w) < 0.5 ? kEdgeUnseen : 0u) | (acrossCut ? kEdgeAcrossCut : 0u) |
-                 (nearCut ? kEdgeNearCut : 0u);
+                 (max(wa.w, wb.w) < 0.5 ? kEdgeUnseen : 0u) | (acrossCut ? kEdgeAcrossCut : 0u);
 }
 
 // Part of edge e lies outside the source field (its corners' or midpoint's validity below 1).
@@ -91,7 +90,7 @@ bool edgeLeavesField(uint e, vec4 midpoint) {
 
 // writeEdgeLevel for an edge edgeSurelyStraight accepts: one segment.
 void writeStraightEdgeLevel(uint e, vec4 midpoint) {
-  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -1.0 : 1.0, false, false);
+  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -1.0 : 1.0, false);
 }
 
 // Edge e's warped halves surely do not span a jump (confvisHalvesSpanJump would find none): its
@@ -127,7 +126,7 @@ float smoothEdgeSegments(uint e, vec3 wm) {
 
 void writeSmoothEdgeLevel(uint e, vec4 midpoint) {
   float segments = smoothEdgeSegments(e, midpoint.xyz);
-  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -segments : segments, false, false);
+  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -segments : segments, false);
 }
 
 void writeEdgeLevel(uint e, vec4 midpoint) {
@@ -139,7 +138,7 @@ void writeEdgeLevel(uint e, vec4 midpoint) {
       prepass.maxErrorAngle, prepass.maxSegmentAngle, acrossCut);
   if (!acrossCut) segments = smoothEdgeSegments(e, midpoint.xyz);
   bool mayDrop = acrossCut || edgeLeavesField(e, midpoint);
-  writeEdge(e, midpoint, mayDrop ? -segments : segments, acrossCut, true);
+  writeEdge(e, midpoint, mayDrop ? -segments : segments, acrossCut);
   // A loop entered once or not at all (lavapipe runs both sides of an if for all SIMD lanes).
   for (uint once = 0u; once < (acrossCut && prepass.splitAlongCut != 0u ? 1u : 0u); ++once)
     writeEdgeCutVertices(e);

@@ -12,9 +12,9 @@ void main() {
   uint v = gl_GlobalInvocationID.x;
   if (v >= prepass.count) return;
   vec3 r = transformVertex(v);
+  relative[v] = vec4(r, 0.0);
   vec4 w;
   bool plain = confvisWarpRelativeBilinear(r, w);
-  relative[v] = vec4(r, plain ? 0.0 : 1.0);  // w: next to the cut (confvis_prepass_common.glsl)
   warped[v] = w;
   if (!plain) enqueue(kQueueVertices, v);
 }

@@ -229,14 +229,15 @@ Timing timeThreshold(const VulkanOptions& options, double error, const Scene& sc
 // Threshold sweep under the config's real baked map, centre eye at the reference point: frame
 // time relative to plain and the share of pixels off Embree's render (when not skipped).
 // Returns the device's name.
-std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& config, double scale,
+std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& config,
+                          std::size_t triangles, double scale,
                           int bakeResolution, bool skipEmbree, int repeats,
                           const std::filesystem::path& imageDir) {
   BakeDisplayOptions bakeOptions;
   bakeOptions.useCache = false;
   bakeOptions.resolution = bakeResolution;
   const RetargetMap map = bakeDisplay(config, bakeOptions).map;
-  const Scene scene = sphereWithTriangles(20000);
+  const Scene scene = sphereWithTriangles(triangles);
   RenderSettings settings;
   settings.resolutionScale = scale;
   settings.head.position = config.reference;
@@ -253,10 +254,10 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
   backend->setScene(scene);
   const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
   settings.mode = RenderMode::Conformal;
-  std::printf("\nsphere-20k under the baked %s map (%d texels a face), by tessellation "
-              "threshold\n%-10s %9s %7s %9s %7s %12s %8s %12s %8s\n",
-              config.name.c_str(), bakeResolution, "error px", "conf s", "ratio", "conf cpu",
-              "ratio", "off Embree", "gaps", "tessellated", "with GS");
+  std::printf("\nsphere of %zu triangles under the baked %s map (%d texels a face), by "
+              "tessellation threshold\n%-10s %9s %7s %9s %7s %12s %8s %12s %8s\n",
+              scene.triangleCount(), config.name.c_str(), bakeResolution, "error px", "conf s",
+              "ratio", "conf cpu", "ratio", "off Embree", "gaps", "tessellated", "with GS");
   for (double error : sweepThresholds) {
     const Timing t = timeThreshold(options, error, scene, config, map, settings, repeats);
     saveImages(imageDir, error > 0.0 ? "vulkan-" + thresholdName(error) + "px" : "vulkan-untessellated",
@@ -285,6 +286,7 @@ int main(int argc, char** argv) {
   int bakeResolution = 128;
   std::string imageDir;
   std::vector<std::size_t> extraSizes;
+  std::size_t sweepTriangles = 20000;
   std::vector<std::string> mapNames = {"identity", "zoom", "squeeze", "baked"};
   bool skip1m = false, skip20k = false, skipSweep = false, skipZoomSweep = false,
        skipEmbree = false;
@@ -301,6 +303,9 @@ int main(int argc, char** argv) {
   app.add_option("--maps", mapNames, "maps of the timing table (identity, zoom, squeeze, baked)")
       ->delimiter(',')
       ->check(CLI::IsMember({"identity", "zoom", "squeeze", "baked"}));
+  app.add_option("--sweep-triangles", sweepTriangles,
+                 "checker-sphere size of the baked-map sweep (about this many triangles)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--skip-sweep", skipSweep, "leave out the threshold sweeps");
   app.add_flag("--skip-zoom-sweep", skipZoomSweep,
                "leave out the threshold sweeps under the zoom map (keep the baked-map one)");
@@ -406,8 +411,8 @@ int main(int argc, char** argv) {
       }
     }
     if (!skipSweep)
-      device = bakedMapSweep(options, config, scale, bakeResolution, skipEmbree, repeats,
-                             imageDir);
+      device = bakedMapSweep(options, config, sweepTriangles, scale, bakeResolution, skipEmbree,
+                             repeats, imageDir);
     std::printf("\ndevice: %s\n", device.c_str());
   } catch (const Error& e) {
     std::fprintf(stderr, "confvis_bench_vulkan: %s\n", e.what());
