@@ -80,7 +80,16 @@ bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u);
 // The most segments of the uncut edge of a triangle split along the cut (its pieces: two more).
 const uint kMaxUncutSegments = 8u;
 
-bool splitAlongCut(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
+// A triangle that the cut crosses through one edge only (k: the edge opposite corner k), where
+// the cut ends inside it or leaves through corner k: the jump across its other edges is below
+// what the edge test sees (a few pixels, the cut's tip). Split at the crossing X into two fans,
+// one a side, from X (that side's limit of the warp there) over the uncut edge on that side
+// (their points as the neighbours' tessellation places them), drawn flat; unless a piece is one
+// that confvisDropTriangle would drop (a real jump after all). Instead of the geometry shader's
+// drop of the pieces across it: most of the dropping list at 1M triangles under a baked map.
+bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint k);
+
+bool splitAlongCut(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
   bool cut[3];
   uint cuts = 0u;
   for (uint k = 0u; k < 3u; ++k) {
@@ -88,14 +97,21 @@ bool splitAlongCut(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
     cuts += cut[k] ? 1u : 0u;
   }
   uint u = !cut[0] ? 0u : !cut[1] ? 1u : 2u;
-  bool applies = prepass.splitAlongCut != 0u && cuts == 2u && rawLevels[u].w > 0.0 &&
-                 rawLevels[u].w <= float(kMaxUncutSegments) &&
-                 min(w[0].w, min(w[1].w, w[2].w)) >= 1.0;
-  // A loop run once or not at all rather than an if: lavapipe runs both sides of an if for all
+  bool valid = prepass.splitAlongCut != 0u && min(w[0].w, min(w[1].w, w[2].w)) >= 1.0;
+  bool applies = valid && cuts == 2u && rawLevels[u].w > 0.0 &&
+                 rawLevels[u].w <= float(kMaxUncutSegments);
+  uint k = cut[0] ? 0u : cut[1] ? 1u : 2u;  // the cut edge where there is one
+  bool tip = valid && cuts == 1u && rawLevels[(k + 1u) % 3u].w > 0.0 &&
+             rawLevels[(k + 1u) % 3u].w <= float(kMaxUncutSegments) &&
+             rawLevels[(k + 2u) % 3u].w > 0.0 &&
+             rawLevels[(k + 2u) % 3u].w <= float(kMaxUncutSegments);
+  // Loops run once or not at all rather than ifs: lavapipe runs both sides of an if for all
   // SIMD lanes, but leaves a loop as soon as no lane runs it, and few triangles here need the
-  // bisections and lookups below.
+  // lookups below.
   bool split = false;
   for (uint once = 0u; once < (applies ? 1u : 0u); ++once) split = splitFound(i, w, rawLevels, edge, u);
+  for (uint once = 0u; once < (tip ? 1u : 0u); ++once)
+    split = splitAtCutTip(i, r, w, rawLevels, edge, k);
   return split;
 }
 
@@ -116,18 +132,19 @@ uint reservePieces(uint indices) {
 // Writes the cut vertex `slot`: the point k / n along edge a-b (the triangle's corners a and b,
 // vertices va and vb), warped as the tessellation evaluation shader warps the points it places
 // there (the neighbour across the edge tessellates it into n segments).
-void writeEdgeVertex(uint slot, uint va, uint vb, float s) {
+vec4 writeEdgeVertex(uint slot, uint va, uint vb, float s) {
   CutVertex c = vertexBetween(va, vb, s);
   c.warped = confvisWarpRelative((1.0 - s) * vertexRelative(va) + s * vertexRelative(vb));
   storeCutVertex(slot, c);
+  return c.warped;
 }
 
 bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
   // X where the cut crosses u-a (edge[b], opposite b), Y where it crosses b-u (edge[a]): the
   // edges' cut vertices (classify_edges_bent.comp).
   uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
-  uint x = edgeCutVertex[edge[b]], y = edgeCutVertex[edge[a]];
-  if (x == ~0u || y == ~0u) return false;
+  uint x = edgeCutVertex[edge[b]].x, y = edgeCutVertex[edge[a]].x;
+  if (x >= kCutVertexUnsure || y >= kCutVertexUnsure) return false;  // unsure, or none
   // The uncut edge (opposite u, from corner a to b) in n segments: its points in between are
   // the pre-pass's midpoint (n = 2) or cut vertices of their own, the other side's quad a fan
   // from X through them.
@@ -163,6 +180,86 @@ bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
   return true;
 }
 
+// The points of the triangle's edge `e` from corner p to corner q (local indices ip, iq, virtual
+// points rp, rq, warps wp, wq) in n segments: vertex numbers (the mesh's, as in its indices),
+// virtual points and warps: the pre-pass's midpoint in the middle, the others new cut vertices
+// from `slot` on (slot + j - 1 for point j), warped as the neighbour's tessellation places them
+// (writeEdgeVertex).
+void edgePoints(uint e, uint n, uint ip, uint iq, vec3 rp, vec3 rq, vec4 wp, vec4 wq, uint slot,
+                out uint index[kMaxUncutSegments + 1u], out vec3 rel[kMaxUncutSegments + 1u],
+                out vec4 warp[kMaxUncutSegments + 1u]) {
+  uint offset = uint(prepass.vertexOffset);
+  index[0] = ip;
+  rel[0] = rp;
+  warp[0] = wp;
+  for (uint j = 1u; j < n; ++j) {
+    float s = float(j) / float(n);
+    rel[j] = mix(rp, rq, s);
+    if (2u * j == n) {  // the midpoint keeps the pre-pass's warp, as in every way of drawing
+      index[j] = prepass.midpointBase + e - offset;
+      warp[j] = vec4(edgeLevels[e].xyz, 1.0);
+    } else {
+      index[j] = prepass.cutVertexBase + slot + j - 1u - offset;
+      warp[j] = writeEdgeVertex(slot + j - 1u, offset + ip, offset + iq, s);
+    }
+  }
+  index[n] = iq;
+  rel[n] = rq;
+  warp[n] = wq;
+}
+
+// The fan from cut vertex x (vertex number, virtual point, warp) over a polyline of n segments:
+// false where confvisDropTriangle would drop a piece; the pieces appended from `at` otherwise.
+bool fanKept(vec3 rx, vec4 wx, uint n, vec3 rel[kMaxUncutSegments + 1u],
+             vec4 warp[kMaxUncutSegments + 1u]) {
+  bool kept = true;
+  for (uint j = 0u; j < n; ++j)
+    kept = kept && !dropsTriangle(vec3[3](rx, rel[j], rel[j + 1u]),
+                                  vec4[3](wx, warp[j], warp[j + 1u]), prepass.minGap);
+  return kept;
+}
+
+void appendFan(uint at, uint x, uint n, uint index[kMaxUncutSegments + 1u]) {
+  for (uint j = 0u; j < n; ++j) appendPiece(at + 3u * j, x, index[j], index[j + 1u]);
+}
+
+bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint k) {
+  uint a = (k + 1u) % 3u, b = (k + 2u) % 3u;  // the cut edge runs from corner a to corner b
+  // Unsure sides are common here (the jump is small); the drop test below guards the pieces.
+  uvec2 cutVertex = edgeCutVertex[edge[k]];
+  if (cutVertex.x == ~0u) return false;
+  cutVertex.x &= ~kCutVertexUnsure;
+  uint offset = uint(prepass.vertexOffset);
+  bool aFirst = edges[edge[k]].x == offset + i[a];
+  float t = uintBitsToFloat(cutVertex.y);  // from edges[edge[k]].x
+  vec3 rx = aFirst ? mix(r[a], r[b], t) : mix(r[b], r[a], t);
+  uint xa = cutVertex.x + (aFirst ? 0u : 1u), xb = cutVertex.x + (aFirst ? 1u : 0u);
+  // Side a: the fan from X over k -> a (edge[b]); side b: over b -> k (edge[a]).
+  uint na = uint(rawLevels[b].w), nb = uint(rawLevels[a].w);
+  uint betweenA = na > 2u ? na - 1u : 0u, betweenB = nb > 2u ? nb - 1u : 0u;
+  uint slot = 0u;
+  for (uint once = 0u; once < (betweenA + betweenB > 0u ? 1u : 0u); ++once) {
+    slot = atomicAdd(queueDispatch[kQueueCutVertices].count, betweenA + betweenB);
+    if (slot + betweenA + betweenB > cutVertexCapacity()) return false;
+  }
+  uint indexA[kMaxUncutSegments + 1u], indexB[kMaxUncutSegments + 1u];
+  vec3 relA[kMaxUncutSegments + 1u], relB[kMaxUncutSegments + 1u];
+  vec4 warpA[kMaxUncutSegments + 1u], warpB[kMaxUncutSegments + 1u];
+  edgePoints(edge[b], na, i[k], i[a], r[k], r[a], w[k], w[a], slot, indexA, relA, warpA);
+  edgePoints(edge[a], nb, i[b], i[k], r[b], r[k], w[b], w[k], slot + betweenA, indexB, relB,
+             warpB);
+  // A piece confvisDropTriangle would drop spans a real jump: the geometry shader's case.
+  if (!fanKept(rx, cutWarps[xa], na, relA, warpA) || !fanKept(rx, cutWarps[xb], nb, relB, warpB))
+    return false;
+  uint at = reservePieces(3u * (na + nb));
+  if (at == ~0u) return false;
+  uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
+  appendFan(at, cutBase + xa, na, indexA);
+  appendFan(at + 3u * na, cutBase + xb, nb, indexB);
+  atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
+  return true;
+}
+
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= bentDispatch[prepass.mesh].count) return;
@@ -193,7 +290,7 @@ void main() {
   // jump test and the flags of edges across the cut find the pieces to drop.)
   bool splitAtCut = false;
   for (uint once = 0u; once < (mayDrop ? 1u : 0u); ++once)
-    splitAtCut = splitAlongCut(i, w, rawLevels, edge);
+    splitAtCut = splitAlongCut(i, r, w, rawLevels, edge);
   if (splitAtCut) return;
   // A patch of one segment an edge tessellates into itself alone: warp.geom's test on it, with
   // every view's gap (the corners' warps are the pre-pass's in every way of drawing), decided

@@ -173,18 +173,22 @@ struct CutVertex {
   vec4 warped;    // relative to c, w = validity
 };
 layout(set = 2, binding = 21, std430) writeonly buffer CutAttributes { float cutAttributes[]; };
-layout(set = 2, binding = 22, std430) writeonly buffer CutWarps { vec4 cutWarps[]; };
+layout(set = 2, binding = 22, std430) buffer CutWarps { vec4 cutWarps[]; };
 
 uint cutVertexCapacity() { return uint(cutAttributes.length()) / 8u; }
 
-// Per edge with kEdgeAcrossCut (and the split along the cut on): the first of the two cut
+// Per edge with kEdgeAcrossCut (and the split along the cut on): x, the first of the two cut
 // vertices where the cut crosses it, each side's limit of the warp there (the first continues
-// the side of edges[e].x, the second that of edges[e].y), or ~0u where they could not be made.
+// the side of edges[e].x, the second that of edges[e].y), or ~0u where they could not be made;
+// y, the crossing's parameter from edges[e].x to edges[e].y (float bits). The first slot has
+// kCutVertexUnsure set where a side's limit did not land clearly on its side (next to the cut's
+// ends, where the jump is small) or outside the source field.
 // Made once per edge by classify_edges_bent.comp, where the few edges across the cut are packed
 // together, and shared by the two triangles on the edge: the bisection and the four-texel
 // lookups in the bent triangles' pass, run by whole SIMD groups for one triangle each, cost
 // 5 ms of a 20k-triangle scene's 9.5 ms pre-pass on lavapipe.
-layout(set = 2, binding = 23, std430) buffer EdgeCutVertices { uint edgeCutVertex[]; };
+layout(set = 2, binding = 23, std430) buffer EdgeCutVertices { uvec2 edgeCutVertex[]; };
+const uint kCutVertexUnsure = 0x80000000u;
 
 void storeCutVertex(uint slot, CutVertex c) {
   uint at = 8u * slot;

@@ -64,13 +64,16 @@ bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
 void writeEdgeCutVertices(uint e) {
   uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 2u);
   bool ok = slot + 2u <= cutVertexCapacity();
+  float t = 0.5;
   for (uint once = 0u; once < (ok ? 1u : 0u); ++once) {
     uvec2 v = edges[e];
-    float t = cutCrossing(e);
+    t = cutCrossing(e);
     ok = writeCutVertex(slot, e, t, v.x, v.y);
     ok = writeCutVertex(slot + 1u, e, t, v.y, v.x) && ok;
   }
-  edgeCutVertex[e] = ok ? slot : ~0u;
+  // Slots written but not clearly on their sides keep the top bit (kCutVertexUnsure).
+  edgeCutVertex[e] = uvec2(slot + 2u > cutVertexCapacity() ? ~0u : ok ? slot : slot | kCutVertexUnsure,
+                           floatBitsToUint(t));
 }
 
 // Edge e's level and flags (EdgeFlags), `segments` its level (negative where it may lose pieces).

@@ -76,7 +76,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
   edgeFlags_ = uintList(scene.edgeCount());
-  edgeCutVertices_ = uintList(scene.edgeCount());
+  edgeCutVertices_ = uintList(2 * scene.edgeCount());
   relative_ = Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(glm::vec4),
                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
 

@@ -94,7 +94,7 @@ class ConformalPrepass {
   Buffer queueDispatch_, queuedVertices_, queuedEdges_;
   Buffer flatCounts_;  // uint per mesh, host-visible
   Buffer edgeFlags_;   // uint per scene edge
-  Buffer edgeCutVertices_;  // uint per scene edge: its cut vertices' first slot
+  Buffer edgeCutVertices_;  // uvec2 per scene edge: its cut vertices' first slot, the crossing
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
   Buffer errorWalls_;  // uniform: ErrorWall[kMaxErrorWalls], host-visible
   UniqueDescriptorPool pool_;
