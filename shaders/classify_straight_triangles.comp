@@ -23,6 +23,5 @@ void main() {
     appendBent(t);
   } else {
     writeFlat(t, i);
-    atomicAdd(flatCounts[prepass.mesh], 1u);
   }
 }

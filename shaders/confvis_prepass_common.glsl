@@ -80,8 +80,9 @@ const uint kQueueVertices = 0u, kQueueEdges = 1u;
 // split along the cut (for the frame's statistics).
 const uint kQueueCutVertices = 2u;
 
-// Per mesh: its triangles written flat (writeFlat leaves degenerate ones in the list; this
-// counts the rest for the frame's statistics), reset from the host.
+// Per mesh: its triangles entirely outside the source field, reset from the host. The flat
+// list's triangles that are not degenerate (writeFlat), for the frame's statistics, are the
+// mesh's triangles less these and its bent list's.
 layout(set = 2, binding = 16, std430) buffer FlatCounts { uint flatCounts[]; };
 // Per edge, what classify_triangles.comp needs of it (confvis_prepass_edges.glsl writes it):
 // kEdgeStraight where it is drawn in one segment, kEdgeSmall where its warped corners lie

@@ -28,7 +28,12 @@ VkDeviceSize ConformalPrepass::commandOffset(std::size_t draw, PrepassList list)
 }
 
 std::uint32_t ConformalPrepass::flatTriangles(std::size_t draw) const {
-  return static_cast<const std::uint32_t*>(flatCounts_.mapped())[draw];
+  // Every triangle of the mesh is flat, on the bent list or outside the source field (FlatCounts
+  // of confvis_prepass_common.glsl counts those).
+  const std::uint32_t triangles = (rangeEnds_[draw] - rangeStarts_[draw]) / 3;
+  const std::uint32_t bent = static_cast<const BentDispatch*>(bentDispatch_.mapped())[draw].count;
+  const std::uint32_t unseen = static_cast<const std::uint32_t*>(flatCounts_.mapped())[draw];
+  return triangles - bent - unseen;
 }
 
 std::uint32_t ConformalPrepass::trianglesSplitAlongCut() const {
@@ -130,9 +135,12 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
            scene.extendedVertexCount());
   bindPart(kPrepassCutWarpsBinding, warped_.get(), sizeof(glm::vec4), cuts,
            scene.extendedVertexCount());
+  rangeStarts_.clear();
   rangeEnds_.clear();
-  for (const GpuScene::Draw& draw : scene.draws())
+  for (const GpuScene::Draw& draw : scene.draws()) {
+    rangeStarts_.push_back(draw.firstIndex);
     rangeEnds_.push_back(draw.firstIndex + draw.indexCount);
+  }
   sceneId_ = scene.id();
 }
 

@@ -82,7 +82,8 @@ class ConformalPrepass {
   VulkanContext& context_;
   const Pipelines& pipelines_;
   std::uint64_t sceneId_ = 0;
-  std::vector<std::uint32_t> rangeEnds_;  // per mesh: one past its last index
+  std::vector<std::uint32_t> rangeStarts_;  // per mesh: its first index
+  std::vector<std::uint32_t> rangeEnds_;    // per mesh: one past its last index
   Buffer warped_, flat_, pieces_, tessellated_, commands_, patchLevels_;
   // Per mesh: VkDispatchIndirectCommand and bent-list length (BentDispatch of the shaders).
   Buffer bentDispatch_;
@@ -92,7 +93,7 @@ class ConformalPrepass {
   // The vertices queued for lookups across the cut, the edges for full measurement: two
   // BentDispatch, the lists (uint each).
   Buffer queueDispatch_, queuedVertices_, queuedEdges_;
-  Buffer flatCounts_;  // uint per mesh, host-visible
+  Buffer flatCounts_;  // uint per mesh, host-visible: its triangles outside the source field
   Buffer edgeFlags_;   // uint per scene edge
   Buffer edgeCutVertices_;  // uvec2 per scene edge: its cut vertices' first slot, the crossing
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
