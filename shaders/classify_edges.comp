@@ -17,17 +17,20 @@ layout(local_size_x = 64) in;
 void main() {
   uint e = gl_GlobalInvocationID.x;
   if (e >= prepass.count) return;
+  EdgeEnds ends = loadEdgeEnds(e);
   vec4 midpoint;
-  bool plain = confvisWarpRelativeBilinear(edgeMidpointRelative(e), midpoint);
-  bool straight = plain && edgeSurelyStraight(e, midpoint);
-  if (straight) writeStraightEdgeLevel(e, midpoint);
+  bool plain = confvisWarpRelativeBilinear(0.5 * (ends.ra + ends.rb), midpoint);
+  vec3 um = normalize(midpoint.xyz);
+  bool straight = plain && edgeSurelyStraight(ends, um);
+  if (straight) writeStraightEdgeLevel(e, ends, midpoint);
   // Loops run once or not at all: lavapipe runs both sides of an if (and of &&) for all SIMD
   // lanes but leaves a loop that no lane runs, and the tests and atans below are wasted on the
   // straight edges, most of a finely meshed scene's (evaluated for every edge, they cost 20 ms of
   // a 1M-triangle frame).
   bool bentSmoothly = false;
   for (uint once = 0u; once < (plain && !straight ? 1u : 0u); ++once)
-    bentSmoothly = edgeSurelyWithoutJump(e, midpoint);
-  for (uint once = 0u; once < (bentSmoothly ? 1u : 0u); ++once) writeSmoothEdgeLevel(e, midpoint);
+    bentSmoothly = edgeSurelyWithoutJump(ends, um);
+  for (uint once = 0u; once < (bentSmoothly ? 1u : 0u); ++once)
+    writeSmoothEdgeLevel(e, ends, midpoint);
   if (!straight && !bentSmoothly) enqueue(kQueueEdges, e);
 }

@@ -13,18 +13,39 @@ vec3 edgeMidpointRelative(uint e) {
   return 0.5 * (vertexRelative(edges[e].x) + vertexRelative(edges[e].y));
 }
 
+// What the first edge pass reads of an edge, once: its corners' virtual points relative to c,
+// their unit directions and their warps (and unit warp directions). Loading and normalizing them
+// once per test cost lavapipe, which gathers every load lane by lane, much of that pass (1.5M
+// edges at 1M triangles).
+struct EdgeEnds {
+  vec3 ra, rb, ua, ub;  // virtual points relative to c, unit
+  vec4 wa, wb;          // warps
+  vec3 va, vb;          // unit warp directions
+};
+
+EdgeEnds loadEdgeEnds(uint e) {
+  uvec2 v = edges[e];
+  EdgeEnds ends;
+  ends.ra = vertexRelative(v.x);
+  ends.rb = vertexRelative(v.y);
+  ends.ua = normalize(ends.ra);
+  ends.ub = normalize(ends.rb);
+  ends.wa = warped[v.x];
+  ends.wb = warped[v.y];
+  ends.va = normalize(ends.wa.xyz);
+  ends.vb = normalize(ends.wb.xyz);
+  return ends;
+}
+
 // Edge e is drawn in one segment and spans no cut, as writeEdgeLevel would find: it is short,
 // its warped halves are too short to span a jump and its warped midpoint lies within the error
 // bound of the chord. Conservative (chords below angles, with a margin): an edge it does not
-// accept may still be straight.
-bool edgeSurelyStraight(uint e, vec4 midpoint) {
-  uvec2 v = edges[e];
-  vec3 wa = warped[v.x].xyz, wb = warped[v.y].xyz, wm = midpoint.xyz;
-  return chordBelow(directionChord(vertexRelative(v.x), vertexRelative(v.y)),
-                    prepass.maxSegmentAngle) &&
-         chordBelow(max(directionChord(wa, wm), directionChord(wm, wb)),
+// accept may still be straight. um: the warped midpoint's unit direction.
+bool edgeSurelyStraight(EdgeEnds ends, vec3 um) {
+  return chordBelow(length(ends.ua - ends.ub), prepass.maxSegmentAngle) &&
+         chordBelow(max(length(ends.va - um), length(um - ends.vb)),
                     8.0 * prepass.maxErrorAngle) &&
-         chordBelow(directionChord(wm, 0.5 * (wa + wb)), prepass.maxErrorAngle);
+         chordBelow(directionChord(um, ends.wa.xyz + ends.wb.xyz), prepass.maxErrorAngle);
 }
 
 // Where the source's cut crosses edge e: the parameter t from its first vertex to its second,
@@ -77,71 +98,67 @@ void writeEdgeCutVertices(uint e) {
 }
 
 // Edge e's level and flags (EdgeFlags), `segments` its level (negative where it may lose pieces).
-void writeEdge(uint e, vec4 midpoint, float segments, bool acrossCut) {
-  uvec2 v = edges[e];
-  vec4 wa = warped[v.x], wb = warped[v.y];
+void writeEdge(uint e, EdgeEnds ends, vec4 midpoint, float segments, bool acrossCut) {
   edgeLevels[e] = vec4(midpoint.xyz, segments);
-  bool small = chordBelow(directionChord(wa.xyz, wb.xyz), prepass.minGap);
+  bool small = chordBelow(length(ends.va - ends.vb), prepass.minGap);
   edgeFlags[e] = (abs(segments) == 1.0 ? kEdgeStraight : 0u) | (small ? kEdgeSmall : 0u) |
-                 (max(wa.w, wb.w) < 0.5 ? kEdgeUnseen : 0u) | (acrossCut ? kEdgeAcrossCut : 0u);
+                 (max(ends.wa.w, ends.wb.w) < 0.5 ? kEdgeUnseen : 0u) |
+                 (acrossCut ? kEdgeAcrossCut : 0u);
 }
 
-// Part of edge e lies outside the source field (its corners' or midpoint's validity below 1).
-bool edgeLeavesField(uint e, vec4 midpoint) {
-  return min(midpoint.w, min(warped[edges[e].x].w, warped[edges[e].y].w)) < 1.0;
+// Part of the edge lies outside the source field (its corners' or midpoint's validity below 1).
+bool edgeLeavesField(EdgeEnds ends, vec4 midpoint) {
+  return min(midpoint.w, min(ends.wa.w, ends.wb.w)) < 1.0;
 }
 
 // writeEdgeLevel for an edge edgeSurelyStraight accepts: one segment.
-void writeStraightEdgeLevel(uint e, vec4 midpoint) {
-  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -1.0 : 1.0, false);
+void writeStraightEdgeLevel(uint e, EdgeEnds ends, vec4 midpoint) {
+  writeEdge(e, ends, midpoint, edgeLeavesField(ends, midpoint) ? -1.0 : 1.0, false);
 }
 
-// Edge e's warped halves surely do not span a jump (confvisHalvesSpanJump would find none): its
+// The edge's warped halves surely do not span a jump (confvisHalvesSpanJump would find none): its
 // rules on chords instead of angles. A chord c = 2 sin(angle / 2) is below its angle and, up to
 // c = 0.4 (23 degrees), above it by less than 0.7 %: with a 1 % margin every rule holds for the
 // angles too. An edge it does not accept may still be smooth (classify_edges_bent.comp decides).
-bool edgeSurelyWithoutJump(uint e, vec4 midpoint) {
-  uvec2 v = edges[e];
-  vec3 wa = warped[v.x].xyz, wb = warped[v.y].xyz, wm = midpoint.xyz;
-  float halfA = directionChord(wa, wm), halfB = directionChord(wm, wb);
+// um: the warped midpoint's unit direction.
+bool edgeSurelyWithoutJump(EdgeEnds ends, vec3 um) {
+  float halfA = length(ends.va - um), halfB = length(um - ends.vb);
   float longer = max(halfA, halfB), shorter = min(halfA, halfB);
   float floor8 = 8.0 * prepass.maxErrorAngle;
   return longer <= 0.4 && 1.01 * longer <= max(3.0 * shorter, floor8) &&
-         1.01 * (halfA + halfB) <= max(3.0 * directionChord(wa, wb), floor8);
+         1.01 * (halfA + halfB) <= max(3.0 * length(ends.va - ends.vb), floor8);
+}
+
+// confvisSmoothEdgeSegments with the bound of the wall that shows the warped midpoint wm
+// (errorAngleToward), looked up only where the strictest bound asks for more than one segment
+// (the local bound is never stricter): its loop over the walls cost 3 ms of a 20k-triangle
+// frame's pre-pass on lavapipe when run for every edge.
+float smoothEdgeSegments(EdgeEnds ends, vec3 wm) {
+  float segments = confvisSmoothEdgeSegments(ends.ra, ends.rb, ends.wa.xyz, ends.wb.xyz, wm,
+                                             prepass.maxErrorAngle, prepass.maxSegmentAngle);
+  for (uint once = 0u; once < (segments > 1.0 ? 1u : 0u); ++once)
+    segments = confvisSmoothEdgeSegments(ends.ra, ends.rb, ends.wa.xyz, ends.wb.xyz, wm,
+                                         errorAngleToward(wm), prepass.maxSegmentAngle);
+  return segments;
 }
 
 // writeEdgeLevel for an edge edgeSurelyWithoutJump accepts, with its midpoint's bilinear warp
 // (confvisWarpRelativeBilinear true: the full lookup gives the same).
-// confvisSmoothEdgeSegments with the bound of the wall that shows the warped midpoint
-// (errorAngleToward), looked up only where the strictest bound asks for more than one segment
-// (the local bound is never stricter): its loop over the walls cost 3 ms of a 20k-triangle
-// frame's pre-pass on lavapipe when run for every edge.
-float smoothEdgeSegments(uint e, vec3 wm) {
-  uvec2 v = edges[e];
-  vec3 a = vertexRelative(v.x), b = vertexRelative(v.y), wa = warped[v.x].xyz, wb = warped[v.y].xyz;
-  float segments = confvisSmoothEdgeSegments(a, b, wa, wb, wm, prepass.maxErrorAngle,
-                                             prepass.maxSegmentAngle);
-  for (uint once = 0u; once < (segments > 1.0 ? 1u : 0u); ++once)
-    segments = confvisSmoothEdgeSegments(a, b, wa, wb, wm, errorAngleToward(wm),
-                                         prepass.maxSegmentAngle);
-  return segments;
-}
-
-void writeSmoothEdgeLevel(uint e, vec4 midpoint) {
-  float segments = smoothEdgeSegments(e, midpoint.xyz);
-  writeEdge(e, midpoint, edgeLeavesField(e, midpoint) ? -segments : segments, false);
+void writeSmoothEdgeLevel(uint e, EdgeEnds ends, vec4 midpoint) {
+  float segments = smoothEdgeSegments(ends, midpoint.xyz);
+  writeEdge(e, ends, midpoint, edgeLeavesField(ends, midpoint) ? -segments : segments, false);
 }
 
 void writeEdgeLevel(uint e, vec4 midpoint) {
-  uvec2 v = edges[e];
+  EdgeEnds ends = loadEdgeEnds(e);
   bool acrossCut;
   // The cut and its segments by the strictest bound, a smooth bend by the local one.
-  float segments = confvisMeasureEdgeWithMidpoint(
-      vertexRelative(v.x), vertexRelative(v.y), warped[v.x].xyz, warped[v.y].xyz, midpoint,
-      prepass.maxErrorAngle, prepass.maxSegmentAngle, acrossCut);
-  if (!acrossCut) segments = smoothEdgeSegments(e, midpoint.xyz);
-  bool mayDrop = acrossCut || edgeLeavesField(e, midpoint);
-  writeEdge(e, midpoint, mayDrop ? -segments : segments, acrossCut);
+  float segments = confvisMeasureEdgeWithMidpoint(ends.ra, ends.rb, ends.wa.xyz, ends.wb.xyz,
+                                                  midpoint, prepass.maxErrorAngle,
+                                                  prepass.maxSegmentAngle, acrossCut);
+  if (!acrossCut) segments = smoothEdgeSegments(ends, midpoint.xyz);
+  bool mayDrop = acrossCut || edgeLeavesField(ends, midpoint);
+  writeEdge(e, ends, midpoint, mayDrop ? -segments : segments, acrossCut);
   // A loop entered once or not at all (lavapipe runs both sides of an if for all SIMD lanes).
   for (uint once = 0u; once < (acrossCut && prepass.splitAlongCut != 0u ? 1u : 0u); ++once)
     writeEdgeCutVertices(e);
