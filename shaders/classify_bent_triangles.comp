@@ -180,47 +180,47 @@ bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
   return true;
 }
 
-// The points of the triangle's edge `e` from corner p to corner q (local indices ip, iq, virtual
-// points rp, rq, warps wp, wq) in n segments: vertex numbers (the mesh's, as in its indices),
-// virtual points and warps: the pre-pass's midpoint in the middle, the others new cut vertices
-// from `slot` on (slot + j - 1 for point j), warped as the neighbour's tessellation places them
-// (writeEdgeVertex).
-void edgePoints(uint e, uint n, uint ip, uint iq, vec3 rp, vec3 rq, vec4 wp, vec4 wq, uint slot,
-                out uint index[kMaxUncutSegments + 1u], out vec3 rel[kMaxUncutSegments + 1u],
-                out vec4 warp[kMaxUncutSegments + 1u]) {
+// Point j of the triangle's edge `e` from corner p to corner q (local indices ip, iq) drawn in n
+// segments, as a vertex number (the mesh's, as in its indices): the corners, the pre-pass's
+// midpoint in the middle, the others cut vertices from `slot` on (slot + j - 1 for point j).
+uint edgePointIndex(uint e, uint n, uint j, uint ip, uint iq, uint slot) {
   uint offset = uint(prepass.vertexOffset);
-  index[0] = ip;
-  rel[0] = rp;
-  warp[0] = wp;
-  for (uint j = 1u; j < n; ++j) {
-    float s = float(j) / float(n);
-    rel[j] = mix(rp, rq, s);
-    if (2u * j == n) {  // the midpoint keeps the pre-pass's warp, as in every way of drawing
-      index[j] = prepass.midpointBase + e - offset;
-      warp[j] = vec4(edgeLevels[e].xyz, 1.0);
-    } else {
-      index[j] = prepass.cutVertexBase + slot + j - 1u - offset;
-      warp[j] = writeEdgeVertex(slot + j - 1u, offset + ip, offset + iq, s);
-    }
-  }
-  index[n] = iq;
-  rel[n] = rq;
-  warp[n] = wq;
+  return j == 0u ? ip
+       : j == n ? iq
+       : 2u * j == n ? prepass.midpointBase + e - offset
+                     : prepass.cutVertexBase + slot + j - 1u - offset;
 }
 
-// The fan from cut vertex x (vertex number, virtual point, warp) over a polyline of n segments:
-// false where confvisDropTriangle would drop a piece; the pieces appended from `at` otherwise.
-bool fanKept(vec3 rx, vec4 wx, uint n, vec3 rel[kMaxUncutSegments + 1u],
-             vec4 warp[kMaxUncutSegments + 1u]) {
+// Writes the points between the corners of that edge (those edgePointIndex numbers as cut
+// vertices), warped as the neighbour's tessellation places them (writeEdgeVertex), and tells
+// whether the fan from X (virtual point rx, warp wx) over them keeps every piece
+// (confvisDropTriangle). Points carried one at a time, no arrays: lavapipe keeps arrays indexed
+// in a loop in memory, lane by lane, which made the whole pass 2-3 ms slower at 20k triangles.
+bool writeFanPoints(uint e, uint n, uint ip, uint iq, vec3 rp, vec3 rq, vec4 wp, vec4 wq,
+                    uint slot, vec3 rx, vec4 wx) {
+  uint offset = uint(prepass.vertexOffset);
+  vec3 previousRel = rp;
+  vec4 previousWarp = wp;
   bool kept = true;
-  for (uint j = 0u; j < n; ++j)
-    kept = kept && !dropsTriangle(vec3[3](rx, rel[j], rel[j + 1u]),
-                                  vec4[3](wx, warp[j], warp[j + 1u]), prepass.minGap);
+  for (uint j = 1u; j <= n; ++j) {
+    float s = float(j) / float(n);
+    vec3 rel = j == n ? rq : mix(rp, rq, s);
+    vec4 warp = j == n ? wq : vec4(edgeLevels[e].xyz, 1.0);
+    for (uint once = 0u; once < (j < n && 2u * j != n ? 1u : 0u); ++once)
+      warp = writeEdgeVertex(slot + j - 1u, offset + ip, offset + iq, s);
+    kept = kept && !dropsTriangle(vec3[3](rx, previousRel, rel),
+                                  vec4[3](wx, previousWarp, warp), prepass.minGap);
+    previousRel = rel;
+    previousWarp = warp;
+  }
   return kept;
 }
 
-void appendFan(uint at, uint x, uint n, uint index[kMaxUncutSegments + 1u]) {
-  for (uint j = 0u; j < n; ++j) appendPiece(at + 3u * j, x, index[j], index[j + 1u]);
+// The fan's pieces from cut vertex x (a vertex number) over that edge's points, from `at` on.
+void appendFan(uint at, uint x, uint e, uint n, uint ip, uint iq, uint slot) {
+  for (uint j = 0u; j < n; ++j)
+    appendPiece(at + 3u * j, x, edgePointIndex(e, n, j, ip, iq, slot),
+                edgePointIndex(e, n, j + 1u, ip, iq, slot));
 }
 
 bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint k) {
@@ -242,20 +242,17 @@ bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge
     slot = atomicAdd(queueDispatch[kQueueCutVertices].count, betweenA + betweenB);
     if (slot + betweenA + betweenB > cutVertexCapacity()) return false;
   }
-  uint indexA[kMaxUncutSegments + 1u], indexB[kMaxUncutSegments + 1u];
-  vec3 relA[kMaxUncutSegments + 1u], relB[kMaxUncutSegments + 1u];
-  vec4 warpA[kMaxUncutSegments + 1u], warpB[kMaxUncutSegments + 1u];
-  edgePoints(edge[b], na, i[k], i[a], r[k], r[a], w[k], w[a], slot, indexA, relA, warpA);
-  edgePoints(edge[a], nb, i[b], i[k], r[b], r[k], w[b], w[k], slot + betweenA, indexB, relB,
-             warpB);
   // A piece confvisDropTriangle would drop spans a real jump: the geometry shader's case.
-  if (!fanKept(rx, cutWarps[xa], na, relA, warpA) || !fanKept(rx, cutWarps[xb], nb, relB, warpB))
-    return false;
+  bool kept = writeFanPoints(edge[b], na, i[k], i[a], r[k], r[a], w[k], w[a], slot, rx,
+                             cutWarps[xa]);
+  kept = writeFanPoints(edge[a], nb, i[b], i[k], r[b], r[k], w[b], w[k], slot + betweenA, rx,
+                        cutWarps[xb]) && kept;
+  if (!kept) return false;
   uint at = reservePieces(3u * (na + nb));
   if (at == ~0u) return false;
   uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
-  appendFan(at, cutBase + xa, na, indexA);
-  appendFan(at + 3u * na, cutBase + xb, nb, indexB);
+  appendFan(at, cutBase + xa, edge[b], na, i[k], i[a], slot);
+  appendFan(at + 3u * na, cutBase + xb, edge[a], nb, i[b], i[k], slot + betweenA);
   atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
   return true;
 }
