@@ -287,6 +287,7 @@ int main(int argc, char** argv) {
   std::string imageDir;
   std::vector<std::size_t> extraSizes;
   std::size_t sweepTriangles = 20000;
+  double errorPixels = VulkanOptions{}.tessellationErrorPixels;
   std::vector<std::string> mapNames = {"identity", "zoom", "squeeze", "baked"};
   bool skip1m = false, skip20k = false, skipSweep = false, skipZoomSweep = false,
        skipEmbree = false;
@@ -303,6 +304,9 @@ int main(int argc, char** argv) {
   app.add_option("--maps", mapNames, "maps of the timing table (identity, zoom, squeeze, baked)")
       ->delimiter(',')
       ->check(CLI::IsMember({"identity", "zoom", "squeeze", "baked"}));
+  app.add_option("--error-pixels", errorPixels,
+                 "tessellation error bound of the timing table, pixels")
+      ->check(CLI::PositiveNumber);
   app.add_option("--sweep-triangles", sweepTriangles,
                  "checker-sphere size of the baked-map sweep (about this many triangles)")
       ->check(CLI::PositiveNumber);
@@ -331,6 +335,7 @@ int main(int argc, char** argv) {
     // Every timed frame runs the pre-pass, as a frame that navigates does; the timing table's
     // "reused" column is the frame that only moves the head (VulkanOptions::reusePrepass).
     options.reusePrepass = false;
+    options.tessellationErrorPixels = errorPixels;
     auto backend = makeVulkanBackend(options);
     VulkanOptions reuseOptions = options;
     reuseOptions.reusePrepass = true;
