@@ -274,7 +274,10 @@ void main() {
   for (uint k = 0u; k < 3u; ++k) {
     edge[k] = triangleEdges[base + k];
     rawLevels[k] = levels[k] = edgeLevels[edge[k]];
-    mayDrop = mayDrop || levels[k].w < 0.0;
+    // Pieces are dropped across the cut or entirely outside the source field: an edge whose
+    // samples all lie inside (validity 0.5 or more, the rim's blend) loses none, however close
+    // to the rim (before, any validity below 1 sent the patch through the geometry shader).
+    mayDrop = mayDrop || (edgeFlags[edge[k]] & (kEdgeAcrossCut | kEdgeOutside)) != 0u;
     levels[k].w = abs(levels[k].w);
     split[k] = levels[k].w > 1.0;
     inner = max(inner, levels[k].w);

@@ -91,7 +91,10 @@ layout(set = 2, binding = 16, std430) buffer FlatCounts { uint flatCounts[]; };
 // triangle of three such edges shows nothing).
 layout(set = 2, binding = 17, std430) buffer EdgeFlags { uint edgeFlags[]; };
 // kEdgeAcrossCut where the edge spans the source's cut (confvisHalvesSpanJump on its halves).
-const uint kEdgeStraight = 1u, kEdgeSmall = 2u, kEdgeUnseen = 4u, kEdgeAcrossCut = 8u;
+// kEdgeOutside where a corner or the midpoint lies outside the source field (validity below
+// 0.5): only then can the geometry shader drop pieces of its triangles for being outside.
+const uint kEdgeStraight = 1u, kEdgeSmall = 2u, kEdgeUnseen = 4u, kEdgeAcrossCut = 8u,
+           kEdgeOutside = 16u;
 
 // Per mesh, as the bent list: the straight triangles too large after the warp for
 // classify_triangles.comp to tell whether confvisDropTriangle keeps them, for

@@ -103,7 +103,8 @@ void writeEdge(uint e, EdgeEnds ends, vec4 midpoint, float segments, bool across
   bool small = chordBelow(length(ends.va - ends.vb), prepass.minGap);
   edgeFlags[e] = (abs(segments) == 1.0 ? kEdgeStraight : 0u) | (small ? kEdgeSmall : 0u) |
                  (max(ends.wa.w, ends.wb.w) < 0.5 ? kEdgeUnseen : 0u) |
-                 (acrossCut ? kEdgeAcrossCut : 0u);
+                 (acrossCut ? kEdgeAcrossCut : 0u) |
+                 (min(midpoint.w, min(ends.wa.w, ends.wb.w)) < 0.5 ? kEdgeOutside : 0u);
 }
 
 // Part of the edge lies outside the source field (its corners' or midpoint's validity below 1).
