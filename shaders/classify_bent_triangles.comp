@@ -72,8 +72,8 @@ void appendSplit(uint i[3], bool split[3], uint edge[3]) {
 // the other) and whose third edge is drawn in at most kMaxUncutSegments segments, split exactly
 // along the cut: the corner's piece and the other side's quad (fanned through the third edge's
 // points, as its neighbour tessellates it) between its corners and four cut vertices, each side's
-// limit of the warp at the two crossings, drawn flat in the pieces list. Instead of tessellating it finely and
-// dropping the pieces across the cut in the geometry shader (a band of two pixels or a texel
+// limit of the warp at the two crossings, drawn flat in the pieces list. Instead of tessellating
+// it finely and dropping the pieces across the cut in the geometry shader (a band of two pixels or a texel
 // unshown along the cut, and most of the geometry shader's work). False where it does not apply.
 bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u);
 
@@ -109,7 +109,8 @@ bool splitAlongCut(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge
   // SIMD lanes, but leaves a loop as soon as no lane runs it, and few triangles here need the
   // lookups below.
   bool split = false;
-  for (uint once = 0u; once < (applies ? 1u : 0u); ++once) split = splitFound(i, w, rawLevels, edge, u);
+  for (uint once = 0u; once < (applies ? 1u : 0u); ++once)
+    split = splitFound(i, w, rawLevels, edge, u);
   for (uint once = 0u; once < (tip ? 1u : 0u); ++once)
     split = splitAtCutTip(i, r, w, rawLevels, edge, k);
   return split;
@@ -137,47 +138,6 @@ vec4 writeEdgeVertex(uint slot, uint va, uint vb, float s) {
   c.warped = confvisWarpRelative((1.0 - s) * vertexRelative(va) + s * vertexRelative(vb));
   storeCutVertex(slot, c);
   return c.warped;
-}
-
-bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
-  // X where the cut crosses u-a (edge[b], opposite b), Y where it crosses b-u (edge[a]): the
-  // edges' cut vertices (classify_edges_bent.comp).
-  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
-  uint x = edgeCutVertex[edge[b]].x, y = edgeCutVertex[edge[a]].x;
-  if (x >= kCutVertexUnsure || y >= kCutVertexUnsure) return false;  // unsure, or none
-  // The uncut edge (opposite u, from corner a to b) in n segments: its points in between are
-  // the pre-pass's midpoint (n = 2) or cut vertices of their own, the other side's quad a fan
-  // from X through them.
-  uint n = uint(rawLevels[u].w);
-  uint between = n > 2u ? n - 1u : 0u;
-  uint slot = 0u;
-  for (uint once = 0u; once < (between > 0u ? 1u : 0u); ++once) {
-    slot = atomicAdd(queueDispatch[kQueueCutVertices].count, between);
-    if (slot + between > cutVertexCapacity()) return false;
-  }
-  uint pieces = n + 2u;
-  uint at = reservePieces(3u * pieces);
-  if (at == ~0u) return false;
-  uint offset = uint(prepass.vertexOffset);
-  uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
-  for (uint k = 1u; k <= between; ++k) writeEdgeVertex(slot + k - 1u, va, vb, float(k) / float(n));
-  // Each edge's first cut vertex continues the side of its first vertex.
-  uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
-  bool uFirstOnX = edges[edge[b]].x == vu, uFirstOnY = edges[edge[a]].x == vu;
-  uint xu = cutBase + x + (uFirstOnX ? 0u : 1u), xa = cutBase + x + (uFirstOnX ? 1u : 0u);
-  uint yu = cutBase + y + (uFirstOnY ? 0u : 1u), yb = cutBase + y + (uFirstOnY ? 1u : 0u);
-  appendPiece(at, i[u], xu, yu);
-  uint previous = i[a];
-  for (uint k = 1u; k < n; ++k) {
-    // The midpoint keeps the pre-pass's warp, as tessellation and the flat pieces do.
-    uint next = 2u * k == n ? prepass.midpointBase + edge[u] - offset : cutBase + slot + k - 1u;
-    appendPiece(at + 3u * k, xa, previous, next);
-    previous = next;
-  }
-  appendPiece(at + 3u * n, xa, previous, i[b]);
-  appendPiece(at + 3u * (n + 1u), xa, i[b], yb);
-  atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
-  return true;
 }
 
 // Point j of the triangle's edge `e` from corner p to corner q (local indices ip, iq) drawn in n
@@ -223,6 +183,38 @@ void appendFan(uint at, uint x, uint e, uint n, uint ip, uint iq, uint slot) {
                 edgePointIndex(e, n, j + 1u, ip, iq, slot));
 }
 
+bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
+  // X where the cut crosses u-a (edge[b], opposite b), Y where it crosses b-u (edge[a]): the
+  // edges' cut vertices (classify_edges_bent.comp).
+  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
+  uint x = edgeCutVertex[edge[b]].x, y = edgeCutVertex[edge[a]].x;
+  if (x >= kCutVertexUnsure || y >= kCutVertexUnsure) return false;  // unsure, or none
+  // The uncut edge (opposite u, from corner a to b) in n segments: its points in between are
+  // the pre-pass's midpoint (n = 2) or cut vertices of their own, the other side's quad a fan
+  // from X through them.
+  uint n = uint(rawLevels[u].w);
+  uint between = n > 2u ? n - 1u : 0u;
+  uint slot = 0u;
+  for (uint once = 0u; once < (between > 0u ? 1u : 0u); ++once) slot = reserveCutVertices(between);
+  if (slot == ~0u) return false;
+  uint pieces = n + 2u;
+  uint at = reservePieces(3u * pieces);
+  if (at == ~0u) return false;
+  uint offset = uint(prepass.vertexOffset);
+  uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
+  for (uint k = 1u; k <= between; ++k) writeEdgeVertex(slot + k - 1u, va, vb, float(k) / float(n));
+  // Each edge's first cut vertex continues the side of its first vertex.
+  uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
+  bool uFirstOnX = edges[edge[b]].x == vu, uFirstOnY = edges[edge[a]].x == vu;
+  uint xu = cutBase + x + (uFirstOnX ? 0u : 1u), xa = cutBase + x + (uFirstOnX ? 1u : 0u);
+  uint yu = cutBase + y + (uFirstOnY ? 0u : 1u), yb = cutBase + y + (uFirstOnY ? 1u : 0u);
+  appendPiece(at, i[u], xu, yu);
+  appendFan(at + 3u, xa, edge[u], n, i[a], i[b], slot);  // the midpoint keeps the pre-pass's warp
+  appendPiece(at + 3u * (n + 1u), xa, i[b], yb);
+  atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
+  return true;
+}
+
 bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint k) {
   uint a = (k + 1u) % 3u, b = (k + 2u) % 3u;  // the cut edge runs from corner a to corner b
   // Unsure sides are common here (the jump is small); the drop test below guards the pieces.
@@ -238,10 +230,9 @@ bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge
   uint na = uint(rawLevels[b].w), nb = uint(rawLevels[a].w);
   uint betweenA = na > 2u ? na - 1u : 0u, betweenB = nb > 2u ? nb - 1u : 0u;
   uint slot = 0u;
-  for (uint once = 0u; once < (betweenA + betweenB > 0u ? 1u : 0u); ++once) {
-    slot = atomicAdd(queueDispatch[kQueueCutVertices].count, betweenA + betweenB);
-    if (slot + betweenA + betweenB > cutVertexCapacity()) return false;
-  }
+  for (uint once = 0u; once < (betweenA + betweenB > 0u ? 1u : 0u); ++once)
+    slot = reserveCutVertices(betweenA + betweenB);
+  if (slot == ~0u) return false;
   // A piece confvisDropTriangle would drop spans a real jump: the geometry shader's case.
   bool kept = writeFanPoints(edge[b], na, i[k], i[a], r[k], r[a], w[k], w[a], slot, rx,
                              cutWarps[xa]);

@@ -11,5 +11,6 @@ void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= queueDispatch[kQueueEdges].count) return;
   uint e = queuedEdges[slot];
-  writeEdgeLevel(e, confvisWarpRelative(edgeMidpointRelative(e)));
+  EdgeEnds ends = loadEdgeEnds(e);
+  writeEdgeLevel(e, ends, confvisWarpRelative(0.5 * (ends.ra + ends.rb)));
 }

@@ -1,8 +1,8 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Conformal pre-pass, once per frame and mesh, first pass over every triangle: the cheap test,
-// from its edges' flags (confvis_prepass_edges.glsl) and, where they do not tell, chords. Triangles entirely outside the
-// source field are dropped; those the warp leaves straight enough to draw flat between their
+// from its edges' flags (confvis_prepass_edges.glsl) and, where they do not tell, chords.
+// Triangles entirely outside the source field are dropped; those the warp leaves straight enough to draw flat between their
 // warped corners (every edge at one segment) and too small after the warp for
 // confvisDropTriangle to drop (no two corners further apart than minGap: the common case) are
 // written to the flat list, drawn by the cheap pipeline; the other straight ones go to the
@@ -33,10 +33,10 @@ void classify(uint t) {
   }
   uint none[3] = uint[3](0u, 0u, 0u);  // degenerate: no fragments
   writeFlat(t, drawnFlat ? i : none);
-  // The flat list's count is the mesh's triangles less the bent list's and these (FlatCounts):
+  // The flat list's count is the mesh's triangles less the bent list's and these (UnseenCounts):
   // counting the flat ones instead took a workgroup counter and two barriers, which lavapipe
   // runs as coroutine switches (~15 % of this pass at 1M triangles).
-  if (unseen) atomicAdd(flatCounts[prepass.mesh], 1u);
+  if (unseen) atomicAdd(unseenCounts[prepass.mesh], 1u);
   else if (straight && !drawnFlat) appendStraight(t);
   else if (!drawnFlat) appendBent(t);
 }

@@ -83,7 +83,7 @@ const uint kQueueCutVertices = 2u;
 // Per mesh: its triangles entirely outside the source field, reset from the host. The flat
 // list's triangles that are not degenerate (writeFlat), for the frame's statistics, are the
 // mesh's triangles less these and its bent list's.
-layout(set = 2, binding = 16, std430) buffer FlatCounts { uint flatCounts[]; };
+layout(set = 2, binding = 16, std430) buffer UnseenCounts { uint unseenCounts[]; };
 // Per edge, what classify_triangles.comp needs of it (confvis_prepass_edges.glsl writes it):
 // kEdgeStraight where it is drawn in one segment, kEdgeSmall where its warped corners lie
 // within minGap of each other (a triangle of three straight and small edges is drawn flat:
@@ -181,6 +181,13 @@ layout(set = 2, binding = 22, std430) buffer CutWarps { vec4 cutWarps[]; };
 
 uint cutVertexCapacity() { return uint(cutAttributes.length()) / 8u; }
 
+// Takes `count` cut vertex slots; the first, or ~0u where they do not fit (those beyond the
+// buffer fall back to the geometry shader's drop).
+uint reserveCutVertices(uint count) {
+  uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, count);
+  return slot + count <= cutVertexCapacity() ? slot : ~0u;
+}
+
 // Per edge with kEdgeAcrossCut (and the split along the cut on): x, the first of the two cut
 // vertices where the cut crosses it, each side's limit of the warp there (the first continues
 // the side of edges[e].x, the second that of edges[e].y), or ~0u where they could not be made;
@@ -206,22 +213,20 @@ void storeCutVertex(uint slot, CutVertex c) {
 
 // confvisDropTriangle surely keeps the triangle (virtual points r relative to c, warps w): some
 // corner inside the source field and, unless its warped sides are all within `gap`, warped sides
-// no more than 16 times the virtual ones and neither flipped nor torn (confvisDropTriangle's own
-// expressions). Chords instead of angles, so no atan: a chord is below its angle and, up to 0.4
-// (23 degrees), above it by less than 0.7 %; with a 1 % margin the rules hold for the angles. A
-// triangle it does not accept may still be kept.
+// no more than 16 times the virtual ones and neither flipped nor torn (confvisFlipsOrTears, as
+// confvisDropTriangle tests it). Chords instead of angles, so no atan: a chord is below its
+// angle and, up to 0.4 (23 degrees), above it by less than 0.7 %; with a 1 % margin the rules
+// hold for the angles. A triangle it does not accept may still be kept.
 bool surelyKept(vec3 r[3], vec4 w[3], float gap) {
-  float warpedChord = max(directionChord(w[0].xyz, w[1].xyz),
-                          max(directionChord(w[1].xyz, w[2].xyz), directionChord(w[2].xyz, w[0].xyz)));
+  float warpedChord =
+      max(directionChord(w[0].xyz, w[1].xyz),
+          max(directionChord(w[1].xyz, w[2].xyz), directionChord(w[2].xyz, w[0].xyz)));
   float virtualChord = max(directionChord(r[0], r[1]),
                            max(directionChord(r[1], r[2]), directionChord(r[2], r[0])));
-  bool flipped = dot(cross(r[1] - r[0], r[2] - r[0]), r[0] + r[1] + r[2]) *
-                     dot(cross(w[1].xyz - w[0].xyz, w[2].xyz - w[0].xyz), w[0].xyz + w[1].xyz + w[2].xyz) <
-                 0.0;
-  bool torn = 16.0 * confvisRoundness(w[0].xyz, w[1].xyz, w[2].xyz) < confvisRoundness(r[0], r[1], r[2]);
+  bool shapeKept = !confvisFlipsOrTears(r[0], r[1], r[2], w[0].xyz, w[1].xyz, w[2].xyz);
   bool seen = max(w[0].w, max(w[1].w, w[2].w)) >= 0.5;
   return seen && (chordBelow(warpedChord, gap) ||
-                  (warpedChord <= 0.4 && 1.01 * warpedChord <= 16.0 * virtualChord && !flipped && !torn));
+                  (warpedChord <= 0.4 && 1.01 * warpedChord <= 16.0 * virtualChord && shapeKept));
 }
 
 // confvisDropTriangle, its atans spent only where surelyKept cannot tell (a loop run once or not

@@ -8,30 +8,26 @@
 #include "confvis_warp.glsl"
 #include "confvis_prepass_common.glsl"
 
-// The midpoint of edge e relative to c.
-vec3 edgeMidpointRelative(uint e) {
-  return 0.5 * (vertexRelative(edges[e].x) + vertexRelative(edges[e].y));
-}
-
-// What the first edge pass reads of an edge, once: its corners' virtual points relative to c,
+// What the edge passes read of an edge, once: its vertices, their virtual points relative to c,
 // their unit directions and their warps (and unit warp directions). Loading and normalizing them
 // once per test cost lavapipe, which gathers every load lane by lane, much of that pass (1.5M
 // edges at 1M triangles).
 struct EdgeEnds {
+  uvec2 v;              // vertex numbers, edges[e]
   vec3 ra, rb, ua, ub;  // virtual points relative to c, unit
   vec4 wa, wb;          // warps
   vec3 va, vb;          // unit warp directions
 };
 
 EdgeEnds loadEdgeEnds(uint e) {
-  uvec2 v = edges[e];
   EdgeEnds ends;
-  ends.ra = vertexRelative(v.x);
-  ends.rb = vertexRelative(v.y);
+  ends.v = edges[e];
+  ends.ra = vertexRelative(ends.v.x);
+  ends.rb = vertexRelative(ends.v.y);
   ends.ua = normalize(ends.ra);
   ends.ub = normalize(ends.rb);
-  ends.wa = warped[v.x];
-  ends.wb = warped[v.y];
+  ends.wa = warped[ends.v.x];
+  ends.wb = warped[ends.v.y];
   ends.va = normalize(ends.wa.xyz);
   ends.vb = normalize(ends.wb.xyz);
   return ends;
@@ -48,52 +44,45 @@ bool edgeSurelyStraight(EdgeEnds ends, vec3 um) {
          chordBelow(directionChord(um, ends.wa.xyz + ends.wb.xyz), prepass.maxErrorAngle);
 }
 
-// Where the source's cut crosses edge e: the parameter t from its first vertex to its second,
+// Where the source's cut crosses the edge: the parameter t from its first vertex to its second,
 // by bisection on which end's warp the bilinear lookup lands nearer. The blend flips sides
 // halfway between the texel centres on either side, where the four-texel lookup flips too.
 // 14 steps: 1/16384 of an edge (a few thousandths of a pixel at 480-pixel walls).
-float cutCrossing(uint e) {
-  uvec2 v = edges[e];
-  vec3 rx = vertexRelative(v.x), ry = vertexRelative(v.y);
-  vec3 wx = warped[v.x].xyz, wy = warped[v.y].xyz;
+float cutCrossing(EdgeEnds ends) {
   float lo = 0.0, hi = 1.0;
   for (int step = 0; step < 14; ++step) {
     float m = 0.5 * (lo + hi);
-    vec3 relative = mix(rx, ry, m);
+    vec3 relative = mix(ends.ra, ends.rb, m);
     vec3 g = textureLod(confvisGeomMap, relative, 0.0).xyz * length(relative);
-    bool nearFirst = distance(g, wx) <= distance(g, wy);
+    bool nearFirst = distance(g, ends.wa.xyz) <= distance(g, ends.wb.xyz);
     lo = nearFirst ? m : lo;
     hi = nearFirst ? hi : m;
   }
   return 0.5 * (lo + hi);
 }
 
-// Writes cut vertex `slot`: the point at t along edge e with the limit of the warp on the side
-// of the edge's vertex `own` (the other end: `other`). False where that limit is not clearly on
-// own's side or lies outside the source field.
-bool writeCutVertex(uint slot, uint e, float t, uint own, uint other) {
-  uvec2 v = edges[e];
-  CutVertex c = vertexBetween(v.x, v.y, t);
-  vec3 wOwn = warped[own].xyz;
-  c.warped = confvisWarpRelativeToward(mix(vertexRelative(v.x), vertexRelative(v.y), t), wOwn);
+// Writes cut vertex `slot`: the point at t along the edge with the limit of the warp on the side
+// of the end whose warp is wOwn (the other end's: wOther). False where that limit is not clearly
+// on own's side or lies outside the source field.
+bool writeCutVertex(uint slot, EdgeEnds ends, float t, vec3 wOwn, vec3 wOther) {
+  CutVertex c = vertexBetween(ends.v.x, ends.v.y, t);
+  c.warped = confvisWarpRelativeToward(mix(ends.ra, ends.rb, t), wOwn);
   storeCutVertex(slot, c);
-  return c.warped.w >= 0.5 &&
-         distance(c.warped.xyz, wOwn) < distance(c.warped.xyz, warped[other].xyz);
+  return c.warped.w >= 0.5 && distance(c.warped.xyz, wOwn) < distance(c.warped.xyz, wOther);
 }
 
 // Edge e's two cut vertices (EdgeCutVertices).
-void writeEdgeCutVertices(uint e) {
-  uint slot = atomicAdd(queueDispatch[kQueueCutVertices].count, 2u);
-  bool ok = slot + 2u <= cutVertexCapacity();
+void writeEdgeCutVertices(uint e, EdgeEnds ends) {
+  uint slot = reserveCutVertices(2u);
+  bool ok = slot != ~0u;
   float t = 0.5;
   for (uint once = 0u; once < (ok ? 1u : 0u); ++once) {
-    uvec2 v = edges[e];
-    t = cutCrossing(e);
-    ok = writeCutVertex(slot, e, t, v.x, v.y);
-    ok = writeCutVertex(slot + 1u, e, t, v.y, v.x) && ok;
+    t = cutCrossing(ends);
+    ok = writeCutVertex(slot, ends, t, ends.wa.xyz, ends.wb.xyz);
+    ok = writeCutVertex(slot + 1u, ends, t, ends.wb.xyz, ends.wa.xyz) && ok;
   }
   // Slots written but not clearly on their sides keep the top bit (kCutVertexUnsure).
-  edgeCutVertex[e] = uvec2(slot + 2u > cutVertexCapacity() ? ~0u : ok ? slot : slot | kCutVertexUnsure,
+  edgeCutVertex[e] = uvec2(slot == ~0u ? ~0u : ok ? slot : slot | kCutVertexUnsure,
                            floatBitsToUint(t));
 }
 
@@ -150,8 +139,7 @@ void writeSmoothEdgeLevel(uint e, EdgeEnds ends, vec4 midpoint) {
   writeEdge(e, ends, midpoint, edgeLeavesField(ends, midpoint) ? -segments : segments, false);
 }
 
-void writeEdgeLevel(uint e, vec4 midpoint) {
-  EdgeEnds ends = loadEdgeEnds(e);
+void writeEdgeLevel(uint e, EdgeEnds ends, vec4 midpoint) {
   bool acrossCut;
   // The cut and its segments by the strictest bound, a smooth bend by the local one.
   float segments = confvisMeasureEdgeWithMidpoint(ends.ra, ends.rb, ends.wa.xyz, ends.wb.xyz,
@@ -162,7 +150,7 @@ void writeEdgeLevel(uint e, vec4 midpoint) {
   writeEdge(e, ends, midpoint, mayDrop ? -segments : segments, acrossCut);
   // A loop entered once or not at all (lavapipe runs both sides of an if for all SIMD lanes).
   for (uint once = 0u; once < (acrossCut && prepass.splitAlongCut != 0u ? 1u : 0u); ++once)
-    writeEdgeCutVertices(e);
+    writeEdgeCutVertices(e, ends);
 }
 
 #endif

@@ -341,6 +341,15 @@ float confvisRoundness(vec3 a, vec3 b, vec3 c) {
 // their shape: flips them, or turns them into a sliver 16 times flatter (a conformal map keeps
 // the shape of a small triangle). A milder 4x stretch rule dropped legitimately stretched
 // triangles near the corners of strongly curved displays and left gaps.
+// The warp flips the triangle a-b-c (orientation seen from c, the reference point) or tears it
+// into a sliver 16 times flatter: confvisDropTriangle's shape rules, shared with the pre-pass's
+// chord test (confvis_prepass_common.glsl, surelyKept).
+bool confvisFlipsOrTears(vec3 a, vec3 b, vec3 c, vec3 wa, vec3 wb, vec3 wc) {
+  bool flipped =
+      dot(cross(b - a, c - a), a + b + c) * dot(cross(wb - wa, wc - wa), wa + wb + wc) < 0.0;
+  return flipped || 16.0 * confvisRoundness(wa, wb, wc) < confvisRoundness(a, b, c);
+}
+
 bool confvisDropTriangle(vec3 a, vec3 b, vec3 c, vec4 wa, vec4 wb, vec4 wc, float minGap) {
   if (max(wa.w, max(wb.w, wc.w)) < 0.5) return true;
   float virtualSize = max(confvisAngle(a, b), max(confvisAngle(b, c), confvisAngle(c, a)));
@@ -348,10 +357,7 @@ bool confvisDropTriangle(vec3 a, vec3 b, vec3 c, vec4 wa, vec4 wb, vec4 wc, floa
       max(confvisAngle(wa.xyz, wb.xyz), max(confvisAngle(wb.xyz, wc.xyz), confvisAngle(wc.xyz, wa.xyz)));
   if (warpedSize <= minGap) return false;
   if (warpedSize > 16.0 * virtualSize) return true;
-  // Orientation as seen from c (the reference point), before and after the warp.
-  bool flipped = dot(cross(b - a, c - a), a + b + c) *
-                     dot(cross(wb.xyz - wa.xyz, wc.xyz - wa.xyz), wa.xyz + wb.xyz + wc.xyz) < 0.0;
-  return flipped || 16.0 * confvisRoundness(wa.xyz, wb.xyz, wc.xyz) < confvisRoundness(a, b, c);
+  return confvisFlipsOrTears(a, b, c, wa.xyz, wb.xyz, wc.xyz);
 }
 
 #endif  // CONFVIS_WARP_GLSL

@@ -28,11 +28,11 @@ VkDeviceSize ConformalPrepass::commandOffset(std::size_t draw, PrepassList list)
 }
 
 std::uint32_t ConformalPrepass::flatTriangles(std::size_t draw) const {
-  // Every triangle of the mesh is flat, on the bent list or outside the source field (FlatCounts
-  // of confvis_prepass_common.glsl counts those).
+  // Every triangle of the mesh is flat, on the bent list or outside the source field
+  // (UnseenCounts of confvis_prepass_common.glsl counts those).
   const std::uint32_t triangles = (rangeEnds_[draw] - rangeStarts_[draw]) / 3;
   const std::uint32_t bent = static_cast<const BentDispatch*>(bentDispatch_.mapped())[draw].count;
-  const std::uint32_t unseen = static_cast<const std::uint32_t*>(flatCounts_.mapped())[draw];
+  const std::uint32_t unseen = static_cast<const std::uint32_t*>(unseenCounts_.mapped())[draw];
   return triangles - bent - unseen;
 }
 
@@ -78,7 +78,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   queueDispatch_ = dispatches(3);  // vertices, edges; [2].count counts the cut vertices
   queuedVertices_ = uintList(scene.vertexCount());
   queuedEdges_ = uintList(scene.edgeCount());
-  flatCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
+  unseenCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
   edgeFlags_ = uintList(scene.edgeCount());
   edgeCutVertices_ = uintList(2 * scene.edgeCount());
@@ -113,7 +113,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       scene.edgeBuffer(),   scene.triangleEdgeBuffer(), VK_NULL_HANDLE,
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
       bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
-      queuedEdges_.get(),   flatCounts_.get(),           edgeFlags_.get(),
+      queuedEdges_.get(),   unseenCounts_.get(),         edgeFlags_.get(),
       straightDispatch_.get(), straightTriangles_.get(), relative_.get(),
       VK_NULL_HANDLE,       VK_NULL_HANDLE,              edgeCutVertices_.get()};
   for (std::uint32_t i = 0; i < buffers.size(); ++i)
@@ -163,14 +163,14 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   // Empty lists (the flat list spans the mesh's range: writeFlat), one instance, each mesh's own
   // index range and vertex offset.
   auto* commands = static_cast<VkDrawIndexedIndirectCommand*>(commands_.mapped());
-  auto* flatCounts = static_cast<std::uint32_t*>(flatCounts_.mapped());
+  auto* unseenCounts = static_cast<std::uint32_t*>(unseenCounts_.mapped());
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
     const GpuScene::Draw& draw = scene.draws()[d];
     for (std::uint32_t list = 0; list < kPrepassLists; ++list)
       commands[kPrepassLists * d + list] = {0, 1, draw.firstIndex, draw.vertexOffset, 0};
     commands[kPrepassLists * d + static_cast<std::uint32_t>(PrepassList::Flat)].indexCount =
         draw.indexCount;
-    flatCounts[d] = 0;
+    unseenCounts[d] = 0;
     commands[kPrepassLists * d + static_cast<std::uint32_t>(PrepassList::Pieces)].firstIndex =
         kPieceCapacity * draw.firstIndex;
   }

@@ -239,11 +239,11 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
       if (view.params.w != 0.0f) {  // tessellation on
         thresholds.maxErrorAngle = std::min(thresholds.maxErrorAngle, view.params.x);
         thresholds.maxSegmentAngle = view.params.y;
-        thresholds.errorWalls = plan.errorWalls;
       }
       thresholds.minGap = std::min(thresholds.minGap, view.params.z);
       thresholds.maxGap = std::max(thresholds.maxGap, view.params.z);
     }
+    if (thresholds.maxErrorAngle < 1e30f) thresholds.errorWalls = plan.errorWalls;
     const PrepassInputs inputs{scene.id(), mapHash_, plan.frame, thresholds};
     prepassReused_ = plan.reusePrepass && prepassCurrent_ && inputs == prepassInputs_;
     prepassSeconds_ = 0.0;
