@@ -60,23 +60,6 @@ double pairedRatio(const std::vector<double>& a, const std::vector<double>& b) {
   return ratios.empty() ? 0.0 : median(ratios);
 }
 
-Timing timeFrames(RenderBackend& backend, const DisplayConfig& config, const RetargetMap* map,
-                  const RenderSettings& settings, int repeats) {
-  backend.render(config, map, settings);  // warm-up: pipelines, map upload, targets
-  std::vector<double> wall, cpu;
-  Timing t;
-  for (int i = 0; i < repeats; ++i) {
-    const auto start = Clock::now();
-    const double cpuStart = cpuSeconds();
-    t.last = backend.render(config, map, settings);
-    cpu.push_back(cpuSeconds() - cpuStart);
-    wall.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-  }
-  t.seconds = median(wall);
-  t.cpu = median(cpu);
-  return t;
-}
-
 struct TimedRun {
   RenderBackend* backend;
   const RetargetMap* map;  // nullptr: plain
@@ -110,6 +93,12 @@ std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const Dis
     timings[r].cpuFrames = cpu[r];
   }
   return timings;
+}
+
+// One run's frames: a warm-up, then `repeats` timed (the mode follows `map`).
+Timing timeFrames(RenderBackend& backend, const DisplayConfig& config, const RetargetMap* map,
+                  const RenderSettings& settings, int repeats) {
+  return timeInterleaved({{&backend, map}}, config, settings, repeats).front();
 }
 
 // Fraction of the unambiguous pixels (away from colour edges) of the centre-eye render that are
