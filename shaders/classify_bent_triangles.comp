@@ -202,7 +202,10 @@ bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
   if (at == ~0u) return false;
   uint offset = uint(prepass.vertexOffset);
   uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
-  for (uint k = 1u; k <= between; ++k) writeEdgeVertex(slot + k - 1u, va, vb, float(k) / float(n));
+  // The middle point's slot stays unwritten: the fan uses the pre-pass's midpoint there.
+  for (uint k = 1u; k <= between; ++k)
+    for (uint once = 0u; once < (2u * k != n ? 1u : 0u); ++once)
+      writeEdgeVertex(slot + k - 1u, va, vb, float(k) / float(n));
   // Each edge's first cut vertex continues the side of its first vertex.
   uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
   bool uFirstOnX = edges[edge[b]].x == vu, uFirstOnY = edges[edge[a]].x == vu;
