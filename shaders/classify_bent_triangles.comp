@@ -266,7 +266,7 @@ void main() {
   uint edge[3];
   float inner = 1.0;
   for (uint k = 0u; k < 3u; ++k) {
-    edge[k] = triangleEdges[base + k];
+    edge[k] = triangleEdge(base + k);
     rawLevels[k] = levels[k] = edgeLevels[edge[k]];
     // Pieces are dropped across the cut or entirely outside the source field: an edge whose
     // samples all lie inside (validity 0.5 or more, the rim's blend) loses none, however close

@@ -4,15 +4,17 @@
 // warped midpoint and its tessellation level once. The triangles on both sides read the same
 // result (classify_triangles.comp, then warp.tesc), so shared edges get the same subdivision
 // and leave no cracks; the midpoint's warp is the costly part and is no longer done per triangle
-// and per view. This pass finishes the edges whose midpoint the bilinear blend warps and whose
-// halves surely span no jump: the straight ones by chord tests alone (most of a finely meshed
-// scene's), the bent ones by the measurement itself; the others (next to the cut) are queued for
-// classify_edges_bent.comp. (Before, every edge too long for the straight test was queued: all
-// of a 20k-triangle scene's, 2.6 ms of its 9.5 ms pre-pass on lavapipe, which ran the
-// four-texel lookup for each.)
+// and per view. This pass finishes the edges the chord tests find straight (most of a finely
+// meshed scene's) and queues the others for classify_edges_bent.comp, which measures the smooth
+// ones and queues the rest for the four-texel lookup next to the cut (classify_edges_at_cut.comp).
+// Lavapipe runs a branch for a whole SIMD group as soon as one lane takes it: measuring the
+// 10k smooth edges of a 1M-triangle sphere here cost 30 ms of a 55 ms pass, packed together in
+// the queue 3 ms. A coarse scene, whose edges mostly bend, pays ~1 ms for the queue (20k
+// triangles).
 #include "confvis_prepass_edges.glsl"
 
 layout(local_size_x = 64) in;
+layout(constant_id = 0) const bool kSmoothEdgesInline = false;
 
 void main() {
   uint e = gl_GlobalInvocationID.x;
@@ -20,17 +22,7 @@ void main() {
   EdgeEnds ends = loadEdgeEnds(e);
   vec4 midpoint;
   bool plain = confvisWarpRelativeBilinear(0.5 * (ends.ra + ends.rb), midpoint);
-  vec3 um = normalize(midpoint.xyz);
-  bool straight = plain && edgeSurelyStraight(ends, um);
+  bool straight = plain && edgeSurelyStraight(ends, normalize(midpoint.xyz));
   if (straight) writeStraightEdgeLevel(e, ends, midpoint);
-  // Loops run once or not at all: lavapipe runs both sides of an if (and of &&) for all SIMD
-  // lanes but leaves a loop that no lane runs, and the tests and atans below are wasted on the
-  // straight edges, most of a finely meshed scene's (evaluated for every edge, they cost 20 ms of
-  // a 1M-triangle frame).
-  bool bentSmoothly = false;
-  for (uint once = 0u; once < (plain && !straight ? 1u : 0u); ++once)
-    bentSmoothly = edgeSurelyWithoutJump(ends, um);
-  for (uint once = 0u; once < (bentSmoothly ? 1u : 0u); ++once)
-    writeSmoothEdgeLevel(e, ends, midpoint);
-  if (!straight && !bentSmoothly) enqueue(kQueueEdges, e);
+  else enqueue(kQueueEdges, e);
 }

@@ -15,9 +15,9 @@ layout(local_size_x = 64) in;
 
 void classify(uint t) {
   uint base = prepass.firstIndex + 3u * t;
-  uint i[3] = uint[3](indices[base], indices[base + 1u], indices[base + 2u]);
-  uint flags = edgeFlags[triangleEdges[base]] & edgeFlags[triangleEdges[base + 1u]] &
-               edgeFlags[triangleEdges[base + 2u]];
+  uint i[3] = uint[3](sceneIndex(base), sceneIndex(base + 1u), sceneIndex(base + 2u));
+  uint flags = edgeFlagsOf(triangleEdge(base)) & edgeFlagsOf(triangleEdge(base + 1u)) &
+               edgeFlagsOf(triangleEdge(base + 2u));
   bool unseen = (flags & kEdgeUnseen) != 0u;  // every corner outside the source field
   bool straight = !unseen && (flags & kEdgeStraight) != 0u;
   bool drawnFlat = straight && (flags & kEdgeSmall) != 0u;

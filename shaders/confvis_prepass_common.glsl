@@ -72,10 +72,13 @@ const uint kBentGroup = 64u;  // local_size_x of classify_bent_triangles.comp
 // vertex and edge paid for the four-texel lookup and the full edge measurement (0.13 s of a 0.5 s
 // frame at 1M triangles). [0]: vertices, [1]: edges; BentDispatch's layout, reset to 0, 1, 1, 0
 // from the host.
-layout(set = 2, binding = 13, std430) buffer QueueDispatches { BentDispatch queueDispatch[3]; };
+layout(set = 2, binding = 13, std430) buffer QueueDispatches { BentDispatch queueDispatch[4]; };
 layout(set = 2, binding = 14, std430) buffer QueuedVertices { uint queuedVertices[]; };
 layout(set = 2, binding = 15, std430) buffer QueuedEdges { uint queuedEdges[]; };
 const uint kQueueVertices = 0u, kQueueEdges = 1u;
+// [3]: the bent edges that classify_edges_bent.comp cannot find smooth, for the four-texel lookup
+// next to the cut (classify_edges_at_cut.comp), in the second half of QueuedEdges.
+const uint kQueueEdgesAtCut = 3u;
 // [2].count: the cut vertices' slots taken so far (CutVertices below), [2].groupsX: the triangles
 // split along the cut (for the frame's statistics).
 const uint kQueueCutVertices = 2u;
@@ -106,7 +109,7 @@ layout(set = 2, binding = 19, std430) buffer StraightTriangles { uint straightTr
 void enqueue(uint queue, uint item) {
   uint slot = atomicAdd(queueDispatch[queue].count, 1u);
   if (queue == kQueueVertices) queuedVertices[slot] = item;
-  else queuedEdges[slot] = item;
+  else queuedEdges[queue == kQueueEdgesAtCut ? uint(queuedEdges.length()) / 2u + slot : slot] = item;
   if (slot % kBentGroup == 0u) atomicMax(queueDispatch[queue].groupsX, slot / kBentGroup + 1u);
 }
 
@@ -165,6 +168,26 @@ void appendStraight(uint t) {
 // (xyz), written once by warp_vertices.comp; the later passes read it instead of transforming the
 // vertex again (each edge and triangle reads two or three).
 layout(set = 2, binding = 20, std430) buffer Relative { vec4 relative[]; };
+
+// The same data as some of the storage buffers above, as uniform texel buffers (PrepassTexels
+// of backends/vulkan/src/pipelines.hpp), for the reads of the passes over every vertex, edge and
+// triangle: lavapipe gathers a texel fetch for all SIMD lanes at once but loads from a storage
+// buffer lane by lane (an edge's two warps cost 6 ms of a 1M-triangle edge pass as storage
+// loads, 1 ms as texel fetches). Written through the storage buffers, read through these after
+// the pass that wrote them.
+layout(set = 2, binding = 25) uniform samplerBuffer vertexTexels;    // Vertices, 2 texels each
+layout(set = 2, binding = 26) uniform samplerBuffer relativeTexels;  // Relative
+layout(set = 2, binding = 27) uniform samplerBuffer warpedTexels;    // Warped, scene vertices
+layout(set = 2, binding = 28) uniform usamplerBuffer edgeTexels;     // Edges
+layout(set = 2, binding = 29) uniform usamplerBuffer indexTexels;    // Indices
+layout(set = 2, binding = 30) uniform usamplerBuffer triangleEdgeTexels;  // TriangleEdges
+layout(set = 2, binding = 31) uniform usamplerBuffer edgeFlagTexels;      // EdgeFlags
+
+vec4 vertexWarp(uint v) { return texelFetch(warpedTexels, int(v)); }
+uvec2 sceneEdge(uint e) { return texelFetch(edgeTexels, int(e)).xy; }
+uint sceneIndex(uint at) { return texelFetch(indexTexels, int(at)).x; }
+uint triangleEdge(uint at) { return texelFetch(triangleEdgeTexels, int(at)).x; }
+uint edgeFlagsOf(uint e) { return texelFetch(edgeFlagTexels, int(e)).x; }
 
 // The vertices classify_bent_triangles.comp makes where the source's cut crosses an edge, one
 // per side: the point on the cut with that side's limit of the warp, for the pieces list. Slot s
@@ -286,21 +309,21 @@ float errorAngleToward(vec3 d) {
 // Virtual point of vertex v in the physical frame, relative to the map's reference point, from
 // the scene's vertices (warp_vertices.comp; the others read vertexRelative).
 vec3 transformVertex(uint v) {
-  vec3 p = vec3(vertices[8u * v], vertices[8u * v + 1u], vertices[8u * v + 2u]);
+  vec3 p = texelFetch(vertexTexels, int(2u * v)).xyz;
   return (frame.worldToPhysical * vec4(p, 1.0)).xyz - frame.warpCentre.xyz;
 }
 
 // The same, as warp_vertices.comp stored it.
-vec3 vertexRelative(uint v) { return relative[v].xyz; }
+vec3 vertexRelative(uint v) { return texelFetch(relativeTexels, int(v)).xyz; }
 
 // The triangle whose indices start at `base`: its vertex indices, virtual points relative to c
 // and warps (warp_vertices.comp).
 void loadTriangle(uint base, out uint i[3], out vec3 r[3], out vec4 w[3]) {
   for (uint k = 0u; k < 3u; ++k) {
-    i[k] = indices[base + k];
+    i[k] = sceneIndex(base + k);
     uint v = uint(prepass.vertexOffset) + i[k];
     r[k] = vertexRelative(v);
-    w[k] = warped[v];
+    w[k] = vertexWarp(v);
   }
 }
 

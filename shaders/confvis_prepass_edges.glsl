@@ -21,13 +21,13 @@ struct EdgeEnds {
 
 EdgeEnds loadEdgeEnds(uint e) {
   EdgeEnds ends;
-  ends.v = edges[e];
+  ends.v = sceneEdge(e);
   ends.ra = vertexRelative(ends.v.x);
   ends.rb = vertexRelative(ends.v.y);
   ends.ua = normalize(ends.ra);
   ends.ub = normalize(ends.rb);
-  ends.wa = warped[ends.v.x];
-  ends.wb = warped[ends.v.y];
+  ends.wa = vertexWarp(ends.v.x);
+  ends.wb = vertexWarp(ends.v.y);
   ends.va = normalize(ends.wa.xyz);
   ends.vb = normalize(ends.wb.xyz);
   return ends;

@@ -52,8 +52,10 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   const std::size_t indexBytes = scene.triangleCount() * 3 * sizeof(std::uint32_t);
   const VkBufferUsageFlags indexUsage =
       VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  constexpr VkBufferUsageFlags kTexels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
   warped_ = Buffer(context_, scene.extendedVertexCount() * sizeof(glm::vec4),
-                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | kTexels,
+                   false);
   flat_ = Buffer(context_, indexBytes, indexUsage, false);
   pieces_ = Buffer(context_, kPieceCapacity * indexBytes, indexUsage, false);
   tessellated_ = Buffer(context_, indexBytes, indexUsage, false);
@@ -75,22 +77,25 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   bentTriangles_ = uintList(scene.triangleCount());
   straightDispatch_ = dispatches(scene.draws().size());
   straightTriangles_ = uintList(scene.triangleCount());
-  queueDispatch_ = dispatches(3);  // vertices, edges; [2].count counts the cut vertices
+  // Vertices, edges, [2].count counts the cut vertices, edges at the cut (QueueDispatches).
+  queueDispatch_ = dispatches(4);
   queuedVertices_ = uintList(scene.vertexCount());
-  queuedEdges_ = uintList(scene.edgeCount());
+  queuedEdges_ = uintList(2 * scene.edgeCount());  // the bent edges', then the cut's queue
   unseenCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-  edgeFlags_ = uintList(scene.edgeCount());
+  edgeFlags_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * 4,
+                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | kTexels, false);  // uint per edge
   edgeCutVertices_ = uintList(2 * scene.edgeCount());
   relative_ = Buffer(context_, std::max<std::size_t>(scene.vertexCount(), 1) * sizeof(glm::vec4),
-                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | kTexels, false);
 
   const VkDevice device = context_.device();
   patchLevels_ = Buffer(context_, scene.triangleCount() * 3 * sizeof(glm::vec4),
                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-  const std::array<VkDescriptorPoolSize, 2> sizes = {{
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kPrepassBindings - 1},
+  const std::array<VkDescriptorPoolSize, 3> sizes = {{
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kPrepassFirstTexelBinding - 1},
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+      {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, kPrepassBindings - kPrepassFirstTexelBinding},
   }};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 1;
@@ -107,7 +112,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   check(vkAllocateDescriptorSets(device, &allocInfo, &set_), "vkAllocateDescriptorSets");
   // Bindings of confvis_prepass_common.glsl, in order; the scene's vertices, their warps, the
   // edge levels and the cut vertices below.
-  const std::array<VkBuffer, kPrepassBindings> buffers = {
+  const std::array<VkBuffer, kPrepassFirstTexelBinding> buffers = {
       VK_NULL_HANDLE,       scene.indexBuffer(),         VK_NULL_HANDLE,
       flat_.get(),          tessellated_.get(),          commands_.get(),
       scene.edgeBuffer(),   scene.triangleEdgeBuffer(), VK_NULL_HANDLE,
@@ -135,6 +140,29 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
            scene.extendedVertexCount());
   bindPart(kPrepassCutWarpsBinding, warped_.get(), sizeof(glm::vec4), cuts,
            scene.extendedVertexCount());
+  // The texel views (PrepassTexels), in binding order.
+  const std::size_t vertices = scene.vertexCount(), edges = scene.edgeCount();
+  const std::size_t indices = 3 * scene.triangleCount();
+  texelViews_.clear();
+  const auto view = [&](VkBuffer buffer, VkFormat format, VkDeviceSize texelBytes,
+                        std::size_t elements, const char* what) {
+    const auto binding = kPrepassFirstTexelBinding + static_cast<std::uint32_t>(texelViews_.size());
+    texelViews_.push_back(texelView(context_, buffer, format, texelBytes, elements, what));
+    writeTexelBufferDescriptor(device, set_, binding, texelViews_.back().get());
+  };
+  static_assert(sizeof(Vertex) == 2 * sizeof(glm::vec4));
+  view(scene.vertexBuffer(), VK_FORMAT_R32G32B32A32_SFLOAT, sizeof(glm::vec4), 2 * vertices,
+       "the scene's vertices");
+  view(relative_.get(), VK_FORMAT_R32G32B32A32_SFLOAT, sizeof(glm::vec4), vertices,
+       "the vertices' virtual points");
+  view(warped_.get(), VK_FORMAT_R32G32B32A32_SFLOAT, sizeof(glm::vec4), vertices,
+       "the vertices' warps");
+  view(scene.edgeBuffer(), VK_FORMAT_R32G32_UINT, sizeof(glm::uvec2), edges, "the scene's edges");
+  view(scene.indexBuffer(), VK_FORMAT_R32_UINT, sizeof(std::uint32_t), indices,
+       "the scene's indices");
+  view(scene.triangleEdgeBuffer(), VK_FORMAT_R32_UINT, sizeof(std::uint32_t), indices,
+       "the triangles' edges");
+  view(edgeFlags_.get(), VK_FORMAT_R32_UINT, sizeof(std::uint32_t), edges, "the edge flags");
   rangeStarts_.clear();
   rangeEnds_.clear();
   for (const GpuScene::Draw& draw : scene.draws()) {
@@ -178,7 +206,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   auto* straight = static_cast<BentDispatch*>(straightDispatch_.mapped());
   for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = straight[d] = {0, 1, 1, 0};
   auto* queues = static_cast<BentDispatch*>(queueDispatch_.mapped());
-  queues[0] = queues[1] = queues[2] = {0, 1, 1, 0};
+  for (int q = 0; q < 4; ++q) queues[q] = {0, 1, 1, 0};
 
   // The previous frame's draws read what this frame overwrites.
   vkCmdPipelineBarrier(cmd,
@@ -226,6 +254,9 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   barrier();
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdgesBent());
   vkCmdDispatchIndirect(cmd, queueDispatch_.get(), sizeof(BentDispatch));
+  barrier();
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdgesAtCut());
+  vkCmdDispatchIndirect(cmd, queueDispatch_.get(), 3 * sizeof(BentDispatch));
   barrier();
 
   // Per mesh: its triangles, directly (first pass) or over one of its lists (indirect).

@@ -100,6 +100,7 @@ class ConformalPrepass {
   Buffer errorWalls_;  // uniform: ErrorWall[kMaxErrorWalls], host-visible
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::vector<UniqueBufferView> texelViews_;  // PrepassTexels, after the set that uses them
 };
 
 }  // namespace confvis::vulkan

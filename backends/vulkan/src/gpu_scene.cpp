@@ -108,16 +108,17 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
   const MeshEdges edges = buildMeshEdges(indices, ranges);
   edgeCount_ = edges.edges.size();
   appendConformalVertices(vertices, edges.edges);
+  // Storage buffers and texel buffers of the conformal pre-pass (PrepassTexels).
+  constexpr VkBufferUsageFlags kPrepass =
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
   vertices_ = uploadBuffer(context, vertices.data(), vertices.size() * sizeof(Vertex),
-                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | kPrepass);
   indices_ = uploadBuffer(context, indices.data(), indices.size() * sizeof(std::uint32_t),
-                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | kPrepass);
   edges_ = uploadBuffer(context, edges.edges.data(), edges.edges.size() * sizeof(glm::uvec2),
-                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-  triangleEdges_ =
-      uploadBuffer(context, edges.triangleEdges.data(),
-                   edges.triangleEdges.size() * sizeof(std::uint32_t),
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                        kPrepass);
+  triangleEdges_ = uploadBuffer(context, edges.triangleEdges.data(),
+                                edges.triangleEdges.size() * sizeof(std::uint32_t), kPrepass);
 }
 
 void GpuScene::appendConformalVertices(std::vector<Vertex>& vertices,

@@ -1,7 +1,9 @@
 #include "memory.hpp"
 
+#include <algorithm>
 #include <cstring>
 
+#include "confvis/base/error.hpp"
 #include "vk_check.hpp"
 
 namespace confvis::vulkan {
@@ -139,6 +141,37 @@ void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t b
   write.descriptorType = type;
   write.pBufferInfo = &info;
   vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+void writeTexelBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                                VkBufferView view) {
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+  write.pTexelBufferView = &view;
+  vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
+}
+
+UniqueBufferView texelView(VulkanContext& context, VkBuffer buffer, VkFormat format,
+                           VkDeviceSize texelBytes, std::size_t elements, const std::string& what) {
+  VkPhysicalDeviceProperties properties;
+  vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
+  if (elements > properties.limits.maxTexelBufferElements)
+    throw Error(ErrorCode::DeviceUnsupported,
+                "Vulkan device '" + std::string(properties.deviceName) + "' holds at most " +
+                    std::to_string(properties.limits.maxTexelBufferElements) +
+                    " texels in a texel buffer; the conformal pre-pass needs " +
+                    std::to_string(elements) + " for " + what);
+  VkBufferViewCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_VIEW_CREATE_INFO};
+  info.buffer = buffer;
+  info.format = format;
+  info.offset = 0;
+  info.range = std::max<std::size_t>(elements, 1) * texelBytes;
+  VkBufferView view = VK_NULL_HANDLE;
+  check(vkCreateBufferView(context.device(), &info, nullptr, &view), "vkCreateBufferView");
+  return UniqueBufferView(context.device(), view);
 }
 
 void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,

@@ -3,6 +3,7 @@
 // transitions and readback of rendered layers.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include <vulkan/vulkan.h>
 
@@ -35,6 +36,12 @@ class Buffer {
 // A device-local buffer holding `size` bytes of `data` (copied through a staging buffer).
 Buffer uploadBuffer(VulkanContext& context, const void* data, std::size_t size,
                     VkBufferUsageFlags usage);
+
+// A texel view of `elements` texels of `format` (texelBytes each) from the start of `buffer`
+// (created with VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT). Throws DeviceUnsupported where the
+// device's maxTexelBufferElements is smaller; `what` names the data in that message.
+UniqueBufferView texelView(VulkanContext& context, VkBuffer buffer, VkFormat format,
+                           VkDeviceSize texelBytes, std::size_t elements, const std::string& what);
 
 struct ImageSpec {
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -77,6 +84,8 @@ void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t b
 void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
                            VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset,
                            VkDeviceSize range);
+void writeTexelBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
+                                VkBufferView view);
 void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
                           VkSampler sampler, VkImageView view);
 

@@ -39,8 +39,26 @@ struct PushConstants {
   std::int32_t vertexOffset;   // tessellated draws: the mesh's (warp.vert reads the indices)
 };
 
-// Storage buffers of set 2 in confvis_prepass_common.glsl.
-inline constexpr std::uint32_t kPrepassBindings = 25;
+// Set 2 of confvis_prepass_common.glsl: storage buffers, one uniform buffer
+// (kPrepassErrorWallsBinding), then from kPrepassFirstTexelBinding on uniform texel buffers
+// (PrepassTexels).
+inline constexpr std::uint32_t kPrepassFirstTexelBinding = 25;
+// The texel buffer views, in binding order: what the passes over every vertex, edge and triangle
+// read. Lavapipe gathers a texel fetch for all SIMD lanes at once but loads from a storage buffer
+// lane by lane (the two warps an edge reads: 6 ms of a 1M-triangle edge pass as storage, 1 ms
+// as texels).
+enum class PrepassTexels : std::uint32_t {
+  Vertices,       // the scene's vertices as RGBA32F, two texels each (position, normal, uv)
+  Relative,       // the pre-pass's virtual points relative to c
+  Warped,         // their warps (the scene vertices' part)
+  Edges,          // RG32UI: the distinct edges' vertex pairs
+  Indices,        // R32UI: the scene's index buffer
+  TriangleEdges,  // R32UI: each triangle's edges
+  EdgeFlags,      // R32UI: the pre-pass's edge flags
+  Count
+};
+inline constexpr std::uint32_t kPrepassBindings =
+    kPrepassFirstTexelBinding + static_cast<std::uint32_t>(PrepassTexels::Count);
 // Those bound to parts of the scene's vertex buffer and of the warps (GpuScene's layout).
 inline constexpr std::uint32_t kPrepassVerticesBinding = 0;
 inline constexpr std::uint32_t kPrepassWarpedBinding = 2;
@@ -109,6 +127,7 @@ class Pipelines {
   VkPipeline warpVerticesAcrossCut() const { return warpVerticesAcrossCut_.get(); }
   VkPipeline classifyEdges() const { return classifyEdges_.get(); }
   VkPipeline classifyEdgesBent() const { return classifyEdgesBent_.get(); }
+  VkPipeline classifyEdgesAtCut() const { return classifyEdgesAtCut_.get(); }
   VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
   VkPipeline classifyStraightTriangles() const { return classifyStraightTriangles_.get(); }
   VkPipeline classifyBentTriangles() const { return classifyBentTriangles_.get(); }
@@ -141,7 +160,7 @@ class Pipelines {
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
   UniquePipeline warpVertices_, warpVerticesAcrossCut_, classifyEdges_, classifyEdgesBent_,
-      classifyTriangles_, classifyStraightTriangles_, classifyBentTriangles_;
+      classifyEdgesAtCut_, classifyTriangles_, classifyStraightTriangles_, classifyBentTriangles_;
   std::map<std::uint32_t, Pass> passes_;
 };
 

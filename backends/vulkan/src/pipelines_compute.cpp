@@ -8,6 +8,7 @@
 #include "vk_check.hpp"
 
 #include "confvis_spirv/classify_bent_triangles_comp.h"
+#include "confvis_spirv/classify_edges_at_cut_comp.h"
 #include "confvis_spirv/classify_edges_bent_comp.h"
 #include "confvis_spirv/classify_edges_comp.h"
 #include "confvis_spirv/classify_straight_triangles_comp.h"
@@ -37,11 +38,12 @@ UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
 void Pipelines::createComputePipelines() {
   const VkDevice device = context_.device();
   std::vector<VkDescriptorSetLayoutBinding> buffers;
-  for (std::uint32_t binding = 0; binding < kPrepassBindings; ++binding)
-    buffers.push_back({binding,
-                       binding == kPrepassErrorWallsBinding ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                                            : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                       1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  for (std::uint32_t binding = 0; binding < kPrepassBindings; ++binding) {
+    VkDescriptorType type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    if (binding == kPrepassErrorWallsBinding) type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    if (binding >= kPrepassFirstTexelBinding) type = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+    buffers.push_back({binding, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  }
   prepassSetLayout_ = setLayout(device, buffers);
   computeLayout_ = pipelineLayout(
       device, {frameSetLayout_.get(), warpSetLayout_.get(), prepassSetLayout_.get()},
@@ -58,6 +60,8 @@ void Pipelines::createComputePipelines() {
   warpVerticesAcrossCut_ = computePipeline(device, layout, warpAcrossCut);
   classifyEdges_ = computePipeline(device, layout, edges);
   classifyEdgesBent_ = computePipeline(device, layout, edgesBent);
+  const UniqueShaderModule edgesAtCut = shaderModule(device, kSpirv_classify_edges_at_cut_comp);
+  classifyEdgesAtCut_ = computePipeline(device, layout, edgesAtCut);
   classifyTriangles_ = computePipeline(device, layout, classify);
   const UniqueShaderModule bent = shaderModule(device, kSpirv_classify_bent_triangles_comp);
   classifyBentTriangles_ = computePipeline(device, layout, bent);

@@ -9,6 +9,7 @@
 #include "vulkan_test_support.hpp"
 // The module's own internals, to provoke a validation error on purpose.
 #include "../src/context.hpp"
+#include "../src/memory.hpp"
 
 namespace confvis {
 namespace {
@@ -75,6 +76,30 @@ TEST(VulkanDevice, ValidationMessagesReachTheCallback) {
   ASSERT_FALSE(messages.empty());
   EXPECT_NE(messages.front().find("VUID-VkBufferCreateInfo-size"), std::string::npos)
       << messages.front();
+}
+
+TEST(VulkanDevice, ScenesBeyondTheTexelBufferLimitAreRejectedWithTheLimit) {
+  // The conformal pre-pass reads the scene through texel buffer views: a scene needing more
+  // texels than the device allows gets a clear error, not a view the driver may reject or crash
+  // on. A view one texel past the limit is never created (the buffer stays one texel).
+  std::vector<std::string> messages;
+  vulkan::VulkanContext context(
+      {test::kLavapipe, true, [&](const std::string& m) { messages.push_back(m); }});
+  VkPhysicalDeviceProperties properties;
+  vkGetPhysicalDeviceProperties(context.physicalDevice(), &properties);
+  const std::size_t limit = properties.limits.maxTexelBufferElements;
+  vulkan::Buffer buffer(context, 16, VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT, false);
+  expectError(
+      [&] {
+        vulkan::texelView(context, buffer.get(), VK_FORMAT_R32_UINT, 4, limit + 1,
+                          "the scene's indices");
+      },
+      ErrorCode::DeviceUnsupported,
+      {std::to_string(limit), std::to_string(limit + 1), "the scene's indices", "llvmpipe"});
+  // Within the limit: a view, and no validation message.
+  EXPECT_NE(vulkan::texelView(context, buffer.get(), VK_FORMAT_R32_UINT, 4, 4, "four").get(),
+            VK_NULL_HANDLE);
+  EXPECT_TRUE(messages.empty()) << messages.front();
 }
 
 TEST(VulkanDevice, AutomaticChoicePrefersARealGpuThatHasEveryFeature) {
