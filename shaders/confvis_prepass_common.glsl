@@ -96,8 +96,11 @@ layout(set = 2, binding = 17, std430) buffer EdgeFlags { uint edgeFlags[]; };
 // kEdgeAcrossCut where the edge spans the source's cut (confvisHalvesSpanJump on its halves).
 // kEdgeOutside where a corner or the midpoint lies outside the source field (validity below
 // 0.5): only then can the geometry shader drop pieces of its triangles for being outside.
+// kEdgeTame where the warped edge's chord is at most 0.4 and 16 times the virtual one's (with
+// surelyKept's 1 % margin): a triangle of three such edges passes surelyKept's chord rules, and
+// only its shape is left to test (classify_triangles.comp).
 const uint kEdgeStraight = 1u, kEdgeSmall = 2u, kEdgeUnseen = 4u, kEdgeAcrossCut = 8u,
-           kEdgeOutside = 16u;
+           kEdgeOutside = 16u, kEdgeTame = 32u;
 
 // Per mesh, as the bent list: the straight triangles too large after the warp for
 // classify_triangles.comp to tell whether confvisDropTriangle keeps them, for

@@ -89,8 +89,11 @@ void writeEdgeCutVertices(uint e, EdgeEnds ends) {
 // Edge e's level and flags (EdgeFlags), `segments` its level (negative where it may lose pieces).
 void writeEdge(uint e, EdgeEnds ends, vec4 midpoint, float segments, bool acrossCut) {
   edgeLevels[e] = vec4(midpoint.xyz, segments);
-  bool small = chordBelow(length(ends.va - ends.vb), prepass.minGap);
+  float warpedChord = length(ends.va - ends.vb);
+  bool small = chordBelow(warpedChord, prepass.minGap);
+  bool tame = warpedChord <= 0.4 && 1.01 * warpedChord <= 16.0 * length(ends.ua - ends.ub);
   edgeFlags[e] = (abs(segments) == 1.0 ? kEdgeStraight : 0u) | (small ? kEdgeSmall : 0u) |
+                 (tame ? kEdgeTame : 0u) |
                  (max(ends.wa.w, ends.wb.w) < 0.5 ? kEdgeUnseen : 0u) |
                  (acrossCut ? kEdgeAcrossCut : 0u) |
                  (min(midpoint.w, min(ends.wa.w, ends.wb.w)) < 0.5 ? kEdgeOutside : 0u);
