@@ -185,7 +185,7 @@ void appendFan(uint at, uint x, uint e, uint n, uint ip, uint iq, uint slot) {
 
 bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
   // X where the cut crosses u-a (edge[b], opposite b), Y where it crosses b-u (edge[a]): the
-  // edges' cut vertices (classify_edges_bent.comp).
+  // edges' cut vertices (classify_edges_at_cut.comp).
   uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
   uint x = edgeCutVertex[edge[b]].x, y = edgeCutVertex[edge[a]].x;
   if (x >= kCutVertexUnsure || y >= kCutVertexUnsure) return false;  // unsure, or none

@@ -66,8 +66,8 @@ const uint kBentGroup = 64u;  // local_size_x of classify_bent_triangles.comp
 
 // The few vertices and edges the cheap first passes cannot finish, queued by warp_vertices.comp
 // (lookups the bilinear blend alone cannot do: confvisSampleGeomBilinear false, next to the cut)
-// and classify_edges.comp (those and the edges that may bend, stretch or span the cut) for
-// passes of their own (warp_vertices_across_cut.comp, classify_edges_bent.comp, dispatched
+// and classify_edges.comp (the edges that may bend, stretch or span the cut) for passes of their
+// own (warp_vertices_across_cut.comp, classify_edges_bent.comp, dispatched
 // indirectly): lavapipe runs both sides of a branch for all SIMD lanes, so in one pass every
 // vertex and edge paid for the four-texel lookup and the full edge measurement (0.13 s of a 0.5 s
 // frame at 1M triangles). [0]: vertices, [1]: edges; BentDispatch's layout, reset to 0, 1, 1, 0
@@ -220,7 +220,7 @@ uint reserveCutVertices(uint count) {
 // y, the crossing's parameter from edges[e].x to edges[e].y (float bits). The first slot has
 // kCutVertexUnsure set where a side's limit did not land clearly on its side (next to the cut's
 // ends, where the jump is small) or outside the source field.
-// Made once per edge by classify_edges_bent.comp, where the few edges across the cut are packed
+// Made once per edge by classify_edges_at_cut.comp, where the few edges across the cut are packed
 // together, and shared by the two triangles on the edge: the bisection and the four-texel
 // lookups in the bent triangles' pass, run by whole SIMD groups for one triangle each, cost
 // 5 ms of a 20k-triangle scene's 9.5 ms pre-pass on lavapipe.

@@ -1,5 +1,6 @@
 // Conformal pre-pass: edge e's warped midpoint and tessellation level (classify_edges.comp for
-// the straight edges, classify_edges_bent.comp for the others).
+// the straight edges, classify_edges_bent.comp for the smoothly bent ones,
+// classify_edges_at_cut.comp for the others).
 // The level's sign tells whether the edge may lose pieces to confvisDropTriangle (negative: it
 // spans the cut, or part of it lies outside the source field).
 #ifndef CONFVIS_PREPASS_EDGES_GLSL

@@ -1,7 +1,7 @@
 // The conformal pre-pass compute pipelines (warp_vertices.comp, warp_vertices_across_cut.comp,
-// classify_edges.comp, classify_edges_bent.comp, classify_triangles.comp,
-// classify_straight_triangles.comp, classify_bent_triangles.comp) and their layout: set 0 the frame, set 1 the warp map, set 2 the
-// pre-pass buffers.
+// classify_edges.comp, classify_edges_bent.comp, classify_edges_at_cut.comp,
+// classify_triangles.comp, classify_straight_triangles.comp, classify_bent_triangles.comp) and
+// their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
 #include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
 
 #include "pipelines.hpp"
