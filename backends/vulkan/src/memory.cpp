@@ -9,6 +9,17 @@
 namespace confvis::vulkan {
 namespace {
 
+// One descriptor of `type` at `binding`; the caller points it at its buffer, view or image.
+VkWriteDescriptorSet descriptorWrite(VkDescriptorSet set, std::uint32_t binding,
+                                     VkDescriptorType type) {
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  return write;
+}
+
 UniqueMemory allocate(VulkanContext& context, const VkMemoryRequirements& requirements,
                       VkMemoryPropertyFlags flags) {
   VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
@@ -134,22 +145,15 @@ void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t b
                            VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset,
                            VkDeviceSize range) {
   const VkDescriptorBufferInfo info{buffer, offset, range};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = type;
+  VkWriteDescriptorSet write = descriptorWrite(set, binding, type);
   write.pBufferInfo = &info;
   vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 }
 
 void writeTexelBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
                                 VkBufferView view) {
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
+  VkWriteDescriptorSet write =
+      descriptorWrite(set, binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER);
   write.pTexelBufferView = &view;
   vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 }
@@ -177,11 +181,8 @@ UniqueBufferView texelView(VulkanContext& context, VkBuffer buffer, VkFormat for
 void writeImageDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,
                           VkSampler sampler, VkImageView view) {
   const VkDescriptorImageInfo info{sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = set;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  VkWriteDescriptorSet write =
+      descriptorWrite(set, binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
   write.pImageInfo = &info;
   vkUpdateDescriptorSets(device, 1, &write, 0, nullptr);
 }
