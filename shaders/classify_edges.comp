@@ -14,7 +14,6 @@
 #include "confvis_prepass_edges.glsl"
 
 layout(local_size_x = 64) in;
-layout(constant_id = 0) const bool kSmoothEdgesInline = false;
 
 void main() {
   uint e = gl_GlobalInvocationID.x;

@@ -111,8 +111,9 @@ layout(set = 2, binding = 19, std430) buffer StraightTriangles { uint straightTr
 // Queues vertex or edge `item` on `queue`, growing its dispatch to cover it.
 void enqueue(uint queue, uint item) {
   uint slot = atomicAdd(queueDispatch[queue].count, 1u);
+  uint atCut = queue == kQueueEdgesAtCut ? uint(queuedEdges.length()) / 2u : 0u;  // its half
   if (queue == kQueueVertices) queuedVertices[slot] = item;
-  else queuedEdges[queue == kQueueEdgesAtCut ? uint(queuedEdges.length()) / 2u + slot : slot] = item;
+  else queuedEdges[atCut + slot] = item;
   if (slot % kBentGroup == 0u) atomicMax(queueDispatch[queue].groupsX, slot / kBentGroup + 1u);
 }
 
