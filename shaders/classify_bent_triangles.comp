@@ -93,7 +93,7 @@ bool splitAlongCut(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge
   bool cut[3];
   uint cuts = 0u;
   for (uint k = 0u; k < 3u; ++k) {
-    cut[k] = (edgeFlags[edge[k]] & kEdgeAcrossCut) != 0u;
+    cut[k] = (edgeFlagsOf(edge[k]) & kEdgeAcrossCut) != 0u;
     cuts += cut[k] ? 1u : 0u;
   }
   uint u = !cut[0] ? 0u : !cut[1] ? 1u : 2u;
@@ -208,7 +208,7 @@ bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
       writeEdgeVertex(slot + k - 1u, va, vb, float(k) / float(n));
   // Each edge's first cut vertex continues the side of its first vertex.
   uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
-  bool uFirstOnX = edges[edge[b]].x == vu, uFirstOnY = edges[edge[a]].x == vu;
+  bool uFirstOnX = sceneEdge(edge[b]).x == vu, uFirstOnY = sceneEdge(edge[a]).x == vu;
   uint xu = cutBase + x + (uFirstOnX ? 0u : 1u), xa = cutBase + x + (uFirstOnX ? 1u : 0u);
   uint yu = cutBase + y + (uFirstOnY ? 0u : 1u), yb = cutBase + y + (uFirstOnY ? 1u : 0u);
   appendPiece(at, i[u], xu, yu);
@@ -225,8 +225,8 @@ bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge
   if (cutVertex.x == ~0u) return false;
   cutVertex.x &= ~kCutVertexUnsure;
   uint offset = uint(prepass.vertexOffset);
-  bool aFirst = edges[edge[k]].x == offset + i[a];
-  float t = uintBitsToFloat(cutVertex.y);  // from edges[edge[k]].x
+  bool aFirst = sceneEdge(edge[k]).x == offset + i[a];
+  float t = uintBitsToFloat(cutVertex.y);  // from sceneEdge(edge[k]).x
   vec3 rx = aFirst ? mix(r[a], r[b], t) : mix(r[b], r[a], t);
   uint xa = cutVertex.x + (aFirst ? 0u : 1u), xb = cutVertex.x + (aFirst ? 1u : 0u);
   // Side a: the fan from X over k -> a (edge[b]); side b: over b -> k (edge[a]).
@@ -271,7 +271,7 @@ void main() {
     // Pieces are dropped across the cut or entirely outside the source field: an edge whose
     // samples all lie inside (validity 0.5 or more, the rim's blend) loses none, however close
     // to the rim (before, any validity below 1 sent the patch through the geometry shader).
-    mayDrop = mayDrop || (edgeFlags[edge[k]] & (kEdgeAcrossCut | kEdgeOutside)) != 0u;
+    mayDrop = mayDrop || (edgeFlagsOf(edge[k]) & (kEdgeAcrossCut | kEdgeOutside)) != 0u;
     levels[k].w = abs(levels[k].w);
     split[k] = levels[k].w > 1.0;
     inner = max(inner, levels[k].w);

@@ -17,7 +17,7 @@ struct DrawCommand {  // VkDrawIndexedIndirectCommand
 
 // Vertices as uploaded (position, normal, uv: 8 floats each).
 layout(set = 2, binding = 0, std430) readonly buffer Vertices { float vertices[]; };
-layout(set = 2, binding = 1, std430) readonly buffer Indices { uint indices[]; };
+// Binding 1: unused (the indices are read through indexTexels below).
 // Per scene vertex: its warp relative to c, w = validity. The first part of the warps the draws
 // read (backends/vulkan/src/gpu_scene.hpp): the edge midpoints' (EdgeLevels) and the cut
 // vertices' (CutWarps) follow it.
@@ -30,10 +30,8 @@ layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint comp
 // ComplexIndices and PatchLevels: the first fills the mesh's range from its start, the second
 // from its end (its command's firstIndex is left at the range's start; the host knows the count).
 layout(set = 2, binding = 5, std430) buffer Commands { DrawCommand commands[]; };
-// The scene's distinct edges (vertex pairs) and, laid out like the indices, each triangle's edge
-// opposite each corner (mesh_edges.cpp).
-layout(set = 2, binding = 6, std430) readonly buffer Edges { uvec2 edges[]; };
-layout(set = 2, binding = 7, std430) readonly buffer TriangleEdges { uint triangleEdges[]; };
+// Bindings 6 and 7: unused (the edges and the triangles' edges are read through edgeTexels and
+// triangleEdgeTexels below).
 // Per edge: xyz = warped midpoint relative to c, w = tessellation segments, negative where pieces
 // of the edge's triangles may be dropped (classify_edges.comp). The midpoints' part of Warped, so
 // the flat pieces draw the midpoints by index with fixed-function fetch (warp_simple.vert).
@@ -182,10 +180,12 @@ layout(set = 2, binding = 20, std430) buffer Relative { vec4 relative[]; };
 layout(set = 2, binding = 25) uniform samplerBuffer vertexTexels;    // Vertices, 2 texels each
 layout(set = 2, binding = 26) uniform samplerBuffer relativeTexels;  // Relative
 layout(set = 2, binding = 27) uniform samplerBuffer warpedTexels;    // Warped, scene vertices
-layout(set = 2, binding = 28) uniform usamplerBuffer edgeTexels;     // Edges
-layout(set = 2, binding = 29) uniform usamplerBuffer indexTexels;    // Indices
-layout(set = 2, binding = 30) uniform usamplerBuffer triangleEdgeTexels;  // TriangleEdges
-layout(set = 2, binding = 31) uniform usamplerBuffer edgeFlagTexels;      // EdgeFlags
+// The scene's distinct edges (vertex pairs) and, laid out like the indices, each triangle's edge
+// opposite each corner (mesh_edges.cpp).
+layout(set = 2, binding = 28) uniform usamplerBuffer edgeTexels;
+layout(set = 2, binding = 29) uniform usamplerBuffer indexTexels;    // the scene's indices
+layout(set = 2, binding = 30) uniform usamplerBuffer triangleEdgeTexels;
+layout(set = 2, binding = 31) uniform usamplerBuffer edgeFlagTexels;  // EdgeFlags
 
 vec4 vertexWarp(uint v) { return texelFetch(warpedTexels, int(v)); }
 uvec2 sceneEdge(uint e) { return texelFetch(edgeTexels, int(e)).xy; }
@@ -217,8 +217,8 @@ uint reserveCutVertices(uint count) {
 
 // Per edge with kEdgeAcrossCut (and the split along the cut on): x, the first of the two cut
 // vertices where the cut crosses it, each side's limit of the warp there (the first continues
-// the side of edges[e].x, the second that of edges[e].y), or ~0u where they could not be made;
-// y, the crossing's parameter from edges[e].x to edges[e].y (float bits). The first slot has
+// the side of sceneEdge(e).x, the second that of sceneEdge(e).y), or ~0u where they could not be
+// made; y, the crossing's parameter from sceneEdge(e).x to sceneEdge(e).y (float bits). The first slot has
 // kCutVertexUnsure set where a side's limit did not land clearly on its side (next to the cut's
 // ends, where the jump is small) or outside the source field.
 // Made once per edge by classify_edges_at_cut.comp, where the few edges across the cut are packed

@@ -14,7 +14,7 @@
 // once per test cost lavapipe, which gathers every load lane by lane, much of that pass (1.5M
 // edges at 1M triangles).
 struct EdgeEnds {
-  uvec2 v;              // vertex numbers, edges[e]
+  uvec2 v;              // vertex numbers, sceneEdge(e)
   vec3 ra, rb, ua, ub;  // virtual points relative to c, unit
   vec4 wa, wb;          // warps
   vec3 va, vb;          // unit warp directions

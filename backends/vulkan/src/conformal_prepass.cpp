@@ -17,6 +17,10 @@ struct BentDispatch {
 };
 static_assert(sizeof(BentDispatch) == 16);
 
+// QueueDispatches of confvis_prepass_common.glsl: vertices, edges, the cut vertices' count,
+// edges at the cut.
+constexpr int kQueues = 4;
+
 }  // namespace
 
 ConformalPrepass::ConformalPrepass(VulkanContext& context, const Pipelines& pipelines)
@@ -77,8 +81,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   bentTriangles_ = uintList(scene.triangleCount());
   straightDispatch_ = dispatches(scene.draws().size());
   straightTriangles_ = uintList(scene.triangleCount());
-  // Vertices, edges, [2].count counts the cut vertices, edges at the cut (QueueDispatches).
-  queueDispatch_ = dispatches(4);
+  queueDispatch_ = dispatches(kQueues);
   queuedVertices_ = uintList(scene.vertexCount());
   queuedEdges_ = uintList(2 * scene.edgeCount());  // the bent edges', then the cut's queue
   unseenCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
@@ -111,11 +114,12 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   allocInfo.pSetLayouts = &layout;
   check(vkAllocateDescriptorSets(device, &allocInfo, &set_), "vkAllocateDescriptorSets");
   // Bindings of confvis_prepass_common.glsl, in order; the scene's vertices, their warps, the
-  // edge levels and the cut vertices below.
+  // edge levels and the cut vertices below; 1, 6 and 7 unused (the scene's indices and edges
+  // are read through texel views).
   const std::array<VkBuffer, kPrepassFirstTexelBinding> buffers = {
-      VK_NULL_HANDLE,       scene.indexBuffer(),         VK_NULL_HANDLE,
+      VK_NULL_HANDLE,       VK_NULL_HANDLE,              VK_NULL_HANDLE,
       flat_.get(),          tessellated_.get(),          commands_.get(),
-      scene.edgeBuffer(),   scene.triangleEdgeBuffer(), VK_NULL_HANDLE,
+      VK_NULL_HANDLE,       VK_NULL_HANDLE,              VK_NULL_HANDLE,
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
       bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
       queuedEdges_.get(),   unseenCounts_.get(),         edgeFlags_.get(),
@@ -206,7 +210,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   auto* straight = static_cast<BentDispatch*>(straightDispatch_.mapped());
   for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = straight[d] = {0, 1, 1, 0};
   auto* queues = static_cast<BentDispatch*>(queueDispatch_.mapped());
-  for (int q = 0; q < 4; ++q) queues[q] = {0, 1, 1, 0};
+  for (int q = 0; q < kQueues; ++q) queues[q] = {0, 1, 1, 0};
 
   // The previous frame's draws read what this frame overwrites.
   vkCmdPipelineBarrier(cmd,

@@ -108,17 +108,18 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
   const MeshEdges edges = buildMeshEdges(indices, ranges);
   edgeCount_ = edges.edges.size();
   appendConformalVertices(vertices, edges.edges);
-  // Storage buffers and texel buffers of the conformal pre-pass (PrepassTexels).
-  constexpr VkBufferUsageFlags kPrepass =
-      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
+  // The conformal pre-pass reads all four through texel views (PrepassTexels) and writes the
+  // cut vertices' attributes into the vertex buffer.
+  constexpr VkBufferUsageFlags kTexels = VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
   vertices_ = uploadBuffer(context, vertices.data(), vertices.size() * sizeof(Vertex),
-                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | kPrepass);
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                               kTexels);
   indices_ = uploadBuffer(context, indices.data(), indices.size() * sizeof(std::uint32_t),
-                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | kPrepass);
+                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT | kTexels);
   edges_ = uploadBuffer(context, edges.edges.data(), edges.edges.size() * sizeof(glm::uvec2),
-                        kPrepass);
+                        kTexels);
   triangleEdges_ = uploadBuffer(context, edges.triangleEdges.data(),
-                                edges.triangleEdges.size() * sizeof(std::uint32_t), kPrepass);
+                                edges.triangleEdges.size() * sizeof(std::uint32_t), kTexels);
 }
 
 void GpuScene::appendConformalVertices(std::vector<Vertex>& vertices,

@@ -34,7 +34,7 @@ class GpuScene {
   VkBuffer vertexBuffer() const { return vertices_.get(); }
   VkBuffer indexBuffer() const { return indices_.get(); }
   // The distinct edges (uvec2 of vertex indices) and each triangle's edges, laid out like the
-  // indices (mesh_edges.hpp); storage buffers for the conformal pre-pass.
+  // indices (mesh_edges.hpp); texel buffers for the conformal pre-pass.
   VkBuffer edgeBuffer() const { return edges_.get(); }
   VkBuffer triangleEdgeBuffer() const { return triangleEdges_.get(); }
   std::size_t edgeCount() const { return edgeCount_; }
