@@ -6,8 +6,10 @@
 // the config's real baked map (its cut and rim) at the default threshold. Threshold sweeps: under the zoom map against the closed form (checker colours
 // along T_ray of each pixel's direction), and under the config's real baked map against the
 // Embree backend's render of the centre eye (the backward path of design note §5).
-// Times are medians of wall-clock and of process CPU time (lavapipe renders on the CPU in this
-// process, so CPU time is the steadier measure on a shared machine). The timing table renders
+// Times are medians of wall-clock, of process CPU time (lavapipe renders on the CPU in this
+// process, so CPU time is the steadier measure on a shared machine) and of GPU time
+// (timestamps around the pre-pass and the render passes: on a GPU the host's submissions, waits
+// and readback dominate the wall clock, and a display application does not read its frames back). The timing table renders
 // plain, conformal and reused-pre-pass frames in turn, round after round, and its ratios are
 // medians of each round's ratio, so that a shared machine's drift cancels.
 #include <CLI/CLI.hpp>
@@ -47,16 +49,17 @@ double median(std::vector<double> v) {
 }
 
 struct Timing {
-  double seconds = 0, cpu = 0;  // medians per frame
-  std::vector<double> wall, cpuFrames;  // every timed frame, in order
+  double seconds = 0, cpu = 0, gpu = 0;  // medians per frame (gpu: 0 without timestamps)
+  std::vector<double> wall, cpuFrames, gpuFrames;  // every timed frame, in order
   RenderResult last;
 };
 
 // Median over the rounds of a's frame time over b's (timeInterleaved: frame i of each was timed
-// in the same round), so that the machine's drift between rounds cancels.
+// in the same round), so that the machine's drift between rounds cancels; 0 without times.
 double pairedRatio(const std::vector<double>& a, const std::vector<double>& b) {
   std::vector<double> ratios;
-  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) ratios.push_back(a[i] / b[i]);
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+    if (b[i] > 0.0) ratios.push_back(a[i] / b[i]);
   return ratios.empty() ? 0.0 : median(ratios);
 }
 
@@ -75,7 +78,7 @@ std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const Dis
     return settings;
   };
   for (const TimedRun& run : runs) run.backend->render(config, run.map, settingsFor(run));  // warm-up
-  std::vector<std::vector<double>> wall(runs.size()), cpu(runs.size());
+  std::vector<std::vector<double>> wall(runs.size()), cpu(runs.size()), gpu(runs.size());
   std::vector<Timing> timings(runs.size());
   for (int i = 0; i < repeats; ++i)
     for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -85,12 +88,17 @@ std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const Dis
       timings[r].last = runs[r].backend->render(config, runs[r].map, frameSettings);
       cpu[r].push_back(cpuSeconds() - cpuStart);
       wall[r].push_back(std::chrono::duration<double>(Clock::now() - start).count());
+      // The device's own time (timestamps around the pre-pass and the render passes): on a GPU
+      // the host's submissions, waits and readback dominate the wall clock.
+      gpu[r].push_back(timings[r].last.stats.value("gpu_seconds", 0.0));
     }
   for (std::size_t r = 0; r < runs.size(); ++r) {
     timings[r].seconds = median(wall[r]);
     timings[r].cpu = median(cpu[r]);
+    timings[r].gpu = median(gpu[r]);
     timings[r].wall = wall[r];
     timings[r].cpuFrames = cpu[r];
+    timings[r].gpuFrames = gpu[r];
   }
   return timings;
 }
@@ -244,9 +252,10 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
   const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
   settings.mode = RenderMode::Conformal;
   std::printf("\nsphere of %zu triangles under the baked %s map (%d texels a face), by "
-              "tessellation threshold\n%-10s %9s %7s %9s %7s %12s %8s %12s %8s\n",
+              "tessellation threshold\n%-10s %9s %7s %9s %7s %9s %7s %12s %8s %12s %8s\n",
               scene.triangleCount(), config.name.c_str(), bakeResolution, "error px", "conf s",
-              "ratio", "conf cpu", "ratio", "off Embree", "gaps", "tessellated", "with GS");
+              "ratio", "conf cpu", "ratio", "conf gpu", "ratio", "off Embree", "gaps",
+              "tessellated", "with GS");
   for (double error : sweepThresholds) {
     const Timing t = timeThreshold(options, error, scene, config, map, settings, repeats);
     saveImages(imageDir, error > 0.0 ? "vulkan-" + thresholdName(error) + "px" : "vulkan-untessellated",
@@ -255,9 +264,10 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
     if (embree)
       std::snprintf(offEmbree, sizeof offEmbree, "%.2f%%",
                     100.0 * imageDifference(t.last, *embree));
-    std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %12s %7.2f%% %12zu %8zu\n",
+    std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %9.5f %7.2f %12s %7.2f%% %12zu %8zu\n",
                 thresholdName(error).c_str(), t.seconds, t.seconds / plain.seconds, t.cpu,
-                t.cpu / plain.cpu, offEmbree, 100.0 * gapFraction(t.last),
+                t.cpu / plain.cpu, t.gpu, plain.gpu > 0.0 ? t.gpu / plain.gpu : 0.0, offEmbree,
+                100.0 * gapFraction(t.last),
                 t.last.stats.value("triangles_tessellated", std::size_t{0}),
                 t.last.stats.value("triangles_through_geometry_shader", std::size_t{0}));
     std::fflush(stdout);
@@ -349,9 +359,11 @@ int main(int argc, char** argv) {
                 config.name.c_str(), config.walls.size(), scale,
                 int(std::lround(config.walls[0].width * scale)),
                 int(std::lround(config.walls[0].height * scale)), repeats);
-    std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s %9s %9s %8s %14s\n", "scene",
-                "triangles", "map", "plain s", "conf s", "ratio", "plain cpu", "conf cpu", "ratio",
-                "prepass s", "tess", "with GS", "reused: ratio");
+    std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s %9s %9s %7s %9s %11s %9s %8s %14s "
+                "%9s\n",
+                "scene", "triangles", "map", "plain s", "conf s", "ratio", "plain cpu",
+                "conf cpu", "ratio", "plain gpu", "conf gpu", "ratio", "prepass s", "prepass gpu", "tess",
+                "with GS", "reused: ratio", "gpu");
     for (const auto& [name, triangles] : scenes) {
       const Scene scene = sphereWithTriangles(triangles);
       backend->setScene(scene);
@@ -368,14 +380,18 @@ int main(int argc, char** argv) {
             settings, repeats);
         const Timing &plain = t[0], &conformal = t[1], &reused = t[2];
         device = plain.last.stats.value("device", "?");
-        std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f %9.4f %9zu %8zu %14.2f\n",
+        std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f %9.5f %9.5f %7.2f "
+                    "%9.4f %11.5f %9zu %8zu %14.2f %9.2f\n",
                     name.c_str(), scene.triangleCount(), mapName, plain.seconds,
                     conformal.seconds, pairedRatio(conformal.wall, plain.wall), plain.cpu,
-                    conformal.cpu, pairedRatio(conformal.cpuFrames, plain.cpuFrames),
+                    conformal.cpu, pairedRatio(conformal.cpuFrames, plain.cpuFrames), plain.gpu,
+                    conformal.gpu, pairedRatio(conformal.gpuFrames, plain.gpuFrames),
                     conformal.last.stats.value("prepass_seconds", 0.0),
+                    conformal.last.stats.value("prepass_gpu_seconds", 0.0),
                     conformal.last.stats.value("triangles_tessellated", std::size_t{0}),
                     conformal.last.stats.value("triangles_through_geometry_shader", std::size_t{0}),
-                    pairedRatio(reused.wall, plain.wall));
+                    pairedRatio(reused.wall, plain.wall),
+                    pairedRatio(reused.gpuFrames, plain.gpuFrames));
         std::fflush(stdout);
       }
     }
@@ -387,18 +403,18 @@ int main(int argc, char** argv) {
       if (skipSweep || skipZoomSweep) break;
       const Scene scene = flat ? checkerCube(4) : sphereWithTriangles(20000);
       std::printf("\n%s under the zoom map, by tessellation threshold\n%-10s %9s %7s %9s %7s "
-                  "%18s %12s\n",
-                  sceneName, "error px", "conf s", "ratio", "conf cpu", "ratio",
-                  "off closed form", "tessellated");
+                  "%9s %7s %18s %12s\n",
+                  sceneName, "error px", "conf s", "ratio", "conf cpu", "ratio", "conf gpu",
+                  "ratio", "off closed form", "tessellated");
       settings.mode = RenderMode::Plain;
       backend->setScene(scene);
       const Timing plain = timeFrames(*backend, config, nullptr, settings, repeats);
       settings.mode = RenderMode::Conformal;
       for (double error : sweepThresholds) {
         const Timing t = timeThreshold(options, error, scene, config, zoom, settings, repeats);
-        std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %17.2f%% %12zu\n",
-                    thresholdName(error).c_str(),
-                    t.seconds, t.seconds / plain.seconds, t.cpu, t.cpu / plain.cpu,
+        std::printf("%-10s %9.4f %7.2f %9.4f %7.2f %9.5f %7.2f %17.2f%% %12zu\n",
+                    thresholdName(error).c_str(), t.seconds, t.seconds / plain.seconds, t.cpu,
+                    t.cpu / plain.cpu, t.gpu, plain.gpu > 0.0 ? t.gpu / plain.gpu : 0.0,
                     100.0 * closedFormError(t.last, config, flat, kZoom),
                     t.last.stats.value("triangles_tessellated", std::size_t{0}));
         std::fflush(stdout);

@@ -39,6 +39,8 @@ class VulkanContext {
   VkQueue queue() const { return queue_; }
   const DeviceCapabilities& capabilities() const { return capabilities_; }
   const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
+  // Valid bits of the queue's timestamps (0: it writes none).
+  std::uint32_t timestampValidBits() const { return timestampValidBits_; }
 
   // A memory type among typeBits with all `required` flags. Throws Error(DeviceUnsupported).
   std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required) const;
@@ -59,6 +61,7 @@ class VulkanContext {
   VkPhysicalDeviceMemoryProperties memory_{};
   DeviceCapabilities capabilities_;
   std::uint32_t queueFamily_ = 0;
+  std::uint32_t timestampValidBits_ = 0;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   VkCommandPool commandPool_ = VK_NULL_HANDLE;

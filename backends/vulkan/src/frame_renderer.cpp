@@ -17,7 +17,7 @@ namespace {
 }  // namespace
 
 FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
-    : context_(context), pipelines_(pipelines), prepass_(context, pipelines) {
+    : context_(context), pipelines_(pipelines), prepass_(context, pipelines), stopwatch_(context) {
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
@@ -131,6 +131,7 @@ void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
   begin.renderArea = {{0, 0}, {width, height}};
   begin.clearValueCount = 2;
   begin.pClearValues = clear.data();
+  stopwatch_.start(cmd);
   vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
   const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, {width, height}};
@@ -138,6 +139,7 @@ void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   recordDraws(cmd, pass, request, scene);
   vkCmdEndRenderPass(cmd);
+  stopwatch_.stop(cmd);
   // The pass left the colour layers in TRANSFER_SRC_OPTIMAL; its dependency orders this copy.
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, views};
@@ -206,15 +208,21 @@ std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
   const VkRenderPass renderPass = pipelines_.pass(request.views).renderPass.get();
   const Targets& t = targets(request.width, request.height, request.views, renderPass);
   context_.submitAndWait([&](VkCommandBuffer cmd) { recordPass(cmd, request, scene, t); });
+  addGpuSeconds(stopwatch_.seconds());
   std::vector<ImageRGBA> layers;
   for (std::uint32_t layer = 0; layer < request.views; ++layer)
     layers.push_back(layerToImage(t.readback, request.width, request.height, layer));
   return layers;
 }
 
+void FrameRenderer::addGpuSeconds(std::optional<double> seconds) {
+  if (gpuSeconds_ && seconds) *gpuSeconds_ += *seconds;
+}
+
 FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene) const {
   PrepassCounts counts;
   counts.seconds = prepassSeconds_;
+  counts.gpuSeconds = prepassGpuSeconds_;
   counts.reused = prepassReused_;
   counts.splitAlongCut = prepass_.trianglesSplitAlongCut();
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
@@ -230,6 +238,7 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
                                              const RetargetMap* map, bool multiview,
                                              Progress& progress) {
   const bool conformal = map != nullptr;
+  gpuSeconds_ = stopwatch_.available() ? std::optional<double>(0.0) : std::nullopt;
   if (conformal) uploadMap(*map);
   uploadFrame(plan);
   if (conformal) {
@@ -247,14 +256,19 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
     const PrepassInputs inputs{scene.id(), mapHash_, plan.frame, thresholds};
     prepassReused_ = plan.reusePrepass && prepassCurrent_ && inputs == prepassInputs_;
     prepassSeconds_ = 0.0;
+    prepassGpuSeconds_ = gpuSeconds_;  // 0 where reused
     if (!prepassReused_) {
       prepassCurrent_ = false;  // until the submission below has completed
       const auto start = std::chrono::steady_clock::now();
       context_.submitAndWait([&](VkCommandBuffer cmd) {
+        stopwatch_.start(cmd);
         prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
+        stopwatch_.stop(cmd);
       });
       prepassSeconds_ =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      prepassGpuSeconds_ = stopwatch_.seconds();
+      addGpuSeconds(prepassGpuSeconds_);
       prepassInputs_ = inputs;
       prepassCurrent_ = true;
     }

@@ -4,6 +4,7 @@
 // multiview pass), submission and readback into images.
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "confvis/base/progress.hpp"
 #include "conformal_prepass.hpp"
 #include "frame_plan.hpp"
+#include "gpu_stopwatch.hpp"
 #include "gpu_scene.hpp"
 #include "memory.hpp"
 #include "pipelines.hpp"
@@ -33,9 +35,14 @@ class FrameRenderer {
     std::size_t dropping = 0;               // tessellated with the geometry shader
     std::size_t splitAlongCut = 0;          // drawn in flat pieces up to the cut
     double seconds = 0.0;  // wall-clock time of the pre-pass submission (0 where reused)
+    std::optional<double> gpuSeconds;  // its GPU time (0 where reused; none without timestamps)
     bool reused = false;   // the previous conformal frame's pre-pass was still current
   };
   PrepassCounts prepassCounts(const GpuScene& scene) const;
+
+  // GPU time of the last frame: its pre-pass and every wall's render pass, without the copies
+  // for readback; nullopt where the queue writes no timestamps.
+  std::optional<double> gpuSeconds() const { return gpuSeconds_; }
 
  private:
   struct Targets {
@@ -46,6 +53,7 @@ class FrameRenderer {
   Targets& targets(std::uint32_t width, std::uint32_t height, std::uint32_t views,
                    VkRenderPass renderPass);
   void uploadFrame(const FramePlan& plan);
+  void addGpuSeconds(std::optional<double> seconds);
   void uploadMap(const RetargetMap& map);
   struct PassRequest {
     std::uint32_t width, height;
@@ -83,6 +91,8 @@ class FrameRenderer {
   PrepassInputs prepassInputs_;
   ConformalPrepass prepass_;
   double prepassSeconds_ = 0.0;
+  std::optional<double> prepassGpuSeconds_, gpuSeconds_;
+  GpuStopwatch stopwatch_;
   bool prepassReused_ = false;
 };
 

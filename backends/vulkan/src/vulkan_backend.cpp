@@ -79,6 +79,7 @@ class VulkanBackend final : public RenderBackend {
                     {"stereo_passes", multiview_ ? "multiview" : "per-eye"},
                     {"triangles", scene_->triangleCount()},
                     {"seconds", seconds}};
+    if (const auto gpu = frames_.gpuSeconds()) result.stats["gpu_seconds"] = *gpu;
     if (conformal) {
       result.stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
       result.stats["tessellation"] = options_.tessellate;
@@ -88,6 +89,7 @@ class VulkanBackend final : public RenderBackend {
       result.stats["triangles_through_geometry_shader"] = counts.dropping;
       result.stats["triangles_split_along_cut"] = counts.splitAlongCut;
       result.stats["prepass_seconds"] = counts.seconds;
+      if (counts.gpuSeconds) result.stats["prepass_gpu_seconds"] = *counts.gpuSeconds;
       result.stats["prepass_reused"] = counts.reused;
     }
     return result;

@@ -205,7 +205,7 @@ TEST(VulkanConformal, HeavilyTessellatedDrawsStayCorrect) {
   // match the closed form. Without validation layers: with them, lavapipe happened to draw even
   // the broken case correctly.
   VulkanOptions options;
-  options.device = test::kLavapipe;
+  options.device = test::testDevice();
   options.tessellationErrorPixels = 0.125;
   const std::unique_ptr<RenderBackend> vk = makeVulkanBackend(options);
   const DisplayConfig config = test::loadConfig("cave5");

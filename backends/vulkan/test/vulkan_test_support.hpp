@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -27,13 +28,20 @@ inline DisplayConfig loadConfig(const std::string& name) {
 // results are the same on every machine; CI has it, so its absence is a failure, not a skip.
 inline constexpr const char* kLavapipe = "llvmpipe";
 
+// The device the rendering tests use: lavapipe, or by hand CONFVIS_TEST_VULKAN_DEVICE (a name part
+// or an index, as --device takes), to check that a real GPU passes the same comparisons.
+inline std::string testDevice() {
+  const char* chosen = std::getenv("CONFVIS_TEST_VULKAN_DEVICE");
+  return chosen && *chosen ? chosen : kLavapipe;
+}
+
 // A lavapipe backend with validation layers; every message lands in `messages`.
 struct ValidatedBackend {
   std::shared_ptr<std::vector<std::string>> messages = std::make_shared<std::vector<std::string>>();
   std::unique_ptr<RenderBackend> backend;
 
   explicit ValidatedBackend(VulkanOptions options = {}) {
-    options.device = kLavapipe;
+    options.device = testDevice();
     options.validation = true;
     auto sink = messages;
     options.onValidationMessage = [sink](const std::string& m) { sink->push_back(m); };
