@@ -362,7 +362,8 @@ int main(int argc, char** argv) {
     std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s %9s %9s %7s %9s %11s %9s %8s %14s "
                 "%9s\n",
                 "scene", "triangles", "map", "plain s", "conf s", "ratio", "plain cpu",
-                "conf cpu", "ratio", "plain gpu", "conf gpu", "ratio", "prepass s", "prepass gpu", "tess",
+                "conf cpu", "ratio", "plain gpu", "conf gpu", "ratio", "prepass s", "prepass gpu",
+                "tess",
                 "with GS", "reused: ratio", "gpu");
     for (const auto& [name, triangles] : scenes) {
       const Scene scene = sphereWithTriangles(triangles);
