@@ -9,9 +9,9 @@
 // Times are medians of wall-clock, of process CPU time (lavapipe renders on the CPU in this
 // process, so CPU time is the steadier measure on a shared machine) and of GPU time
 // (timestamps around the pre-pass and the render passes: on a GPU the host's submissions, waits
-// and readback dominate the wall clock, and a display application does not read its frames back). The timing table renders
-// plain, conformal and reused-pre-pass frames in turn, round after round, and its ratios are
-// medians of each round's ratio, so that a shared machine's drift cancels.
+// and readback dominate the wall clock, and a display application does not read its frames
+// back). The timing table renders plain, conformal and reused-pre-pass frames in turn, round
+// after round, and its ratios are medians of each round's ratio, so that a shared machine's drift cancels.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
