@@ -11,7 +11,8 @@
 // (timestamps around the pre-pass and the render passes: on a GPU the host's submissions, waits
 // and readback dominate the wall clock, and a display application does not read its frames
 // back). The timing table renders plain, conformal and reused-pre-pass frames in turn, round
-// after round, and its ratios are medians of each round's ratio, so that a shared machine's drift cancels.
+// after round, and its ratios are medians of each round's ratio, so that a shared machine's
+// drift cancels.
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
