@@ -6,6 +6,8 @@
 #   tools/bench/device_check.sh [ARCHIVE] [DEVICE] [OUTDIR] [STEPS]
 #   (defaults: .device/bundle.tar.xz, auto (a discrete GPU first), $OUT or out/device-check,
 #   render,bench,bench-full-resolution,tests,goldens)
+# Step compare: the timing table of this benchmark and of BASELINE_BENCH (a confvis_bench_vulkan
+# built from another commit, same libraries) alternately, two rounds each.
 set -uo pipefail
 archive=${1:-.device/bundle.tar.xz}
 device=${2:-auto}
@@ -31,7 +33,7 @@ if [[ ! -e $src/configs ]]; then mkdir -p "$(dirname "$src")" && ln -sfn "$PWD" 
 bin=$root/bin
 step() {  # step NAME SECONDS COMMAND...: runs it under a time limit, logs to $out/NAME.txt
   local name=$1 limit=$2; shift 2
-  [[ $steps == *,$name,* ]] || return 0
+  [[ $steps == *,$name,* || ($name == compare-* && $steps == *,compare,*) ]] || return 0
   echo "== $name: $*"
   local start=$SECONDS
   timeout "$limit" "$@" >"$out/$name.txt" 2>&1
@@ -54,6 +56,12 @@ step bench 200 "$bin/confvis_bench_vulkan" --device "$device" --repeats 15 --ski
 # The display's own resolution; the readback of 5 float images dominates the wall clock there.
 step bench-full-resolution 180 "$bin/confvis_bench_vulkan" --device "$device" --scale 1 \
   --repeats 9 --maps identity,baked --skip-sweep
+for round in 1 2; do
+  [[ -n ${BASELINE_BENCH:-} ]] || break
+  step compare-baseline-$round 120 "$BASELINE_BENCH" --device "$device" --skip-sweep --repeats 25
+  step compare-current-$round 120 "$bin/confvis_bench_vulkan" --device "$device" --skip-sweep \
+    --repeats 25
+done
 # The goldens in a process of their own: NVIDIA's driver 580 refused vkCreateInstance
 # (VK_ERROR_INCOMPATIBLE_DRIVER) after one process had run 26 tests' backends, each with its own
 # instance.

@@ -63,15 +63,16 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   flat_ = Buffer(context_, indexBytes, indexUsage, false);
   pieces_ = Buffer(context_, kPieceCapacity * indexBytes, indexUsage, false);
   tessellated_ = Buffer(context_, indexBytes, indexUsage, false);
-  // Host-visible: reset from the host before every frame.
+  // Shared (host-visible): reset from the host before every frame.
   commands_ = Buffer(context_, commandOffset(scene.draws().size(), PrepassList::Flat),
                      VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                     true);
+                     BufferMemory::Shared);
 
-  // Indirect dispatches (host-visible: reset before every frame) and the uint lists they run.
+  // Indirect dispatches (shared: reset before every frame) and the uint lists they run.
   const auto dispatches = [&](std::size_t count) {
     return Buffer(context_, count * sizeof(BentDispatch),
-                  VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+                  VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                  BufferMemory::Shared);
   };
   const auto uintList = [&](std::size_t count) {
     return Buffer(context_, std::max<std::size_t>(count, 1) * sizeof(std::uint32_t),
@@ -85,7 +86,7 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   queuedVertices_ = uintList(scene.vertexCount());
   queuedEdges_ = uintList(2 * scene.edgeCount());  // the bent edges', then the cut's queue
   unseenCounts_ = Buffer(context_, scene.draws().size() * sizeof(std::uint32_t),
-                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, BufferMemory::Shared);
   edgeFlags_ = Buffer(context_, std::max<std::size_t>(scene.edgeCount(), 1) * 4,
                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | kTexels, false);  // uint per edge
   edgeCutVertices_ = uintList(2 * scene.edgeCount());
@@ -185,7 +186,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   // 20k-triangle pre-pass). More walls than it holds: the strictest bound everywhere.
   if (errorWalls_.get() == VK_NULL_HANDLE)
     errorWalls_ = Buffer(context_, kMaxErrorWalls * sizeof(ErrorWall),
-                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+                         VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, BufferMemory::Shared);
   writeBufferDescriptor(context_.device(), set_, kPrepassErrorWallsBinding,
                         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, errorWalls_.get());
   const std::size_t errorWalls =

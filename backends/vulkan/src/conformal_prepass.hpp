@@ -93,11 +93,11 @@ class ConformalPrepass {
   // The vertices queued for lookups across the cut, the edges for full measurement: two
   // BentDispatch, the lists (uint each).
   Buffer queueDispatch_, queuedVertices_, queuedEdges_;
-  Buffer unseenCounts_;  // uint per mesh, host-visible: its triangles outside the source field
+  Buffer unseenCounts_;  // uint per mesh, shared: its triangles outside the source field
   Buffer edgeFlags_;   // uint per scene edge
   Buffer edgeCutVertices_;  // uvec2 per scene edge: its cut vertices' first slot, the crossing
   Buffer relative_;    // vec4 per scene vertex: its point relative to c
-  Buffer errorWalls_;  // uniform: ErrorWall[kMaxErrorWalls], host-visible
+  Buffer errorWalls_;  // uniform: ErrorWall[kMaxErrorWalls], shared
   UniqueDescriptorPool pool_;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   std::vector<UniqueBufferView> texelViews_;  // PrepassTexels, after the set that uses them

@@ -264,11 +264,17 @@ void VulkanContext::release() noexcept {
   instance_ = VK_NULL_HANDLE;
 }
 
-std::uint32_t VulkanContext::memoryType(std::uint32_t typeBits,
-                                        VkMemoryPropertyFlags required) const {
+std::optional<std::uint32_t> VulkanContext::findMemoryType(
+    std::uint32_t typeBits, VkMemoryPropertyFlags required) const {
   for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i)
     if ((typeBits & (1u << i)) && (memory_.memoryTypes[i].propertyFlags & required) == required)
       return i;
+  return std::nullopt;
+}
+
+std::uint32_t VulkanContext::memoryType(std::uint32_t typeBits,
+                                        VkMemoryPropertyFlags required) const {
+  if (const auto found = findMemoryType(typeBits, required)) return *found;
   throw Error(ErrorCode::DeviceUnsupported, "Vulkan device '" + capabilities_.name +
                                                 "' has no memory type with flags " +
                                                 std::to_string(required));

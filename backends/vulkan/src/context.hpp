@@ -4,6 +4,7 @@
 // one-shot command submission for uploads and frames.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,9 @@ class VulkanContext {
 
   // A memory type among typeBits with all `required` flags. Throws Error(DeviceUnsupported).
   std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required) const;
+  // The same, nullopt where the device has none.
+  std::optional<std::uint32_t> findMemoryType(std::uint32_t typeBits,
+                                              VkMemoryPropertyFlags required) const;
 
   // Records into a fresh primary command buffer, submits it and waits for it to finish.
   void submitAndWait(const std::function<void(VkCommandBuffer)>& record);

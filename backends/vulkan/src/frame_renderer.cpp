@@ -41,7 +41,8 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
   check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
   frameSet_ = sets[0];
   warpSet_ = sets[1];
-  frameBuffer_ = Buffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+  frameBuffer_ = Buffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                        BufferMemory::Shared);
   writeBufferDescriptor(device, frameSet_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                         frameBuffer_.get());
   const VkSamplerCreateInfo samplerInfo = warpSamplerInfo();
@@ -89,7 +90,7 @@ void FrameRenderer::uploadFrame(const FramePlan& plan) {
   std::memcpy(frameBuffer_.mapped(), &plan.frame, sizeof(FrameUniforms));
   const std::size_t bytes = plan.views.size() * sizeof(ViewData);
   if (viewBuffer_.size() < bytes) {
-    viewBuffer_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+    viewBuffer_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, BufferMemory::Shared);
     writeBufferDescriptor(context_.device(), frameSet_, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                           viewBuffer_.get());
   }

@@ -24,7 +24,18 @@ UniqueMemory allocate(VulkanContext& context, const VkMemoryRequirements& requir
                       VkMemoryPropertyFlags flags) {
   VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   info.allocationSize = requirements.size;
-  info.memoryTypeIndex = context.memoryType(requirements.memoryTypeBits, flags);
+  constexpr VkMemoryPropertyFlags kHost =
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  const auto shared =
+      flags == (kHost | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT)
+          ? context.findMemoryType(requirements.memoryTypeBits, flags)
+          : std::nullopt;
+  info.memoryTypeIndex =
+      shared ? *shared
+             : context.memoryType(requirements.memoryTypeBits,
+                                  (flags & kHost) != 0
+                                      ? kHost
+                                      : VkMemoryPropertyFlags{VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT});
   VkDeviceMemory memory = VK_NULL_HANDLE;
   check(vkAllocateMemory(context.device(), &info, nullptr, &memory), "vkAllocateMemory");
   return UniqueMemory(context.device(), memory);
@@ -33,8 +44,9 @@ UniqueMemory allocate(VulkanContext& context, const VkMemoryRequirements& requir
 }  // namespace
 
 Buffer::Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
-               bool hostVisible)
+               BufferMemory memory)
     : size_(size) {
+  const bool hostVisible = memory != BufferMemory::Device;
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
   info.usage = usage;
@@ -44,10 +56,12 @@ Buffer::Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usa
   buffer_ = UniqueBuffer(context.device(), buffer);
   VkMemoryRequirements requirements;
   vkGetBufferMemoryRequirements(context.device(), buffer, &requirements);
-  memory_ = allocate(context, requirements,
-                     hostVisible ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
-                                       VK_MEMORY_PROPERTY_HOST_COHERENT_BIT
-                                 : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  VkMemoryPropertyFlags flags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  if (memory == BufferMemory::Host)
+    flags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  else if (memory == BufferMemory::Shared)
+    flags |= VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  memory_ = allocate(context, requirements, flags);
   check(vkBindBufferMemory(context.device(), buffer, memory_.get(), 0), "vkBindBufferMemory");
   if (hostVisible)
     check(vkMapMemory(context.device(), memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped_),

@@ -13,11 +13,21 @@
 
 namespace confvis::vulkan {
 
+// Where a buffer's memory lies. Host: host-visible (staging, readback: the host reads it fast).
+// Shared: small buffers the GPU works on (atomics, indirect commands, per-frame uniforms) and
+// the host writes or reads a few bytes of: device-local and host-visible where the device has
+// such memory (always on lavapipe and integrated GPUs; a discrete GPU's BAR), else Host, since a
+// discrete GPU's atomics and indirect reads in host memory cross the bus.
+enum class BufferMemory { Device, Host, Shared };
+
 class Buffer {
  public:
   Buffer() = default;
-  // Host-visible memory (`hostVisible`) is mapped for the buffer's lifetime.
-  Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible);
+  // Host-visible memory (Host, Shared) is mapped for the buffer's lifetime.
+  Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage,
+         BufferMemory memory);
+  Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible)
+      : Buffer(context, size, usage, hostVisible ? BufferMemory::Host : BufferMemory::Device) {}
   Buffer(Buffer&&) noexcept = default;
   Buffer& operator=(Buffer&&) noexcept = default;
 
