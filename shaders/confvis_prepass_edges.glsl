@@ -34,14 +34,29 @@ EdgeEnds loadEdgeEnds(uint e) {
   return ends;
 }
 
+// The edge's warped halves surely do not span a jump (confvisHalvesSpanJump would find none): its
+// rules on chords instead of angles. A chord c = 2 sin(angle / 2) is below its angle and, up to
+// c = 0.4 (23 degrees), above it by less than 0.7 %: with a 1 % margin every rule holds for the
+// angles too. An edge it does not accept may still be smooth (classify_edges_bent.comp decides).
+// um: the warped midpoint's unit direction.
+bool edgeSurelyWithoutJump(EdgeEnds ends, vec3 um) {
+  float halfA = length(ends.va - um), halfB = length(um - ends.vb);
+  float longer = max(halfA, halfB), shorter = min(halfA, halfB);
+  float floor8 = 8.0 * prepass.maxErrorAngle;
+  return longer <= 0.4 && 1.01 * longer <= max(3.0 * shorter, floor8) &&
+         1.01 * (halfA + halfB) <= max(3.0 * length(ends.va - ends.vb), floor8);
+}
+
 // Edge e is drawn in one segment and spans no cut, as writeEdgeLevel would find: it is short,
-// its warped halves are too short to span a jump and its warped midpoint lies within the error
-// bound of the chord. Conservative (chords below angles, with a margin): an edge it does not
-// accept may still be straight. um: the warped midpoint's unit direction.
+// its warped halves do not span a jump (edgeSurelyWithoutJump, the rules of the bent edges' pass:
+// a fixed multiple of the error bound instead made every edge of a 1M-triangle sphere longer
+// than four pixels at 1920-pixel walls go through that pass, 68 of a 140 ms pre-pass on
+// lavapipe) and its warped midpoint lies within the error bound of the chord. Conservative
+// (chords below angles, with a margin): an edge it does not accept may still be straight.
+// um: the warped midpoint's unit direction.
 bool edgeSurelyStraight(EdgeEnds ends, vec3 um) {
   return chordBelow(length(ends.ua - ends.ub), prepass.maxSegmentAngle) &&
-         chordBelow(max(length(ends.va - um), length(um - ends.vb)),
-                    8.0 * prepass.maxErrorAngle) &&
+         edgeSurelyWithoutJump(ends, um) &&
          chordBelow(directionChord(um, ends.wa.xyz + ends.wb.xyz), prepass.maxErrorAngle);
 }
 
@@ -108,19 +123,6 @@ bool edgeLeavesField(EdgeEnds ends, vec4 midpoint) {
 // writeEdgeLevel for an edge edgeSurelyStraight accepts: one segment.
 void writeStraightEdgeLevel(uint e, EdgeEnds ends, vec4 midpoint) {
   writeEdge(e, ends, midpoint, edgeLeavesField(ends, midpoint) ? -1.0 : 1.0, false);
-}
-
-// The edge's warped halves surely do not span a jump (confvisHalvesSpanJump would find none): its
-// rules on chords instead of angles. A chord c = 2 sin(angle / 2) is below its angle and, up to
-// c = 0.4 (23 degrees), above it by less than 0.7 %: with a 1 % margin every rule holds for the
-// angles too. An edge it does not accept may still be smooth (classify_edges_bent.comp decides).
-// um: the warped midpoint's unit direction.
-bool edgeSurelyWithoutJump(EdgeEnds ends, vec3 um) {
-  float halfA = length(ends.va - um), halfB = length(um - ends.vb);
-  float longer = max(halfA, halfB), shorter = min(halfA, halfB);
-  float floor8 = 8.0 * prepass.maxErrorAngle;
-  return longer <= 0.4 && 1.01 * longer <= max(3.0 * shorter, floor8) &&
-         1.01 * (halfA + halfB) <= max(3.0 * length(ends.va - ends.vb), floor8);
 }
 
 // confvisSmoothEdgeSegments with the bound of the wall that shows the warped midpoint wm
