@@ -15,8 +15,10 @@ struct CliRun {
   std::string output;  // stdout and stderr together
 };
 
-inline CliRun runCli(const std::string& args) {
-  const std::string command = std::string(CONFVIS_CLI_PATH) + " " + args + " 2>&1";
+// `environment`: assignments put before the command ("NAME=value ...").
+inline CliRun runCli(const std::string& args, const std::string& environment = "") {
+  const std::string command =
+      environment + " " + std::string(CONFVIS_CLI_PATH) + " " + args + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   std::string output;
   std::array<char, 4096> buffer;

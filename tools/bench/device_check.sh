@@ -46,9 +46,8 @@ step() {  # step NAME SECONDS COMMAND...: runs it under a time limit, logs to $o
   echo "driver manifest: ${VK_DRIVER_FILES:-none}"; [[ -n ${VK_DRIVER_FILES:-} ]] && cat "$VK_DRIVER_FILES"
   echo "source dir: $src"
   ls /usr/local/nvidia/share/vulkan/icd.d /usr/share/vulkan/icd.d /etc/vulkan/icd.d 2>&1
-  # An unknown device's error lists the devices the loader found (its own errors beside them).
-  VK_LOADER_DEBUG=error,warn "$root/bin/confvis_bench_vulkan" --device no-such-device --skip-20k \
-    --skip-1m --skip-sweep 2>&1 | head -n 30
+  # The devices the loader found (its own errors beside them).
+  VK_LOADER_DEBUG=error,warn "$root/bin/confvis" devices 2>&1 | head -n 30
 } | tee "$out/environment.txt"
 step render 60 "$bin/confvis" render --backend vulkan --device "$device" -o "$root/render"
 cp "$root"/render/*front*.png "$root"/render/*left*.png "$out/" 2>/dev/null  # two walls' previews

@@ -121,6 +121,11 @@ std::vector<VulkanDeviceInfo> listVulkanDevices() {
     infos.push_back({static_cast<int>(i), devices[i].name, vulkan::toString(devices[i].kind),
                      versionString(devices[i].apiVersion),
                      vulkan::missingRequirements(devices[i])});
+  try {
+    infos[vulkan::chooseDevice(devices, "")].automatic = true;
+  } catch (const Error&) {
+    // No device is usable: none is marked, and each lists what it lacks.
+  }
   return infos;
 }
 

@@ -62,6 +62,7 @@ struct VulkanDeviceInfo {
   std::string type;    // "discrete", "integrated", "virtual", "cpu", "other"
   std::string apiVersion;
   std::vector<std::string> missing;  // required features it lacks; empty = usable
+  bool automatic = false;  // the device VulkanOptions::device "" / "auto" picks
 };
 
 // Every Vulkan device the loader reports. Error(DeviceUnsupported) if no Vulkan driver is
