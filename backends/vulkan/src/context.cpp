@@ -79,12 +79,17 @@ DeviceKind kindOf(VkPhysicalDeviceType type) {
   }
 }
 
-std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device) {
+std::vector<VkQueueFamilyProperties> queueFamilies(VkPhysicalDevice device) {
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
-  for (std::uint32_t i = 0; i < count; ++i)
+  return families;
+}
+
+std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device) {
+  const std::vector<VkQueueFamilyProperties> families = queueFamilies(device);
+  for (std::uint32_t i = 0; i < families.size(); ++i)
     if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) return i;
   return std::nullopt;
 }
@@ -210,11 +215,7 @@ void VulkanContext::createDevice() {
   vkGetPhysicalDeviceProperties(physicalDevice_, &properties_);
   vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memory_);
   queueFamily_ = *graphicsQueueFamily(physicalDevice_);  // chooseDevice required one
-  std::uint32_t familyCount = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, nullptr);
-  std::vector<VkQueueFamilyProperties> families(familyCount);
-  vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice_, &familyCount, families.data());
-  timestampValidBits_ = families[queueFamily_].timestampValidBits;
+  timestampValidBits_ = queueFamilies(physicalDevice_)[queueFamily_].timestampValidBits;
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queueInfo.queueFamilyIndex = queueFamily_;

@@ -21,24 +21,27 @@ VkWriteDescriptorSet descriptorWrite(VkDescriptorSet set, std::uint32_t binding,
 }
 
 UniqueMemory allocate(VulkanContext& context, const VkMemoryRequirements& requirements,
-                      VkMemoryPropertyFlags flags) {
+                      std::uint32_t memoryType) {
   VkMemoryAllocateInfo info{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   info.allocationSize = requirements.size;
-  constexpr VkMemoryPropertyFlags kHost =
-      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  const auto shared =
-      flags == (kHost | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT)
-          ? context.findMemoryType(requirements.memoryTypeBits, flags)
-          : std::nullopt;
-  info.memoryTypeIndex =
-      shared ? *shared
-             : context.memoryType(requirements.memoryTypeBits,
-                                  (flags & kHost) != 0
-                                      ? kHost
-                                      : VkMemoryPropertyFlags{VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT});
+  info.memoryTypeIndex = memoryType;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   check(vkAllocateMemory(context.device(), &info, nullptr, &memory), "vkAllocateMemory");
   return UniqueMemory(context.device(), memory);
+}
+
+// The memory type for a buffer's `memory` among typeBits (see BufferMemory).
+std::uint32_t bufferMemoryType(const VulkanContext& context, std::uint32_t typeBits,
+                               BufferMemory memory) {
+  constexpr VkMemoryPropertyFlags kHost =
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  if (memory == BufferMemory::Device)
+    return context.memoryType(typeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  if (memory == BufferMemory::Shared)
+    if (const auto shared =
+            context.findMemoryType(typeBits, kHost | VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT))
+      return *shared;
+  return context.memoryType(typeBits, kHost);
 }
 
 }  // namespace
@@ -56,12 +59,8 @@ Buffer::Buffer(VulkanContext& context, VkDeviceSize size, VkBufferUsageFlags usa
   buffer_ = UniqueBuffer(context.device(), buffer);
   VkMemoryRequirements requirements;
   vkGetBufferMemoryRequirements(context.device(), buffer, &requirements);
-  VkMemoryPropertyFlags flags = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-  if (memory == BufferMemory::Host)
-    flags = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  else if (memory == BufferMemory::Shared)
-    flags |= VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  memory_ = allocate(context, requirements, flags);
+  memory_ = allocate(context, requirements,
+                     bufferMemoryType(context, requirements.memoryTypeBits, memory));
   check(vkBindBufferMemory(context.device(), buffer, memory_.get(), 0), "vkBindBufferMemory");
   if (hostVisible)
     check(vkMapMemory(context.device(), memory_.get(), 0, VK_WHOLE_SIZE, 0, &mapped_),
@@ -98,7 +97,9 @@ Image::Image(VulkanContext& context, const ImageSpec& spec) : spec_(spec) {
   image_ = UniqueImage(context.device(), image);
   VkMemoryRequirements requirements;
   vkGetImageMemoryRequirements(context.device(), image, &requirements);
-  memory_ = allocate(context, requirements, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+  memory_ = allocate(context, requirements,
+                     context.memoryType(requirements.memoryTypeBits,
+                                        VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT));
   check(vkBindImageMemory(context.device(), image, memory_.get(), 0), "vkBindImageMemory");
 
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
