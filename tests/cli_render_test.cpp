@@ -185,6 +185,29 @@ TEST(CliRender, WithoutConfigRendersTheFiveSidedCaveConformally) {
   EXPECT_EQ(lowerGreen, 0u);
 }
 
+// `--tess-error` reaches the Vulkan backend: its report carries the threshold, and a finer one
+// subdivides more of the sphere's bent edges (the ceiling-less dilation bends them).
+TEST(CliRender, VulkanTessellationErrorIsTheBackendsThreshold) {
+  const fs::path mapDir = scratch("map-tess");
+  const confvis::RetargetMap map = confvis::ceilinglessDilationMap(1.5, 64);
+  confvis::writeCubeExr(mapDir / "ray.exr", map.ray);
+  confvis::writeCubeExr(mapDir / "geom.exr", map.geom);
+  const auto tessellated = [&](const std::string& error) {
+    const fs::path out = scratch("tess-" + error);
+    const CliRun run = runCli("render " + config("cave5") + " --backend vulkan --map " +
+                              mapDir.string() + " --wall front --tess-error " + error + " -o " +
+                              out.string() + " --scale 0.1 -q");
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    const nlohmann::json report =
+        nlohmann::json::parse(confvis::readTextFile(out / "render.json"));
+    EXPECT_DOUBLE_EQ(report["backend"]["tessellation_error_pixels"].get<double>(),
+                     std::stod(error));
+    return report["backend"]["triangles_tessellated"].get<double>();
+  };
+  const double fine = tessellated("0.05"), coarse = tessellated("4");
+  EXPECT_GT(fine, 2.0 * coarse + 10.0) << "fine " << fine << ", coarse " << coarse;
+}
+
 void expectError(const std::string& args, const std::string& needle) {
   const CliRun run = runCli("render " + args + kSmall);
   EXPECT_NE(run.exitCode, 0) << args;
@@ -209,6 +232,8 @@ TEST(CliRender, BadInputGivesOneClearErrorAndNonZeroExit) {
   expectError("/nonexistent/display.json" + out, "/nonexistent/display.json");
   expectError(cave6 + " --backend optix" + out, "optix");
   expectError(cave6 + " --spp 0" + out, "spp");
+  expectError(cave6 + " --tess-error 0" + out, "--tess-error");
+  expectError(cave6 + " --tess-error 0.5" + out, "--backend vulkan");
 }
 
 // A `confvis bake` directory carries the reference point it was baked around (bake.json): a map
@@ -229,7 +254,7 @@ TEST(CliRender, HasHelp) {
   const CliRun run = runCli("render --help");
   EXPECT_EQ(run.exitCode, 0);
   for (const char* option : {"--scene", "--mode", "--eyes", "--stereo-rays", "--wall", "--spp",
-                             "--camera", "--scale", "--map", "--output"})
+                             "--camera", "--scale", "--map", "--output", "--tess-error"})
     EXPECT_NE(run.output.find(option), std::string::npos) << option;
 }
 

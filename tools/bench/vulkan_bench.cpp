@@ -52,6 +52,8 @@ double median(std::vector<double> v) {
 struct Timing {
   double seconds = 0, cpu = 0, gpu = 0;  // medians per frame (gpu: 0 without timestamps)
   std::vector<double> wall, cpuFrames, gpuFrames;  // every timed frame, in order
+  // The pre-pass's passes' GPU times per frame where they were timed (--time-passes).
+  std::vector<std::pair<std::string, std::vector<double>>> passFrames;
   RenderResult last;
 };
 
@@ -92,6 +94,13 @@ std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const Dis
       // The device's own time (timestamps around the pre-pass and the render passes): on a GPU
       // the host's submissions, waits and readback dominate the wall clock.
       gpu[r].push_back(timings[r].last.stats.value("gpu_seconds", 0.0));
+      if (const auto passes = timings[r].last.stats.find("prepass_pass_gpu_seconds");
+          passes != timings[r].last.stats.end()) {
+        auto& frames = timings[r].passFrames;
+        if (frames.empty())
+          for (const auto& [pass, seconds] : passes->items()) frames.push_back({pass, {}});
+        for (auto& [pass, seconds] : frames) seconds.push_back(passes->value(pass, 0.0));
+      }
     }
   for (std::size_t r = 0; r < runs.size(); ++r) {
     timings[r].seconds = median(wall[r]);
@@ -290,7 +299,7 @@ int main(int argc, char** argv) {
   double errorPixels = VulkanOptions{}.tessellationErrorPixels;
   std::vector<std::string> mapNames = {"identity", "zoom", "squeeze", "baked"};
   bool skip1m = false, skip20k = false, skipSweep = false, skipZoomSweep = false,
-       skipEmbree = false;
+       skipEmbree = false, timePasses = false;
   app.add_option("--device", device, "Vulkan device (name part or index; default: auto)");
   app.add_option("--config", configName, "display config in configs/ (name or path)");
   app.add_option("--scale", scale, "resolution scale of the walls")->check(CLI::PositiveNumber);
@@ -318,6 +327,9 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   app.add_flag("--skip-embree", skipEmbree,
                "no Embree render in the baked-map sweep (no image difference column)");
+  app.add_flag("--time-passes", timePasses,
+               "time each pass of the pre-pass (GPU time, median ms) below each row of the timing "
+               "table; the timestamps between them slow the navigating frame slightly");
   app.add_option("--bake-resolution", bakeResolution, "texels per face of the baked map")
       ->check(CLI::PositiveNumber);
   app.add_option("--save-images", imageDir,
@@ -336,7 +348,9 @@ int main(int argc, char** argv) {
     // "reused" column is the frame that only moves the head (VulkanOptions::reusePrepass).
     options.reusePrepass = false;
     options.tessellationErrorPixels = errorPixels;
-    auto backend = makeVulkanBackend(options);
+    VulkanOptions navigatingOptions = options;
+    navigatingOptions.timePrepassPasses = timePasses;
+    auto backend = makeVulkanBackend(navigatingOptions);
     VulkanOptions reuseOptions = options;
     reuseOptions.reusePrepass = true;
     auto reuseBackend = makeVulkanBackend(reuseOptions);
@@ -394,6 +408,12 @@ int main(int argc, char** argv) {
                     conformal.last.stats.value("triangles_through_geometry_shader", std::size_t{0}),
                     pairedRatio(reused.wall, plain.wall),
                     pairedRatio(reused.gpuFrames, plain.gpuFrames));
+        if (!conformal.passFrames.empty()) {
+          std::printf("  pre-pass passes, GPU ms:");
+          for (const auto& [pass, seconds] : conformal.passFrames)
+            std::printf(" %s %.2f", pass.c_str(), 1e3 * median(seconds));
+          std::printf("\n");
+        }
         std::fflush(stdout);
       }
     }

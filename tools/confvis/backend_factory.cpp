@@ -15,11 +15,20 @@ using Factory = std::function<std::unique_ptr<RenderBackend>(const BackendOption
 
 const std::vector<std::pair<std::string, Factory>>& factories() {
   static const std::vector<std::pair<std::string, Factory>> table = {
-      {"embree", [](const BackendOptions&) { return std::make_unique<EmbreeBackend>(); }},
+      {"embree",
+       [](const BackendOptions& options) {
+         if (options.tessellationErrorPixels)
+           throw Error(ErrorCode::InvalidInput,
+                       "--tess-error applies to --backend vulkan only (Embree traces every "
+                       "pixel's ray through the map exactly)");
+         return std::make_unique<EmbreeBackend>();
+       }},
       {"vulkan",
        [](const BackendOptions& options) {
          VulkanOptions vulkan;
          vulkan.device = options.device;
+         if (options.tessellationErrorPixels)
+           vulkan.tessellationErrorPixels = *options.tessellationErrorPixels;
          return makeVulkanBackend(vulkan);
        }},
   };

@@ -1,6 +1,7 @@
 #pragma once
 // The renderers the CLI can use, by name. Adding a backend is one line in backend_factory.cpp.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,8 @@ namespace confvis::cli {
 std::vector<std::string> backendNames();
 struct BackendOptions {
   std::string device;  // Vulkan: "" / "auto", an index or part of a device name
+  // Vulkan conformal mode: the tessellation threshold, pixels (VulkanOptions'); unset: default.
+  std::optional<double> tessellationErrorPixels;
 };
 
 // Throws Error(InvalidInput) listing the known names for an unknown one.

@@ -96,7 +96,7 @@ const RegisterCommand registration{Command{
           ->check(CLI::Range(8, 8192));
       sub.add_option("--edge-length", args->edgeLength,
                      "Template refinement edge length in metres (default: the config's)")
-          ->check(CLI::PositiveNumber);
+          ->check(kPositiveNumber);
       sub.add_option("--reference", args->reference,
                      "Reference point x,y,z in metres (default: the config's)")
           ->delimiter(',')

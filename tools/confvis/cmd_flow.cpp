@@ -111,10 +111,10 @@ const RegisterCommand registration{Command{
                      "iterated to a circle in the Poincaré disk)")
           ->capture_default_str();
       sub.add_option("--tolerance", args->tolerance, "Target max |K̄ - K|")
-          ->check(CLI::PositiveNumber)
+          ->check(kPositiveNumber)
           ->capture_default_str();
       sub.add_option("--max-iterations", args->maxIterations, "Newton iteration cap")
-          ->check(CLI::PositiveNumber)
+          ->check(kPositiveNumber)
           ->capture_default_str();
       sub.add_option("--flips", args->flips,
                      "Delaunay edge flips during the flow: auto retries with flips if it stalls")

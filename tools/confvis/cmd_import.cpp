@@ -73,7 +73,7 @@ const RegisterCommand registration{Command{
           ->delimiter(',')
           ->expected(3);
       sub.add_option("--scale", args->scale, "Metres per file unit, e.g. 0.3048 for feet")
-          ->check(CLI::PositiveNumber)
+          ->check(kPositiveNumber)
           ->capture_default_str();
       sub.add_option("--resolution", args->resolution,
                      "WIDTHxHEIGHT for .pvx machines without Geometry");

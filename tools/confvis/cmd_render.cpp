@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +26,7 @@ namespace fs = std::filesystem;
 struct RenderArgs {
   std::string config, scene = "checker-sphere", backend = "embree", mode = "conformal";
   std::string device;
+  std::optional<double> tessellationErrorPixels;
   std::string eyes = "mono", stereoRays = "exact", camera, mapDirectory, output;
   std::vector<std::string> walls;
   int spp = 1;
@@ -87,7 +89,7 @@ int runRender(const RenderArgs& args) {
   settings.resolutionScale = args.scale;
   settings.showProgress = !args.quiet;
 
-  std::unique_ptr<RenderBackend> backend = makeBackend(args.backend, {args.device});
+  std::unique_ptr<RenderBackend> backend = makeBackend(args.backend, {args.device, args.tessellationErrorPixels});
   std::optional<MapSource> map;
   if (settings.mode == RenderMode::Conformal)
     map = retargetMapFor(config, args.mapDirectory, !args.quiet);
@@ -148,6 +150,11 @@ const RegisterCommand registration{Command{
       sub.add_option("--device", args->device,
                      "Vulkan device: auto (discrete GPU first, then lavapipe), an index or part "
                      "of a name");
+      sub.add_option("--tess-error", args->tessellationErrorPixels,
+                     "Vulkan conformal: how far (pixels) a drawn edge may stray from its exact "
+                     "warped curve before it is subdivided; smaller is sharper and slower "
+                     "(default 0.5)")
+          ->check(kPositiveNumber);
       sub.add_option("--mode", args->mode,
                      "conformal: through the display's conformal map; plain: ordinary off-axis")
           ->check(CLI::IsMember({"conformal", "plain"}))
@@ -167,7 +174,7 @@ const RegisterCommand registration{Command{
                      "Virtual camera x,y,z[,yaw,pitch]: where the display's reference point is "
                      "in the scene (metres) and how it is turned (degrees)");
       sub.add_option("--scale", args->scale, "Output resolution as a fraction of each wall's")
-          ->check(CLI::PositiveNumber)
+          ->check(kPositiveNumber)
           ->capture_default_str();
       sub.add_option("--map", args->mapDirectory,
                      "Baked map directory (ray.exr, geom.exr) for conformal mode");

@@ -207,18 +207,18 @@ const RegisterCommand registration{Command{
           ->check(CLI::Range(0.01, 1000.0))
           ->capture_default_str();
       sub.add_option("--scale", args->scale, "Output resolution as a fraction of each wall's")
-          ->check(CLI::PositiveNumber)
+          ->check(kPositiveNumber)
           ->capture_default_str();
       sub.add_option("--radius", args->radius,
                      "Metres the head may stray from the map's reference before a re-bake")
-          ->check(CLI::PositiveNumber)
+          ->check(kPositiveNumber)
           ->capture_default_str();
       sub.add_option("--bake-resolution", args->bakeResolution,
                      "Cube texels per face of the baked maps; default: the config's")
           ->check(CLI::Range(8, 4096));
       sub.add_option("--bake-edge-length", args->bakeEdgeLength,
                      "Mesh edge length of the bakes (metres); default: the config's")
-          ->check(CLI::PositiveNumber);
+          ->check(kPositiveNumber);
       sub.add_option("--backend", args->backend, "Renderer")
           ->check(CLI::IsMember(backendNames()))
           ->capture_default_str();

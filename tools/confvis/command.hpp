@@ -18,6 +18,16 @@ struct Command {
 
 std::vector<Command>& commandRegistry();
 
+// A number > 0 (CLI::PositiveNumber's message prints the whole double range): "--scale: must
+// be a number > 0, got 0".
+inline const CLI::Validator kPositiveNumber(
+    [](std::string& input) -> std::string {
+      double value = 0.0;
+      if (CLI::detail::lexical_cast(input, value) && value > 0.0) return {};
+      return "must be a number > 0, got " + input;
+    },
+    "POSITIVE");
+
 struct RegisterCommand {
   explicit RegisterCommand(Command command) { commandRegistry().push_back(std::move(command)); }
 };

@@ -179,8 +179,11 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
 
 void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                               VkDescriptorSet frameSet, VkDescriptorSet warpSet,
-                              const PrepassThresholds& thresholds) {
+                              const PrepassThresholds& thresholds, GpuStopwatch* passMarks) {
   prepare(scene);
+  const auto passDone = [&] {
+    if (passMarks) passMarks->mark(cmd);
+  };
   // The walls' error bounds: a uniform buffer, whose loads with the loop's uniform index
   // lavapipe makes once for all lanes (as a storage buffer, the bound cost 3 ms of a
   // 20k-triangle pre-pass). More walls than it holds: the strictest bound everywhere.
@@ -235,33 +238,38 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.count = static_cast<std::uint32_t>(scene.vertexCount());
   vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
+  passDone();
 
   // A pass's results (and its queue for the next pass, with that pass's dispatch) ready for the
   // next.
-  VkMemoryBarrier passDone{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  passDone.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-  passDone.dstAccessMask =
+  VkMemoryBarrier passResults{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  passResults.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  passResults.dstAccessMask =
       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
   const auto barrier = [&] {
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                          VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
-                         0, 1, &passDone, 0, nullptr, 0, nullptr);
+                         0, 1, &passResults, 0, nullptr, 0, nullptr);
   };
   barrier();
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.warpVerticesAcrossCut());
   vkCmdDispatchIndirect(cmd, queueDispatch_.get(), 0);
+  passDone();
   barrier();
 
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdges());
   push.count = static_cast<std::uint32_t>(scene.edgeCount());
   vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
   vkCmdDispatch(cmd, (push.count + kGroup - 1) / kGroup, 1, 1);
+  passDone();
   barrier();
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdgesBent());
   vkCmdDispatchIndirect(cmd, queueDispatch_.get(), sizeof(BentDispatch));
+  passDone();
   barrier();
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipelines_.classifyEdgesAtCut());
   vkCmdDispatchIndirect(cmd, queueDispatch_.get(), 3 * sizeof(BentDispatch));
+  passDone();
   barrier();
 
   // Per mesh: its triangles, directly (first pass) or over one of its lists (indirect).
@@ -281,8 +289,10 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
     }
   };
   classifyMeshes(pipelines_.classifyTriangles(), nullptr);
+  passDone();
   barrier();
   classifyMeshes(pipelines_.classifyStraightTriangles(), &straightDispatch_);
+  passDone();
 
   // The bent lists and their dispatches are ready; the last pass appends to the same lists.
   VkMemoryBarrier bentReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};

@@ -16,10 +16,12 @@
 // thread); most triangles of a finely meshed scene need none, and few of the rest need the
 // geometry shader. Lavapipe also runs both sides of every branch for all SIMD lanes, hence the
 // cheap first passes and the short indirect ones.
+#include <array>
 #include <cstdint>
 #include <vector>
 
 #include "gpu_scene.hpp"
+#include "gpu_stopwatch.hpp"
 #include "memory.hpp"
 #include "pipelines.hpp"
 
@@ -48,10 +50,17 @@ class ConformalPrepass {
  public:
   ConformalPrepass(VulkanContext& context, const Pipelines& pipelines);
 
-  // Records both passes for `scene` (buffers are rebuilt when the scene changed) and a barrier
+  // Records the passes for `scene` (buffers are rebuilt when the scene changed) and a barrier
   // that makes their results ready for vertex input, index and indirect-command reads.
+  // `passMarks` (started): a mark after each pass but the last, so that its intervals up to its
+  // stop are the passes' GPU times, in kPassNames' order.
   void record(VkCommandBuffer cmd, const GpuScene& scene, VkDescriptorSet frameSet,
-              VkDescriptorSet warpSet, const PrepassThresholds& thresholds);
+              VkDescriptorSet warpSet, const PrepassThresholds& thresholds,
+              GpuStopwatch* passMarks = nullptr);
+  static constexpr std::array<const char*, 8> kPassNames = {
+      "warp_vertices",   "warp_vertices_across_cut",  "classify_edges",
+      "classify_edges_bent", "classify_edges_at_cut", "classify_triangles",
+      "classify_straight_triangles", "classify_bent_triangles"};
 
   // vec4 per vertex of the scene's vertex buffer (GpuScene's layout: scene vertices, edge
   // midpoints, cut vertices): warp relative to c, w = validity (midpoints: their segments).

@@ -16,8 +16,10 @@ namespace {
 
 }  // namespace
 
-FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines)
-    : context_(context), pipelines_(pipelines), prepass_(context, pipelines), stopwatch_(context) {
+FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines,
+                             bool timePrepassPasses)
+    : context_(context), pipelines_(pipelines), prepass_(context, pipelines), stopwatch_(context),
+      timePrepassPasses_(timePrepassPasses) {
   const VkDevice device = context.device();
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
@@ -224,6 +226,8 @@ FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene)
   PrepassCounts counts;
   counts.seconds = prepassSeconds_;
   counts.gpuSeconds = prepassGpuSeconds_;
+  if (prepassPassSeconds_.size() == ConformalPrepass::kPassNames.size())
+    counts.passGpuSeconds = prepassPassSeconds_;
   counts.reused = prepassReused_;
   counts.splitAlongCut = prepass_.trianglesSplitAlongCut();
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
@@ -258,17 +262,19 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
     prepassReused_ = plan.reusePrepass && prepassCurrent_ && inputs == prepassInputs_;
     prepassSeconds_ = 0.0;
     prepassGpuSeconds_ = gpuSeconds_;  // 0 where reused
+    prepassPassSeconds_.clear();
     if (!prepassReused_) {
       prepassCurrent_ = false;  // until the submission below has completed
       const auto start = std::chrono::steady_clock::now();
       context_.submitAndWait([&](VkCommandBuffer cmd) {
         stopwatch_.start(cmd);
-        prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds);
+        prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds,
+                        timePrepassPasses_ ? &stopwatch_ : nullptr);
         stopwatch_.stop(cmd);
       });
       prepassSeconds_ =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      prepassGpuSeconds_ = stopwatch_.seconds();
+      prepassGpuSeconds_ = stopwatch_.seconds(&prepassPassSeconds_);
       addGpuSeconds(prepassGpuSeconds_);
       prepassInputs_ = inputs;
       prepassCurrent_ = true;

@@ -21,7 +21,8 @@ namespace confvis::vulkan {
 
 class FrameRenderer {
  public:
-  FrameRenderer(VulkanContext& context, Pipelines& pipelines);
+  // timePrepassPasses: timestamps between the pre-pass's passes (PrepassCounts::passGpuSeconds).
+  FrameRenderer(VulkanContext& context, Pipelines& pipelines, bool timePrepassPasses = false);
 
   // Renders every wall of `plan` (conformal when `map` is non-null), returning images in wall
   // order then eye order. multiview: all eyes of a wall in one pass (VK_KHR_multiview);
@@ -37,6 +38,8 @@ class FrameRenderer {
     double seconds = 0.0;  // wall-clock time of the pre-pass submission (0 where reused)
     std::optional<double> gpuSeconds;  // its GPU time (0 where reused; none without timestamps)
     bool reused = false;   // the previous conformal frame's pre-pass was still current
+    // Each pass's GPU time (ConformalPrepass::kPassNames' order) where the passes were timed.
+    std::vector<double> passGpuSeconds;
   };
   PrepassCounts prepassCounts(const GpuScene& scene) const;
 
@@ -92,6 +95,8 @@ class FrameRenderer {
   ConformalPrepass prepass_;
   double prepassSeconds_ = 0.0;
   std::optional<double> prepassGpuSeconds_, gpuSeconds_;
+  bool timePrepassPasses_ = false;
+  std::vector<double> prepassPassSeconds_;  // empty unless timed and run this frame
   GpuStopwatch stopwatch_;
   bool prepassReused_ = false;
 };

@@ -38,7 +38,7 @@ class VulkanBackend final : public RenderBackend {
       : options_((checkOptions(options), options)),
         context_({options.device, options.validation, options.onValidationMessage}),
         pipelines_(context_),
-        frames_(context_, pipelines_),
+        frames_(context_, pipelines_, options.timePrepassPasses),
         multiview_(options.stereoPasses == StereoPasses::Multiview ||
                    (options.stereoPasses == StereoPasses::Auto &&
                     vulkan::multiviewKeepsClippedPrimitivesInTheirView(context_, pipelines_,
@@ -91,6 +91,12 @@ class VulkanBackend final : public RenderBackend {
       result.stats["prepass_seconds"] = counts.seconds;
       if (counts.gpuSeconds) result.stats["prepass_gpu_seconds"] = *counts.gpuSeconds;
       result.stats["prepass_reused"] = counts.reused;
+      if (!counts.passGpuSeconds.empty()) {
+        nlohmann::json passes = nlohmann::json::object();
+        for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
+          passes[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
+        result.stats["prepass_pass_gpu_seconds"] = passes;
+      }
     }
     return result;
   }

@@ -95,6 +95,54 @@ TEST(VulkanPrepassReuse, GpuTimeCountsThePrepassOnlyWhereItRan) {
   test::expectNoValidationMessages(vk);
 }
 
+TEST(VulkanPrepassReuse, TimedPassesSplitThePrepassWithoutChangingTheImages) {
+  // VulkanOptions::timePrepassPasses (the benchmark's per-pass table): one time per pass, in
+  // order, adding up to the pre-pass's GPU time; none where the pre-pass was reused or the option
+  // is off; the timestamps between the passes change nothing drawn.
+  const DisplayConfig config = test::loadConfig("cave5");
+  BuiltinSceneOptions sceneOptions;
+  sceneOptions.subdivision = 40;
+  const Scene scene = builtinScene("checker-sphere", sceneOptions);
+  const RetargetMap squeeze = test::azimuthSqueezeMap(64);
+  RenderSettings settings;
+  settings.resolutionScale = test::scaleFor(config, 32);
+  settings.mode = RenderMode::Conformal;
+  VulkanOptions timedOptions;
+  timedOptions.timePrepassPasses = true;
+  test::ValidatedBackend timed(timedOptions), untimed;
+  timed->setScene(scene);
+  untimed->setScene(scene);
+
+  const RenderResult ran = timed->render(config, &squeeze, settings);
+  const RenderResult plainRun = untimed->render(config, &squeeze, settings);
+  EXPECT_FALSE(plainRun.stats.contains("prepass_pass_gpu_seconds"));
+  EXPECT_EQ(largestDifference(ran, plainRun), 0.0);
+  if (!ran.stats.contains("prepass_gpu_seconds")) GTEST_SKIP() << "no timestamps on this queue";
+  ASSERT_TRUE(ran.stats.contains("prepass_pass_gpu_seconds"));
+  const nlohmann::json& passes = ran.stats["prepass_pass_gpu_seconds"];
+  const std::vector<std::string> expected = {
+      "warp_vertices",       "warp_vertices_across_cut",    "classify_edges",
+      "classify_edges_bent", "classify_edges_at_cut",       "classify_triangles",
+      "classify_straight_triangles", "classify_bent_triangles"};
+  ASSERT_EQ(passes.size(), expected.size()) << passes.dump();
+  double sum = 0.0;
+  for (const std::string& name : expected) {
+    ASSERT_TRUE(passes.contains(name)) << name << " in " << passes.dump();
+    EXPECT_GE(passes[name].get<double>(), 0.0) << name;
+    sum += passes[name].get<double>();
+  }
+  // Passes over every vertex, edge and triangle of 19k triangles take measurable time.
+  for (const char* name : {"warp_vertices", "classify_edges", "classify_triangles"})
+    EXPECT_GT(passes[name].get<double>(), 0.0) << name;
+  const double total = ran.stats["prepass_gpu_seconds"].get<double>();
+  EXPECT_NEAR(sum, total, 1e-6 * total + 1e-9);
+  const RenderResult reused = timed->render(config, &squeeze, settings);
+  ASSERT_TRUE(reused.stats.value("prepass_reused", false));
+  EXPECT_FALSE(reused.stats.contains("prepass_pass_gpu_seconds"));
+  test::expectNoValidationMessages(timed);
+  test::expectNoValidationMessages(untimed);
+}
+
 TEST(VulkanPrepassReuse, SwitchedOffEveryFrameRunsIt) {
   const DisplayConfig config = test::loadConfig("cave5");
   VulkanOptions options;

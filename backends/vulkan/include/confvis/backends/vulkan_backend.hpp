@@ -54,6 +54,10 @@ struct VulkanOptions {
   // draw lists); head tracking alone changes none of them. False: every frame runs it (the
   // benchmark's figure for frames that navigate).
   bool reusePrepass = true;
+  // Conformal mode: timestamps between the pre-pass's passes; the stats' object
+  // `prepass_pass_gpu_seconds` gives each pass's GPU time (benchmarks; on lavapipe each
+  // timestamp waits for the work before it).
+  bool timePrepassPasses = false;
 };
 
 struct VulkanDeviceInfo {
