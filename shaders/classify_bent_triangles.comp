@@ -1,303 +1,44 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-// Conformal pre-pass, last pass (indirect dispatch over the bent list that
-// classify_triangles.comp and classify_straight_triangles.comp fill): sorts the triangles that are not flat as they are into those
-// drawn in flat pieces between their corners and edge midpoints, those that need tessellation
-// only (tessellation pipeline without a geometry shader) and those that may lose pieces to
-// confvisDropTriangle: on or next to the cut or partly outside the source field
-// (tessellation and the geometry shader that drops pieces, exactly as if it drew
-// everything; lavapipe runs it in its single-threaded draw stage, so only these pay for it).
-// A pass of its own because lavapipe evaluates both sides of a branch for all SIMD lanes: in one
-// pass every triangle of the scene paid for the tests below. Tessellated triangles copy their
-// edge levels next to their indices for warp.tesc.
-#include "confvis_warp.glsl"
-#include "confvis_prepass_common.glsl"
+// Conformal pre-pass (indirect dispatch over the bent list that classify_triangles.comp and
+// classify_straight_triangles.comp fill): sorts the triangles that are not flat as they are into
+// those drawn in flat pieces between their corners and edge midpoints, those that need
+// tessellation only (tessellation pipeline without a geometry shader) and those that may lose
+// pieces to confvisDropTriangle: on or next to the cut or partly outside the source field
+// (tessellation and the geometry shader that drops pieces, exactly as if it drew everything;
+// lavapipe runs it in its single-threaded draw stage, so only these pay for it). Those the cut
+// crosses go to the cut list, for split_triangles_at_cut.comp. A pass of its own because lavapipe
+// evaluates both sides of a branch for all SIMD lanes: in one pass every triangle of the scene
+// paid for the tests below. Tessellated triangles copy their edge levels next to their indices
+// for warp.tesc.
+#include "confvis_prepass_bent.glsl"
 
 layout(local_size_x = 64) in;
 
-void appendPiece(uint at, uint i0, uint i1, uint i2) {
-  pieceIndices[at] = i0; pieceIndices[at + 1u] = i1; pieceIndices[at + 2u] = i2;
-}
-
-// Appends to the tessellated or the dropping list.
-void append(uint list, uint i0, uint i1, uint i2, vec4 levels[3]) {
-  uint slot = atomicAdd(commands[kLists * prepass.mesh + list].indexCount, 3u);
-  // The dropping list fills the mesh's range from its end, back to front.
-  uint at = list == kListTessellated ? prepass.firstIndex + slot
-                                     : prepass.firstIndex + 3u * prepass.count - 3u - slot;
-  complexIndices[at] = i0; complexIndices[at + 1u] = i1; complexIndices[at + 2u] = i2;
-  for (uint k = 0u; k < 3u; ++k) patchLevels[at + k] = levels[k];
-}
-
-// Draws a triangle whose edges need two segments at most (edge k, opposite corner k, when
-// split[k]) in flat pieces (the pieces list, warp_simple.vert) between its corners and the split
-// edges' midpoints, instead of tessellating it: the midpoints' warps are the pre-pass's
-// (GpuScene numbers them after the scene's vertices), exactly what
-// tessellation at level 2 places there, without its warped centre and its cost (lavapipe
-// tessellates on one thread; most bent triangles of a finely meshed scene under a baked map bend
-// by two segments).
-void appendSplit(uint i[3], bool split[3], uint edge[3]) {
-  uint m[3];  // index of the midpoint of the edge opposite corner k
-  uint pieces = 1u;
-  for (uint k = 0u; k < 3u; ++k) {
-    m[k] = prepass.midpointBase + edge[k] - uint(prepass.vertexOffset);
-    pieces += split[k] ? 1u : 0u;
-  }
-  uint at = kPieceCapacity * prepass.firstIndex +
-            atomicAdd(commands[kLists * prepass.mesh + kListPieces].indexCount, 3u * pieces);
-  if (pieces == 2u) {  // one split edge: its opposite corner fans to its midpoint
-    uint k = split[0] ? 0u : split[1] ? 1u : 2u;
-    uint a = (k + 1u) % 3u, b = (k + 2u) % 3u;  // edge k runs from corner a to corner b
-    appendPiece(at, i[k], i[a], m[k]);
-    appendPiece(at + 3u, i[k], m[k], i[b]);
-    return;
-  }
-  if (pieces == 4u) {
-    appendPiece(at, i[0], m[2], m[1]);
-    appendPiece(at + 3u, i[1], m[0], m[2]);
-    appendPiece(at + 6u, i[2], m[1], m[0]);
-    appendPiece(at + 9u, m[0], m[1], m[2]);
-    return;
-  }
-  // Two split edges, meeting at corner u (opposite the unsplit one): u's corner between their
-  // midpoints cut off, the quad beyond it in two.
-  uint u = !split[0] ? 0u : !split[1] ? 1u : 2u;
-  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;  // m[b] lies on u-a, m[a] on b-u
-  appendPiece(at, i[u], m[b], m[a]);
-  appendPiece(at + 3u, i[a], i[b], m[a]);
-  appendPiece(at + 6u, i[a], m[a], m[b]);
-}
-
-// A triangle that the cut crosses through two of its edges (corner u on one side, the others on
-// the other) and whose third edge is drawn in at most kMaxUncutSegments segments, split exactly
-// along the cut: the corner's piece and the other side's quad (fanned through the third edge's
-// points, as its neighbour tessellates it) between its corners and four cut vertices, each side's
-// limit of the warp at the two crossings, drawn flat in the pieces list. Instead of tessellating
-// it finely and dropping the pieces across the cut in the geometry shader (a band of two pixels or a texel
-// unshown along the cut, and most of the geometry shader's work). False where it does not apply.
-bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u);
-
-// The most segments of the uncut edge of a triangle split along the cut (its pieces: two more).
-const uint kMaxUncutSegments = 8u;
-
-// A triangle that the cut crosses through one edge only (k: the edge opposite corner k), where
-// the cut ends inside it or leaves through corner k: the jump across its other edges is below
-// what the edge test sees (a few pixels, the cut's tip). Split at the crossing X into two fans,
-// one a side, from X (that side's limit of the warp there) over the uncut edge on that side
-// (their points as the neighbours' tessellation places them), drawn flat; unless a piece is one
-// that confvisDropTriangle would drop (a real jump after all). Instead of the geometry shader's
-// drop of the pieces across it: most of the dropping list at 1M triangles under a baked map.
-bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint k);
-
-bool splitAlongCut(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3]) {
-  bool cut[3];
-  uint cuts = 0u;
-  for (uint k = 0u; k < 3u; ++k) {
-    cut[k] = (edgeFlagsOf(edge[k]) & kEdgeAcrossCut) != 0u;
-    cuts += cut[k] ? 1u : 0u;
-  }
-  uint u = !cut[0] ? 0u : !cut[1] ? 1u : 2u;
-  bool valid = prepass.splitAlongCut != 0u && min(w[0].w, min(w[1].w, w[2].w)) >= 1.0;
-  bool applies = valid && cuts == 2u && rawLevels[u].w > 0.0 &&
-                 rawLevels[u].w <= float(kMaxUncutSegments);
-  uint k = cut[0] ? 0u : cut[1] ? 1u : 2u;  // the cut edge where there is one
-  bool tip = valid && cuts == 1u && rawLevels[(k + 1u) % 3u].w > 0.0 &&
-             rawLevels[(k + 1u) % 3u].w <= float(kMaxUncutSegments) &&
-             rawLevels[(k + 2u) % 3u].w > 0.0 &&
-             rawLevels[(k + 2u) % 3u].w <= float(kMaxUncutSegments);
-  // Loops run once or not at all rather than ifs: lavapipe runs both sides of an if for all
-  // SIMD lanes, but leaves a loop as soon as no lane runs it, and few triangles here need the
-  // lookups below.
-  bool split = false;
-  for (uint once = 0u; once < (applies ? 1u : 0u); ++once)
-    split = splitFound(i, w, rawLevels, edge, u);
-  for (uint once = 0u; once < (tip ? 1u : 0u); ++once)
-    split = splitAtCutTip(i, r, w, rawLevels, edge, k);
-  return split;
-}
-
-// Reserves `indices` slots of the mesh's part of the pieces list, if they fit (a split triangle
-// may take more than its kPieceCapacity share); returns the first, or ~0u.
-uint reservePieces(uint indices) {
-  uint capacity = kPieceCapacity * 3u * prepass.count;
-  uint taken = commands[kLists * prepass.mesh + kListPieces].indexCount;
-  for (;;) {
-    if (taken + indices > capacity) return ~0u;
-    uint seen = atomicCompSwap(commands[kLists * prepass.mesh + kListPieces].indexCount, taken,
-                               taken + indices);
-    if (seen == taken) return kPieceCapacity * prepass.firstIndex + taken;
-    taken = seen;
-  }
-}
-
-// Writes the cut vertex `slot`: the point k / n along edge a-b (the triangle's corners a and b,
-// vertices va and vb), warped as the tessellation evaluation shader warps the points it places
-// there (the neighbour across the edge tessellates it into n segments).
-vec4 writeEdgeVertex(uint slot, uint va, uint vb, float s) {
-  CutVertex c = vertexBetween(va, vb, s);
-  c.warped = confvisWarpRelative((1.0 - s) * vertexRelative(va) + s * vertexRelative(vb));
-  storeCutVertex(slot, c);
-  return c.warped;
-}
-
-// Point j of the triangle's edge `e` from corner p to corner q (local indices ip, iq) drawn in n
-// segments, as a vertex number (the mesh's, as in its indices): the corners, the pre-pass's
-// midpoint in the middle, the others cut vertices from `slot` on (slot + j - 1 for point j).
-uint edgePointIndex(uint e, uint n, uint j, uint ip, uint iq, uint slot) {
-  uint offset = uint(prepass.vertexOffset);
-  return j == 0u ? ip
-       : j == n ? iq
-       : 2u * j == n ? prepass.midpointBase + e - offset
-                     : prepass.cutVertexBase + slot + j - 1u - offset;
-}
-
-// Writes the points between the corners of that edge (those edgePointIndex numbers as cut
-// vertices), warped as the neighbour's tessellation places them (writeEdgeVertex), and tells
-// whether the fan from X (virtual point rx, warp wx) over them keeps every piece
-// (confvisDropTriangle). Points carried one at a time, no arrays: lavapipe keeps arrays indexed
-// in a loop in memory, lane by lane, which made the whole pass 2-3 ms slower at 20k triangles.
-bool writeFanPoints(uint e, uint n, uint ip, uint iq, vec3 rp, vec3 rq, vec4 wp, vec4 wq,
-                    uint slot, vec3 rx, vec4 wx) {
-  uint offset = uint(prepass.vertexOffset);
-  vec3 previousRel = rp;
-  vec4 previousWarp = wp;
-  bool kept = true;
-  for (uint j = 1u; j <= n; ++j) {
-    float s = float(j) / float(n);
-    vec3 rel = j == n ? rq : mix(rp, rq, s);
-    vec4 warp = j == n ? wq : vec4(edgeLevels[e].xyz, 1.0);
-    for (uint once = 0u; once < (j < n && 2u * j != n ? 1u : 0u); ++once)
-      warp = writeEdgeVertex(slot + j - 1u, offset + ip, offset + iq, s);
-    kept = kept && !dropsTriangle(vec3[3](rx, previousRel, rel),
-                                  vec4[3](wx, previousWarp, warp), prepass.minGap);
-    previousRel = rel;
-    previousWarp = warp;
-  }
-  return kept;
-}
-
-// The fan's pieces from cut vertex x (a vertex number) over that edge's points, from `at` on.
-void appendFan(uint at, uint x, uint e, uint n, uint ip, uint iq, uint slot) {
-  for (uint j = 0u; j < n; ++j)
-    appendPiece(at + 3u * j, x, edgePointIndex(e, n, j, ip, iq, slot),
-                edgePointIndex(e, n, j + 1u, ip, iq, slot));
-}
-
-bool splitFound(uint i[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint u) {
-  // X where the cut crosses u-a (edge[b], opposite b), Y where it crosses b-u (edge[a]): the
-  // edges' cut vertices (classify_edges_at_cut.comp).
-  uint a = (u + 1u) % 3u, b = (u + 2u) % 3u;
-  uint x = edgeCutVertex[edge[b]].x, y = edgeCutVertex[edge[a]].x;
-  if (x >= kCutVertexUnsure || y >= kCutVertexUnsure) return false;  // unsure, or none
-  // The uncut edge (opposite u, from corner a to b) in n segments: its points in between are
-  // the pre-pass's midpoint (n = 2) or cut vertices of their own, the other side's quad a fan
-  // from X through them.
-  uint n = uint(rawLevels[u].w);
-  uint between = n > 2u ? n - 1u : 0u;
-  uint slot = 0u;
-  for (uint once = 0u; once < (between > 0u ? 1u : 0u); ++once) slot = reserveCutVertices(between);
-  if (slot == ~0u) return false;
-  uint pieces = n + 2u;
-  uint at = reservePieces(3u * pieces);
-  if (at == ~0u) return false;
-  uint offset = uint(prepass.vertexOffset);
-  uint vu = offset + i[u], va = offset + i[a], vb = offset + i[b];
-  // The middle point's slot stays unwritten: the fan uses the pre-pass's midpoint there.
-  for (uint k = 1u; k <= between; ++k)
-    for (uint once = 0u; once < (2u * k != n ? 1u : 0u); ++once)
-      writeEdgeVertex(slot + k - 1u, va, vb, float(k) / float(n));
-  // Each edge's first cut vertex continues the side of its first vertex.
-  uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
-  bool uFirstOnX = sceneEdge(edge[b]).x == vu, uFirstOnY = sceneEdge(edge[a]).x == vu;
-  uint xu = cutBase + x + (uFirstOnX ? 0u : 1u), xa = cutBase + x + (uFirstOnX ? 1u : 0u);
-  uint yu = cutBase + y + (uFirstOnY ? 0u : 1u), yb = cutBase + y + (uFirstOnY ? 1u : 0u);
-  appendPiece(at, i[u], xu, yu);
-  appendFan(at + 3u, xa, edge[u], n, i[a], i[b], slot);  // the midpoint keeps the pre-pass's warp
-  appendPiece(at + 3u * (n + 1u), xa, i[b], yb);
-  atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
-  return true;
-}
-
-bool splitAtCutTip(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge[3], uint k) {
-  uint a = (k + 1u) % 3u, b = (k + 2u) % 3u;  // the cut edge runs from corner a to corner b
-  // Unsure sides are common here (the jump is small); the drop test below guards the pieces.
-  uvec2 cutVertex = edgeCutVertex[edge[k]];
-  if (cutVertex.x == ~0u) return false;
-  cutVertex.x &= ~kCutVertexUnsure;
-  uint offset = uint(prepass.vertexOffset);
-  bool aFirst = sceneEdge(edge[k]).x == offset + i[a];
-  float t = uintBitsToFloat(cutVertex.y);  // from sceneEdge(edge[k]).x
-  vec3 rx = aFirst ? mix(r[a], r[b], t) : mix(r[b], r[a], t);
-  uint xa = cutVertex.x + (aFirst ? 0u : 1u), xb = cutVertex.x + (aFirst ? 1u : 0u);
-  // Side a: the fan from X over k -> a (edge[b]); side b: over b -> k (edge[a]).
-  uint na = uint(rawLevels[b].w), nb = uint(rawLevels[a].w);
-  uint betweenA = na > 2u ? na - 1u : 0u, betweenB = nb > 2u ? nb - 1u : 0u;
-  uint slot = 0u;
-  for (uint once = 0u; once < (betweenA + betweenB > 0u ? 1u : 0u); ++once)
-    slot = reserveCutVertices(betweenA + betweenB);
-  if (slot == ~0u) return false;
-  // A piece confvisDropTriangle would drop spans a real jump: the geometry shader's case.
-  bool kept = writeFanPoints(edge[b], na, i[k], i[a], r[k], r[a], w[k], w[a], slot, rx,
-                             cutWarps[xa]);
-  kept = writeFanPoints(edge[a], nb, i[b], i[k], r[b], r[k], w[b], w[k], slot + betweenA, rx,
-                        cutWarps[xb]) && kept;
-  if (!kept) return false;
-  uint at = reservePieces(3u * (na + nb));
-  if (at == ~0u) return false;
-  uint cutBase = prepass.cutVertexBase - offset;  // the draw adds the offset back
-  appendFan(at, cutBase + xa, edge[b], na, i[k], i[a], slot);
-  appendFan(at + 3u * na, cutBase + xb, edge[a], nb, i[b], i[k], slot + betweenA);
-  atomicAdd(queueDispatch[kQueueCutVertices].groupsX, 1u);
-  return true;
+// Appends triangle t of the current mesh to its cut list, growing the list's dispatch.
+void appendAtCut(uint t) {
+  uint slot = atomicAdd(cutDispatch[prepass.mesh].count, 1u);
+  cutTriangles[prepass.firstIndex / 3u + slot] = t;
+  if (slot % kBentGroup == 0u) atomicMax(cutDispatch[prepass.mesh].groupsX, slot / kBentGroup + 1u);
 }
 
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= bentDispatch[prepass.mesh].count) return;
   uint t = bentTriangles[prepass.firstIndex / 3u + slot];
-  uint base = prepass.firstIndex + 3u * t;
-  uint i[3];
+  uint i[3], edge[3];
   vec3 r[3];
-  vec4 w[3];
-  loadTriangle(base, i, r, w);
-  bool drops = dropsTriangle(r, w, prepass.minGap);
-  vec4 levels[3], rawLevels[3];  // raw: w < 0 where the edge may lose pieces
-  bool mayDrop = drops, split[3];
-  uint edge[3];
-  float inner = 1.0;
-  for (uint k = 0u; k < 3u; ++k) {
-    edge[k] = triangleEdge(base + k);
-    rawLevels[k] = levels[k] = edgeLevels[edge[k]];
-    // Pieces are dropped across the cut or entirely outside the source field: an edge whose
-    // samples all lie inside (validity 0.5 or more, the rim's blend) loses none, however close
-    // to the rim (before, any validity below 1 sent the patch through the geometry shader).
-    mayDrop = mayDrop || (edgeFlagsOf(edge[k]) & (kEdgeAcrossCut | kEdgeOutside)) != 0u;
-    levels[k].w = abs(levels[k].w);
-    split[k] = levels[k].w > 1.0;
-    inner = max(inner, levels[k].w);
-  }
-  // The tests below in loops entered once or not at all, not ifs: lavapipe runs both sides of an
-  // if for all SIMD lanes but leaves a loop that no lane runs. (A patch the warp stretched 4
-  // times or flattened, in itself or its midpoint triangles, went to the geometry shader too
-  // until measured: the same images or better without, at 20k and 300k triangles on cave5,
-  // cave3 and md230x6, and up to 40 % fewer patches through the geometry shader; the edges'
-  // jump test and the flags of edges across the cut find the pieces to drop.)
-  bool splitAtCut = false;
-  for (uint once = 0u; once < (mayDrop ? 1u : 0u); ++once)
-    splitAtCut = splitAlongCut(i, r, w, rawLevels, edge);
-  if (splitAtCut) return;
-  // A patch of one segment an edge tessellates into itself alone: warp.geom's test on it, with
-  // every view's gap (the corners' warps are the pre-pass's in every way of drawing), decided
-  // here where the views agree. Kept ones are drawn flat, as a piece; lavapipe's geometry stage
-  // costs some 7 us a patch and wall, most of a 1M-triangle frame's cost at the cut.
-  bool decided = false;
-  for (uint once = 0u; once < (mayDrop && inner <= 1.0 ? 1u : 0u); ++once)
-    decided = drops == dropsTriangle(r, w, prepass.maxGap);
-  if (decided) {
-    if (!drops) appendSplit(i, split, edge);
-  } else if (!mayDrop && inner <= 2.0) {
-    appendSplit(i, split, edge);
+  vec4 w[3], rawLevels[3];
+  bool split[3], drops, mayDrop;
+  float inner;
+  loadBentTriangle(t, i, r, w, edge, rawLevels, split, inner, drops, mayDrop);
+  // (A patch the warp stretched 4 times or flattened, in itself or its midpoint triangles, went
+  // to the geometry shader too until measured: the same images or better without, at 20k and 300k
+  // triangles on cave5, cave3 and md230x6, and up to 40 % fewer patches through the geometry
+  // shader; the edges' jump test and the flags of edges across the cut find the pieces to drop.)
+  if (mayDrop && splitMayApply(w, edge)) {
+    appendAtCut(t);
   } else {
-    append(mayDrop ? kListDropping : kListTessellated, i[0], i[1], i[2], rawLevels);
+    sortBentTriangle(i, r, w, edge, rawLevels, split, inner, drops, mayDrop);
   }
 }

@@ -17,7 +17,7 @@ struct DrawCommand {  // VkDrawIndexedIndirectCommand
 
 // Vertices as uploaded (position, normal, uv: 8 floats each).
 layout(set = 2, binding = 0, std430) readonly buffer Vertices { float vertices[]; };
-// Binding 1: unused (the indices are read through indexTexels below).
+// Binding 1: CutDispatches below (the indices are read through indexTexels).
 // Per scene vertex: its warp relative to c, w = validity. The first part of the warps the draws
 // read (backends/vulkan/src/gpu_scene.hpp): the edge midpoints' (EdgeLevels) and the cut
 // vertices' (CutWarps) follow it.
@@ -30,8 +30,8 @@ layout(set = 2, binding = 4, std430) writeonly buffer ComplexIndices { uint comp
 // ComplexIndices and PatchLevels: the first fills the mesh's range from its start, the second
 // from its end (its command's firstIndex is left at the range's start; the host knows the count).
 layout(set = 2, binding = 5, std430) buffer Commands { DrawCommand commands[]; };
-// Bindings 6 and 7: unused (the edges and the triangles' edges are read through edgeTexels and
-// triangleEdgeTexels below).
+// Binding 6: CutTriangles below; binding 7: unused (the edges and the triangles' edges are read
+// through edgeTexels and triangleEdgeTexels).
 // Per edge: xyz = warped midpoint relative to c, w = tessellation segments, negative where pieces
 // of the edge's triangles may be dropped (classify_edges.comp). The midpoints' part of Warped, so
 // the flat pieces draw the midpoints by index with fixed-function fetch (warp_simple.vert).
@@ -105,6 +105,11 @@ const uint kEdgeStraight = 1u, kEdgeSmall = 2u, kEdgeUnseen = 4u, kEdgeAcrossCut
 // classify_straight_triangles.comp.
 layout(set = 2, binding = 18, std430) buffer StraightDispatches { BentDispatch straightDispatch[]; };
 layout(set = 2, binding = 19, std430) buffer StraightTriangles { uint straightTriangles[]; };
+
+// Per mesh, as the bent list: the bent triangles the source's cut crosses that may be split
+// along it, queued by classify_bent_triangles.comp for split_triangles_at_cut.comp.
+layout(set = 2, binding = 1, std430) buffer CutDispatches { BentDispatch cutDispatch[]; };
+layout(set = 2, binding = 6, std430) buffer CutTriangles { uint cutTriangles[]; };
 
 // Queues vertex or edge `item` on `queue`, growing its dispatch to cover it.
 void enqueue(uint queue, uint item) {
@@ -193,7 +198,7 @@ uint sceneIndex(uint at) { return texelFetch(indexTexels, int(at)).x; }
 uint triangleEdge(uint at) { return texelFetch(triangleEdgeTexels, int(at)).x; }
 uint edgeFlagsOf(uint e) { return texelFetch(edgeFlagTexels, int(e)).x; }
 
-// The vertices classify_bent_triangles.comp makes where the source's cut crosses an edge, one
+// The vertices split_triangles_at_cut.comp makes where the source's cut crosses an edge, one
 // per side: the point on the cut with that side's limit of the warp, for the pieces list. Slot s
 // is vertex prepass.cutVertexBase + s: its attributes (8 floats, as uploaded) in the cut part of
 // the scene's vertex buffer, its warp in the cut part of the warps (storeCutVertex).

@@ -82,6 +82,8 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   bentTriangles_ = uintList(scene.triangleCount());
   straightDispatch_ = dispatches(scene.draws().size());
   straightTriangles_ = uintList(scene.triangleCount());
+  cutDispatch_ = dispatches(scene.draws().size());
+  cutTriangles_ = uintList(scene.triangleCount());
   queueDispatch_ = dispatches(kQueues);
   queuedVertices_ = uintList(scene.vertexCount());
   queuedEdges_ = uintList(2 * scene.edgeCount());  // the bent edges', then the cut's queue
@@ -115,12 +117,12 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
   allocInfo.pSetLayouts = &layout;
   check(vkAllocateDescriptorSets(device, &allocInfo, &set_), "vkAllocateDescriptorSets");
   // Bindings of confvis_prepass_common.glsl, in order; the scene's vertices, their warps, the
-  // edge levels and the cut vertices below; 1, 6 and 7 unused (the scene's indices and edges
-  // are read through texel views).
+  // edge levels and the cut vertices below; 7 unused (the scene's edges are read through a texel
+  // view).
   const std::array<VkBuffer, kPrepassFirstTexelBinding> buffers = {
-      VK_NULL_HANDLE,       VK_NULL_HANDLE,              VK_NULL_HANDLE,
+      VK_NULL_HANDLE,       cutDispatch_.get(),          VK_NULL_HANDLE,
       flat_.get(),          tessellated_.get(),          commands_.get(),
-      VK_NULL_HANDLE,       VK_NULL_HANDLE,              VK_NULL_HANDLE,
+      cutTriangles_.get(),  VK_NULL_HANDLE,              VK_NULL_HANDLE,
       patchLevels_.get(),   pieces_.get(),               bentDispatch_.get(),
       bentTriangles_.get(), queueDispatch_.get(), queuedVertices_.get(),
       queuedEdges_.get(),   unseenCounts_.get(),         edgeFlags_.get(),
@@ -212,7 +214,9 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   }
   auto* bent = static_cast<BentDispatch*>(bentDispatch_.mapped());
   auto* straight = static_cast<BentDispatch*>(straightDispatch_.mapped());
-  for (std::size_t d = 0; d < scene.draws().size(); ++d) bent[d] = straight[d] = {0, 1, 1, 0};
+  auto* cut = static_cast<BentDispatch*>(cutDispatch_.mapped());
+  for (std::size_t d = 0; d < scene.draws().size(); ++d)
+    bent[d] = straight[d] = cut[d] = {0, 1, 1, 0};
   auto* queues = static_cast<BentDispatch*>(queueDispatch_.mapped());
   for (int q = 0; q < kQueues; ++q) queues[q] = {0, 1, 1, 0};
 
@@ -303,6 +307,9 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT,
                        0, 1, &bentReady, 0, nullptr, 0, nullptr);
   classifyMeshes(pipelines_.classifyBentTriangles(), &bentDispatch_);
+  passDone();
+  barrier();  // the cut list and its dispatches; the lists both passes append to
+  classifyMeshes(pipelines_.splitTrianglesAtCut(), &cutDispatch_);
 
   VkMemoryBarrier listsReady{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   listsReady.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;

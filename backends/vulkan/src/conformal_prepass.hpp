@@ -11,7 +11,8 @@
 // triangles where not flat); classify_straight_triangles.comp, dispatched indirectly, runs the
 // full drop test on the straight triangles too large for the flags' test;
 // classify_bent_triangles.comp, indirectly too, sorts the rest into compacted lists with one
-// draw command per mesh and list. Per-patch tessellation is costly
+// draw command per mesh and list, but for those the cut crosses, which
+// split_triangles_at_cut.comp splits along it. Per-patch tessellation is costly
 // on some devices (lavapipe above all: its vertex, tessellation and geometry stages run on one
 // thread); most triangles of a finely meshed scene need none, and few of the rest need the
 // geometry shader. Lavapipe also runs both sides of every branch for all SIMD lanes, hence the
@@ -57,10 +58,10 @@ class ConformalPrepass {
   void record(VkCommandBuffer cmd, const GpuScene& scene, VkDescriptorSet frameSet,
               VkDescriptorSet warpSet, const PrepassThresholds& thresholds,
               GpuStopwatch* passMarks = nullptr);
-  static constexpr std::array<const char*, 8> kPassNames = {
-      "warp_vertices",   "warp_vertices_across_cut",  "classify_edges",
-      "classify_edges_bent", "classify_edges_at_cut", "classify_triangles",
-      "classify_straight_triangles", "classify_bent_triangles"};
+  static constexpr std::array<const char*, 9> kPassNames = {
+      "warp_vertices",          "warp_vertices_across_cut",    "classify_edges",
+      "classify_edges_bent",    "classify_edges_at_cut",       "classify_triangles",
+      "classify_straight_triangles", "classify_bent_triangles", "split_triangles_at_cut"};
 
   // vec4 per vertex of the scene's vertex buffer (GpuScene's layout: scene vertices, edge
   // midpoints, cut vertices): warp relative to c, w = validity (midpoints: their segments).
@@ -79,7 +80,7 @@ class ConformalPrepass {
   // Mesh `draw`'s triangles in the flat list that are not degenerate (the list holds the whole
   // mesh's range); valid once the submission has completed.
   std::uint32_t flatTriangles(std::size_t draw) const;
-  // Triangles split along the source's cut (classify_bent_triangles.comp), all meshes; valid
+  // Triangles split along the source's cut (split_triangles_at_cut.comp), all meshes; valid
   // once the submission has completed.
   std::uint32_t trianglesSplitAlongCut() const;
   // Byte offset of mesh `draw`'s VkDrawIndexedIndirectCommand for `list`.
@@ -99,6 +100,8 @@ class ConformalPrepass {
   Buffer bentTriangles_;  // uint per scene triangle
   // The same for the straight list (classify_straight_triangles.comp).
   Buffer straightDispatch_, straightTriangles_;
+  // The same for the cut list (split_triangles_at_cut.comp).
+  Buffer cutDispatch_, cutTriangles_;
   // The vertices queued for lookups across the cut, the edges for full measurement: two
   // BentDispatch, the lists (uint each).
   Buffer queueDispatch_, queuedVertices_, queuedEdges_;

@@ -95,9 +95,9 @@ class FrameRenderer {
   ConformalPrepass prepass_;
   double prepassSeconds_ = 0.0;
   std::optional<double> prepassGpuSeconds_, gpuSeconds_;
+  GpuStopwatch stopwatch_;
   bool timePrepassPasses_ = false;
   std::vector<double> prepassPassSeconds_;  // empty unless timed and run this frame
-  GpuStopwatch stopwatch_;
   bool prepassReused_ = false;
 };
 

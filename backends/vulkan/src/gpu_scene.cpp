@@ -125,7 +125,7 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
 void GpuScene::appendConformalVertices(std::vector<Vertex>& vertices,
                                        const std::vector<glm::uvec2>& edges) {
   const auto roundUp = [](std::size_t n) { return (n + 15) / 16 * 16; };
-  // Four a triangle split along the cut (classify_bent_triangles.comp), for at most 16384 such
+  // Four a triangle split along the cut (split_triangles_at_cut.comp), for at most 16384 such
   // triangles; those beyond fall back to the geometry shader's drop.
   const std::size_t cutCapacity = 4 * std::clamp<std::size_t>(triangleCount_, 1, 16384);
   const std::size_t midpointBase = roundUp(vertices.size());

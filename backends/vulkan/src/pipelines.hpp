@@ -131,6 +131,7 @@ class Pipelines {
   VkPipeline classifyTriangles() const { return classifyTriangles_.get(); }
   VkPipeline classifyStraightTriangles() const { return classifyStraightTriangles_.get(); }
   VkPipeline classifyBentTriangles() const { return classifyBentTriangles_.get(); }
+  VkPipeline splitTrianglesAtCut() const { return splitTrianglesAtCut_.get(); }
 
   // A render pass drawing `viewCount` views (multiview layers) of one wall, with its pipelines;
   // built on first use. Conformal mode draws with three, for the pre-pass's lists:
@@ -160,7 +161,8 @@ class Pipelines {
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
   UniquePipeline warpVertices_, warpVerticesAcrossCut_, classifyEdges_, classifyEdgesBent_,
-      classifyEdgesAtCut_, classifyTriangles_, classifyStraightTriangles_, classifyBentTriangles_;
+      classifyEdgesAtCut_, classifyTriangles_, classifyStraightTriangles_, classifyBentTriangles_,
+      splitTrianglesAtCut_;
   std::map<std::uint32_t, Pass> passes_;
 };
 

@@ -1,6 +1,7 @@
 // The conformal pre-pass compute pipelines (warp_vertices.comp, warp_vertices_across_cut.comp,
 // classify_edges.comp, classify_edges_bent.comp, classify_edges_at_cut.comp,
-// classify_triangles.comp, classify_straight_triangles.comp, classify_bent_triangles.comp) and
+// classify_triangles.comp, classify_straight_triangles.comp, classify_bent_triangles.comp,
+// split_triangles_at_cut.comp) and
 // their layout: set 0 the frame, set 1 the warp map, set 2 the pre-pass buffers.
 #include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
 
@@ -13,6 +14,7 @@
 #include "confvis_spirv/classify_edges_comp.h"
 #include "confvis_spirv/classify_straight_triangles_comp.h"
 #include "confvis_spirv/classify_triangles_comp.h"
+#include "confvis_spirv/split_triangles_at_cut_comp.h"
 #include "confvis_spirv/warp_vertices_across_cut_comp.h"
 #include "confvis_spirv/warp_vertices_comp.h"
 
@@ -67,6 +69,8 @@ void Pipelines::createComputePipelines() {
   classifyBentTriangles_ = computePipeline(device, layout, bent);
   const UniqueShaderModule straight = shaderModule(device, kSpirv_classify_straight_triangles_comp);
   classifyStraightTriangles_ = computePipeline(device, layout, straight);
+  const UniqueShaderModule atCut = shaderModule(device, kSpirv_split_triangles_at_cut_comp);
+  splitTrianglesAtCut_ = computePipeline(device, layout, atCut);
 }
 
 }  // namespace confvis::vulkan

@@ -123,7 +123,7 @@ TEST(VulkanPrepassReuse, TimedPassesSplitThePrepassWithoutChangingTheImages) {
   const std::vector<std::string> expected = {
       "warp_vertices",       "warp_vertices_across_cut",    "classify_edges",
       "classify_edges_bent", "classify_edges_at_cut",       "classify_triangles",
-      "classify_straight_triangles", "classify_bent_triangles"};
+      "classify_straight_triangles", "classify_bent_triangles", "split_triangles_at_cut"};
   ASSERT_EQ(passes.size(), expected.size()) << passes.dump();
   double sum = 0.0;
   for (const std::string& name : expected) {
