@@ -81,6 +81,10 @@ const uint kQueueEdgesAtCut = 3u;
 // split along the cut (for the frame's statistics).
 const uint kQueueCutVertices = 2u;
 
+// The ray map (kCoverageBinding of the warp set), for its alpha: where the display shows a
+// physical direction, as the backward path (Embree) sees it. Its rim is the image of the cut.
+layout(set = CONFVIS_WARP_SET, binding = 1) uniform samplerCube confvisCoverageMap;
+
 // Per mesh: its triangles entirely outside the source field, reset from the host. The flat
 // list's triangles that are not degenerate (writeFlat), for the frame's statistics, are the
 // mesh's triangles less these and its bent list's.
@@ -144,6 +148,7 @@ layout(push_constant) uniform Prepass {
   uint splitAlongCut; // VulkanOptions::splitAlongCut (classify_bent_triangles.comp)
   uint cutVertexBase; // cut vertex slot s is vertex cutVertexBase + s (GpuScene::cutVertexBase)
   uint errorWallCount; // ErrorWalls entries in use
+  uint snapCutToRim;  // VulkanOptions::snapCutToRim (classify_edges_at_cut.comp)
 } prepass;
 
 // Writes triangle t (vertex indices i) of the current mesh into its flat list, whose slots are

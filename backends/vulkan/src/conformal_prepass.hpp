@@ -41,6 +41,7 @@ struct PrepassThresholds {
   float minGap;           // radians: the smallest over the frame's views
   float maxGap;           // radians: the largest (the pre-pass decides a drop only where both agree)
   bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
+  bool snapCutToRim = true;   // VulkanOptions::snapCutToRim
   // The walls' local bend error bounds (FramePlan::errorWalls): segments of bent edges keep to
   // errorPixels of the pixels where they are shown; maxErrorAngle is the smallest anywhere.
   std::vector<ErrorWall> errorWalls;

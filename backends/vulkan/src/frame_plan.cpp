@@ -110,6 +110,7 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   checkSettings(settings, map, maxViews);
   FramePlan plan;
   plan.splitAlongCut = tessellation.splitAlongCut;
+  plan.snapCutToRim = tessellation.snapCutToRim;
   plan.reusePrepass = tessellation.reusePrepass;
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;

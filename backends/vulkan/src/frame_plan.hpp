@@ -16,6 +16,7 @@ struct TessellationOptions {
   bool enabled = true;
   bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
   bool reusePrepass = true;   // VulkanOptions::reusePrepass
+  bool snapCutToRim = true;   // VulkanOptions::snapCutToRim
 };
 
 struct FramePlan {
@@ -28,6 +29,7 @@ struct FramePlan {
   std::vector<ErrorWall> errorWalls;       // conformal: per wall, its local bend error bound
   double near = 0.01, far = 100.0;
   bool splitAlongCut = true;  // TessellationOptions::splitAlongCut
+  bool snapCutToRim = true;   // TessellationOptions::snapCutToRim
   bool reusePrepass = true;   // TessellationOptions::reusePrepass
 };
 

@@ -24,7 +24,7 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines,
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},  // the geom and ray maps
   }};
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   poolInfo.maxSets = 2;
@@ -106,18 +106,27 @@ void FrameRenderer::uploadMap(const RetargetMap& map) {
   const std::uint64_t hash = fingerprintCubeMap(
       map.geom, glm::dvec3(map.reference.x, map.reference.y, map.reference.z));
   if (geomMap_.get() != VK_NULL_HANDLE && hash == mapHash_) return;
+  // The ray map goes with it (the pre-pass's rim: where its alpha ends): a map is told by its
+  // geom texels and reference point, as the bake makes both maps together.
   const std::vector<float> data = geomMapUploadData(map);  // validates the map
-  const auto n = static_cast<std::uint32_t>(map.geom.faceSize);
-  ImageSpec spec;
-  spec.format = kGeomMapFormat;
-  spec.width = spec.height = n;
-  spec.layers = 6;
-  spec.cube = true;
-  spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  geomMap_ = Image(context_, spec);
+  const std::vector<float> coverage = rayMapUploadData(map);
+  const auto cubeImage = [&](int faceSize) {
+    ImageSpec spec;
+    spec.format = kGeomMapFormat;
+    spec.width = spec.height = static_cast<std::uint32_t>(faceSize);
+    spec.layers = 6;
+    spec.cube = true;
+    spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+    return Image(context_, spec);
+  };
+  geomMap_ = cubeImage(map.geom.faceSize);
   uploadFloatImage(context_, geomMap_, data.data());
+  coverageMap_ = cubeImage(map.ray.faceSize);
+  uploadFloatImage(context_, coverageMap_, coverage.data());
   writeImageDescriptor(context_.device(), warpSet_, kWarpBinding, warpSampler_.get(),
                        geomMap_.view());
+  writeImageDescriptor(context_.device(), warpSet_, kCoverageBinding, warpSampler_.get(),
+                       coverageMap_.view());
   mapHash_ = hash;
 }
 
@@ -248,7 +257,8 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
   uploadFrame(plan);
   if (conformal) {
     // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
-    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, plan.splitAlongCut, {}};
+    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, plan.splitAlongCut,
+                                 plan.snapCutToRim, {}};
     for (const ViewData& view : plan.views) {
       if (view.params.w != 0.0f) {  // tessellation on
         thresholds.maxErrorAngle = std::min(thresholds.maxErrorAngle, view.params.x);

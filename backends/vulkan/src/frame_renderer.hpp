@@ -78,7 +78,7 @@ class FrameRenderer {
   UniqueDescriptorPool pool_;
   std::uint64_t patchLevelsScene_ = 0;  // scene whose pre-pass buffers frameSet_ binding 2 holds
   VkDescriptorSet frameSet_ = VK_NULL_HANDLE, warpSet_ = VK_NULL_HANDLE;
-  Image geomMap_;
+  Image geomMap_, coverageMap_;  // coverageMap_: the ray map (its alpha: the display's coverage)
   UniqueSampler warpSampler_;
   std::uint64_t mapHash_ = 0;
   // What the pre-pass read, for telling whether the last one is still current: the warp depends

@@ -70,6 +70,10 @@ inline constexpr std::uint32_t kPrepassErrorWallsBinding = 24;  // a uniform buf
 // strictest bound everywhere.
 inline constexpr std::uint32_t kMaxErrorWalls = 64;
 
+// Binding of the warp set (kWarpDescriptorSet) with the ray map, for its alpha: where the display
+// shows a physical direction (confvis_prepass_common.glsl, confvisCoverageMap).
+inline constexpr std::uint32_t kCoverageBinding = 1;
+
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
   std::uint32_t count;
@@ -84,6 +88,7 @@ struct PrepassConstants {
   std::uint32_t splitAlongCut;  // 0 or 1
   std::uint32_t cutVertexBase;  // GpuScene::cutVertexBase()
   std::uint32_t errorWallCount;  // ErrorWall entries in use (at most kMaxErrorWalls)
+  std::uint32_t snapCutToRim;    // 0 or 1
 };
 
 // std430 element `ErrorWall` of confvis_prepass_common.glsl: a wall's lit rectangle relative to

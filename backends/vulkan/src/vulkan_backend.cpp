@@ -57,7 +57,8 @@ class VulkanBackend final : public RenderBackend {
     const auto start = std::chrono::steady_clock::now();
     const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
                                                    options_.maxSegmentDegrees, options_.tessellate,
-                                                   options_.splitAlongCut, options_.reusePrepass};
+                                                   options_.splitAlongCut, options_.reusePrepass,
+                                                   options_.snapCutToRim};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, scene_->bounds(), tessellation,
                           context_.capabilities().maxMultiviewViewCount);

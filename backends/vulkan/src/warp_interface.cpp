@@ -7,26 +7,38 @@
 
 namespace confvis::vulkan {
 
-std::vector<float> geomMapUploadData(const RetargetMap& map) {
-  const int n = map.geom.faceSize;
+namespace {
+
+std::vector<float> cubeUploadData(const CubeMap& cube, const std::string& name) {
+  const int n = cube.faceSize;
   if (n <= 0)
-    throw Error(ErrorCode::InvalidInput, "retarget map: the geom cube map is empty");
+    throw Error(ErrorCode::InvalidInput, "retarget map: the " + name + " cube map is empty");
   for (CubeFace face : kCubeFaces) {
-    const ImageRGBA& image = map.geom.face(face);
+    const ImageRGBA& image = cube.face(face);
     if (image.width != n || image.height != n)
-      throw Error(ErrorCode::InvalidInput, std::string("retarget map: geom face ") +
-                                               toString(face) + " is not " + std::to_string(n) +
-                                               " x " + std::to_string(n));
+      throw Error(ErrorCode::InvalidInput, "retarget map: " + name + " face " + toString(face) +
+                                               " is not " + std::to_string(n) + " x " +
+                                               std::to_string(n));
     if (!image.allFinite())
-      throw Error(ErrorCode::InvalidInput, std::string("retarget map: geom face ") +
-                                               toString(face) + " has non-finite texels");
+      throw Error(ErrorCode::InvalidInput, "retarget map: " + name + " face " + toString(face) +
+                                               " has non-finite texels");
   }
-  const CubeMap vulkanLayout = toVulkanLayout(map.geom);
+  const CubeMap vulkanLayout = toVulkanLayout(cube);
   std::vector<float> data;
   data.reserve(static_cast<std::size_t>(n) * n * 4 * 6);
   for (const ImageRGBA& face : vulkanLayout.faces)
     data.insert(data.end(), face.pixels.begin(), face.pixels.end());
   return data;
+}
+
+}  // namespace
+
+std::vector<float> geomMapUploadData(const RetargetMap& map) {
+  return cubeUploadData(map.geom, "geom");
+}
+
+std::vector<float> rayMapUploadData(const RetargetMap& map) {
+  return cubeUploadData(map.ray, "ray");
 }
 
 VkDescriptorSetLayoutBinding warpLayoutBinding(VkShaderStageFlags stages) {

@@ -1,5 +1,5 @@
 // Triangles that the source's cut crosses, split exactly along it in the pre-pass
-// (classify_bent_triangles.comp): each side is drawn up to the cut, against the closed form of
+// (split_triangles_at_cut.comp): each side is drawn up to the cut, against the closed form of
 // the azimuth squeeze, where the geometry shader's drop of the pieces across the cut (the path
 // without the split) leaves a band unshown beside it.
 #include <gtest/gtest.h>

@@ -49,6 +49,12 @@ struct VulkanOptions {
   // along it, each side drawn up to the cut. False: they are tessellated finely and the pieces
   // across the cut dropped, leaving a band of a segment's width unshown (for tests and benchmarks).
   bool splitAlongCut = true;
+  // Conformal mode: the cut vertices of triangles split along the cut are moved out to the
+  // display's rim (where the ray map's coverage ends), which is where the exact warp takes the
+  // cut; the geom map's extrapolation from its last texel falls short of it where the map grows
+  // like a square root next to the cut, leaving a band along the rim unshown. False: the
+  // extrapolated limits (for tests and benchmarks).
+  bool snapCutToRim = true;
   // Conformal mode: a frame whose scene, map, navigation (RenderSettings::camera) and error
   // bounds equal the previous conformal frame's reuses its compute pre-pass (warps, edge levels,
   // draw lists); head tracking alone changes none of them. False: every frame runs it (the

@@ -24,6 +24,8 @@ inline constexpr VkFormat kGeomMapFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 // virtual direction v returns what RetargetMap::geom stores for v. Throws Error(InvalidInput) for
 // a malformed map (wrong face sizes, non-finite texels).
 std::vector<float> geomMapUploadData(const RetargetMap& map);
+// The same for the `ray` map (indexed by physical direction; alpha: where the display shows it).
+std::vector<float> rayMapUploadData(const RetargetMap& map);
 
 // A combined-image-sampler binding at kWarpBinding for the given stages (every stage that warps:
 // vertex, tessellation control and evaluation, geometry).
