@@ -39,12 +39,11 @@ bool splitAlongCut(uint i[3], vec3 r[3], vec4 w[3], vec4 rawLevels[3], uint edge
     cut[k] = (edgeFlagsOf(edge[k]) & kEdgeAcrossCut) != 0u;
     cuts += cut[k] ? 1u : 0u;
   }
+  // The split is on and every corner inside the source field (splitMayApply queued only such).
   uint u = !cut[0] ? 0u : !cut[1] ? 1u : 2u;
-  bool valid = prepass.splitAlongCut != 0u && min(w[0].w, min(w[1].w, w[2].w)) >= 1.0;
-  bool applies = valid && cuts == 2u && rawLevels[u].w > 0.0 &&
-                 rawLevels[u].w <= float(kMaxUncutSegments);
+  bool applies = cuts == 2u && rawLevels[u].w > 0.0 && rawLevels[u].w <= float(kMaxUncutSegments);
   uint k = cut[0] ? 0u : cut[1] ? 1u : 2u;  // the cut edge where there is one
-  bool tip = valid && cuts == 1u && rawLevels[(k + 1u) % 3u].w > 0.0 &&
+  bool tip = cuts == 1u && rawLevels[(k + 1u) % 3u].w > 0.0 &&
              rawLevels[(k + 1u) % 3u].w <= float(kMaxUncutSegments) &&
              rawLevels[(k + 2u) % 3u].w > 0.0 &&
              rawLevels[(k + 2u) % 3u].w <= float(kMaxUncutSegments);

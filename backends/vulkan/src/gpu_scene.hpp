@@ -3,9 +3,10 @@
 // read as storage buffers by the conformal pre-pass), base-colour textures as float images, one
 // descriptor set per texture (plus a white one). The vertex buffer holds more than the scene's
 // vertices: conformal draws split triangles at their edges' midpoints and along the source's cut
-// (classify_bent_triangles.comp, split_triangles_at_cut.comp), and drawing those pieces from the same buffer by index, with
-// fixed-function vertex fetch and the vertex cache, costs a fraction of a vertex shader that
-// assembles them (lavapipe: ~0.015 s a 20k-triangle frame under a baked map).
+// (classify_bent_triangles.comp, split_triangles_at_cut.comp), and drawing those pieces from the
+// same buffer by index, with fixed-function vertex fetch and the vertex cache, costs a fraction
+// of a vertex shader that assembles them (lavapipe: ~0.015 s a 20k-triangle frame under a baked
+// map).
 #include <cstdint>
 #include <vector>
 
