@@ -15,13 +15,6 @@
 
 layout(local_size_x = 64) in;
 
-// Appends triangle t of the current mesh to its cut list, growing the list's dispatch.
-void appendAtCut(uint t) {
-  uint slot = atomicAdd(cutDispatch[prepass.mesh].count, 1u);
-  cutTriangles[prepass.firstIndex / 3u + slot] = t;
-  if (slot % kBentGroup == 0u) atomicMax(cutDispatch[prepass.mesh].groupsX, slot / kBentGroup + 1u);
-}
-
 void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= bentDispatch[prepass.mesh].count) return;

@@ -176,6 +176,13 @@ void appendStraight(uint t) {
   if (slot % kBentGroup == 0u) atomicMax(straightDispatch[prepass.mesh].groupsX, slot / kBentGroup + 1u);
 }
 
+// The same for the cut list (classify_bent_triangles.comp).
+void appendAtCut(uint t) {
+  uint slot = atomicAdd(cutDispatch[prepass.mesh].count, 1u);
+  cutTriangles[prepass.firstIndex / 3u + slot] = t;
+  if (slot % kBentGroup == 0u) atomicMax(cutDispatch[prepass.mesh].groupsX, slot / kBentGroup + 1u);
+}
+
 // Per vertex: its virtual point in the physical frame relative to the map's reference point
 // (xyz), written once by warp_vertices.comp; the later passes read it instead of transforming the
 // vertex again (each edge and triangle reads two or three).
