@@ -1,5 +1,5 @@
 // The target template's walls and the checks of the visible region that only the template can
-// make (engine/src/engine/display_checks.cpp already rejects degenerate, overlapping and
+// make (engine/core/src/engine/display_checks.cpp already rejects degenerate, overlapping and
 // back-facing walls and a reference point behind any wall).
 #include <algorithm>
 #include <cmath>

@@ -16,13 +16,13 @@
 
 #include "backend_factory.hpp"
 #include "command.hpp"
-#include "confvis/api/map_follower.hpp"
+#include "confvis/runtime/map_follower.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/scene_loader.hpp"
-#include "confvis/engine/tracker.hpp"
+#include "confvis/runtime/tracker.hpp"
 #include "shipped_files.hpp"
 
 namespace confvis::cli {

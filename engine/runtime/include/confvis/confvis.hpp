@@ -21,7 +21,7 @@
 #include "confvis/engine/display_import.hpp"
 #include "confvis/engine/scene.hpp"
 #include "confvis/engine/scene_loader.hpp"
-#include "confvis/engine/tracker.hpp"
+#include "confvis/runtime/tracker.hpp"
 #include "confvis/engine/version.hpp"
 #include "confvis/engine/view.hpp"
 #include "confvis/engine/viewer.hpp"
@@ -36,7 +36,7 @@
 #include "confvis/conformal/retarget_map.hpp"
 
 // Keeping the map around the tracked head.
-#include "confvis/api/map_follower.hpp"
+#include "confvis/runtime/map_follower.hpp"
 
 // Rendering through the map (backends: Embree, Vulkan).
 #include "confvis/backends/render_backend.hpp"

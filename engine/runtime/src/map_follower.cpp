@@ -1,4 +1,4 @@
-#include "confvis/api/map_follower.hpp"
+#include "confvis/runtime/map_follower.hpp"
 
 #include <cmath>
 #include <condition_variable>

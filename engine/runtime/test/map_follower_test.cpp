@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "../engine/display_test_support.hpp"
-#include "confvis/api/map_follower.hpp"
+#include "confvis/runtime/map_follower.hpp"
 #include "confvis/base/error.hpp"
 
 using namespace confvis;

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "confvis/base/error.hpp"
-#include "confvis/engine/tracker.hpp"
+#include "confvis/runtime/tracker.hpp"
 #include "display_test_support.hpp"
 
 using namespace confvis;

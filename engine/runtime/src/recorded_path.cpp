@@ -5,7 +5,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
-#include "confvis/engine/tracker.hpp"
+#include "confvis/runtime/tracker.hpp"
 #include "number_text.hpp"
 
 namespace confvis {
