@@ -3,6 +3,7 @@
 // can poll it once per frame. confvis ships a recorded-path player (tests, demos, offline
 // renders); a live tracker (VRPN, OpenXR, a lab's own protocol) implements the same interface in
 // the application. Debian 12 packages no VRPN, so confvis has no VRPN client (README).
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -18,11 +19,20 @@ struct TrackedPose {
   double seconds = 0.0;  // when the pose was measured, on the tracker's clock
 };
 
+// What a tracker has seen, for overlays and logs (view.json). A recorded path never loses track.
+struct TrackerStatus {
+  std::uint64_t packetsReceived = 0;  // accepted poses
+  std::uint64_t packetsDropped = 0;   // malformed packets, or packets without the head body
+  bool lost = false;                  // no pose for a while: latest() keeps the last one
+};
+
 class Tracker {
  public:
   virtual ~Tracker() = default;
   // The newest pose, or nullopt before the first one arrives. Never blocks.
   virtual std::optional<TrackedPose> latest() = 0;
+  // Thread-safe; never blocks.
+  virtual TrackerStatus status() const { return {}; }
 };
 
 // One sample of a recorded head path.

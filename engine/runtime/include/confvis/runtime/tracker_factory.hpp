@@ -1,0 +1,17 @@
+#pragma once
+// Opens a head tracker from a command-line spec, the way `confvis view --tracker` names one.
+#include <memory>
+#include <string>
+
+#include "confvis/engine/display_config.hpp"
+#include "confvis/runtime/tracker.hpp"
+
+namespace confvis {
+
+// spec: "path:FILE.csv" plays a recorded head path in real time, looping. Live trackers
+// ("dtrack:PORT", ART DTrack2 ASCII over UDP; "udp:PORT", JSON lines over UDP) take the
+// display's tracking section (tracker-to-room transform, head body). Error(InvalidInput) naming
+// the spec for an unknown kind or a malformed port; the path's own errors for a bad file.
+std::unique_ptr<Tracker> openTracker(const std::string& spec, const DisplayConfig& display);
+
+}  // namespace confvis
