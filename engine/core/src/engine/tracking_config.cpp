@@ -103,7 +103,8 @@ TrackingConfig parseTrackingConfig(const json& v, const std::string& where) {
                              : b.is_number_integer() && b.get<std::int64_t>() >= 0 &&
                                    b.get<std::int64_t>() <= kMax;
     if (!inRange)
-      fail(where, "head_body", "must be a non-negative integer (a DTrack body id), got " + b.dump());
+      fail(where, "head_body",
+           "must be a non-negative integer (a DTrack body id), got " + b.dump());
     config.headBody = b.get<int>();
   }
   if (v.contains("timeout_seconds")) {

@@ -42,7 +42,8 @@ void expectInvalidTracking(const json& tracking, std::initializer_list<std::stri
   } catch (const Error& e) {
     EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
     for (const std::string& f : fragments)
-      EXPECT_NE(std::string(e.what()).find(f), std::string::npos) << "lacks " << f << ": " << e.what();
+      EXPECT_NE(std::string(e.what()).find(f), std::string::npos)
+          << "lacks " << f << ": " << e.what();
   }
 }
 
