@@ -219,7 +219,7 @@ json vecJson(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName) {
   const ObjectReader top(root, sourceName);
   top.rejectUnknownKeys({"name", "reference", "source", "edge_length", "cube_resolution",
-                         "stereo", "walls"});
+                         "stereo", "tracking", "walls"});
   DisplayConfig config;
   config.name = top.string("name");
   if (config.name.empty()) top.failKey("name", "must not be empty");
@@ -241,6 +241,9 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
       stereo.failKey("eye_separation", "must not be negative");
   }
 
+  if (top.has("tracking"))
+    config.tracking = parseTrackingConfig(root.at("tracking"), sourceName + ": tracking");
+
   const json& walls = top.required("walls");
   if (!walls.is_array()) top.failKey("walls", "must be an array of walls");
   if (walls.empty()) top.failKey("walls", "must hold at least one wall");
@@ -250,7 +253,9 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
     detail::checkFacesReference(config.walls.back(), config.reference, sourceName);
   }
   detail::checkWallSet(config, sourceName);
-  config.hash = fnv1a64Hex(toJson(config).dump());
+  json hashed = toJson(config);
+  hashed.erase("tracking");  // the tracker does not change the map: its edits keep the bake cache
+  config.hash = fnv1a64Hex(hashed.dump());
   return config;
 }
 
@@ -289,6 +294,7 @@ json toJson(const DisplayConfig& config) {
           {"edge_length", config.edgeLength},
           {"cube_resolution", config.cubeResolution},
           {"stereo", {{"eye_separation", config.eyeSeparation}}},
+          {"tracking", toJson(config.tracking)},
           {"walls", walls}};
 }
 

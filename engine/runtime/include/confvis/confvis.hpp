@@ -37,6 +37,8 @@
 
 // Keeping the map around the tracked head.
 #include "confvis/runtime/map_follower.hpp"
+#include "confvis/runtime/tracker_factory.hpp"
+#include "confvis/runtime/udp_tracker.hpp"
 
 // Rendering through the map (backends: Embree, Vulkan).
 #include "confvis/backends/render_backend.hpp"

@@ -13,6 +13,7 @@
 //     "edge_length": 0.2,                       optional, metres, > 0
 //     "cube_resolution": 256,                   optional, texels per face, 8..8192
 //     "stereo": {"eye_separation": 0.064},      optional, metres, >= 0
+//     "tracking": {...},                        optional, the head tracker (tracking_config.hpp)
 //     "walls": [{                               required, at least one
 //       "name": "front",                        required, unique
 //       "lower_left": [x,y,z], "lower_right": [x,y,z], "upper_left": [x,y,z],   required
@@ -26,6 +27,8 @@
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
+
+#include "confvis/engine/tracking_config.hpp"
 
 namespace confvis {
 
@@ -67,7 +70,9 @@ struct DisplayConfig {
   double edgeLength = 0.20;                  // template refinement threshold, metres
   int cubeResolution = 256;                  // baked cube-map face size, texels
   double eyeSeparation = 0.064;              // metres
-  // Hex FNV-1a 64 of toJson(*this).dump(): identifies a display for caches of baked maps.
+  TrackingConfig tracking;                   // live head tracker; not part of the hash
+  // Hex FNV-1a 64 of toJson(*this).dump() without "tracking": identifies a display for caches of
+  // baked maps.
   std::string hash;
 
   // Throws Error(InvalidInput) naming the unknown wall and listing the known ones.
