@@ -16,6 +16,8 @@ packages=(
   libpugixml-dev
   # CLI parsing and tests
   libcli11-dev libgtest-dev
+  # cluster rendering (--cluster, confvis::Cluster): Open MPI and its mpirun
+  libopenmpi-dev openmpi-bin
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "backend_factory.hpp"
+#include "cluster_cli.hpp"
 #include "command.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
@@ -32,6 +33,7 @@ struct RenderArgs {
   int spp = 1;
   double scale = 1.0;
   bool ambientOcclusion = false, quiet = false;
+  ClusterCliOptions cluster;
 };
 
 VirtualCamera parseCamera(const std::string& text) {
@@ -64,6 +66,9 @@ VirtualCamera parseCamera(const std::string& text) {
   return camera;
 }
 
+// How long the other ranks of a --cluster run wait for rank 0's bake of the map.
+constexpr double kClusterBakeSeconds = 600.0;
+
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -90,11 +95,15 @@ int runRender(const RenderArgs& args) {
   settings.showProgress = !args.quiet;
 
   std::unique_ptr<RenderBackend> backend = makeBackend(args.backend, {args.device, args.tessellationErrorPixels});
-  std::optional<MapSource> map;
-  if (settings.mode == RenderMode::Conformal)
+  std::optional<CliCluster> cluster;  // --cluster: this rank renders its walls, rank 0 writes
+  if (args.cluster.enabled) cluster.emplace(config, args.cluster);
+  std::optional<MapSource> map;  // one bake for all: rank 0's, shared with the others
+  if (settings.mode == RenderMode::Conformal && (!cluster || cluster->isRoot()))
     map = retargetMapFor(config, args.mapDirectory, !args.quiet);
+  const RetargetMap* renderMap = map ? &map->map : nullptr;
+  if (cluster) renderMap = cluster->shareMap(renderMap, kClusterBakeSeconds);
   // Check walls, eyes and map before the (possibly slow) scene load.
-  planRender(config, map ? &map->map : nullptr, settings);
+  planRender(config, renderMap, settings);
   const double setupSeconds = secondsSince(start);
 
   auto stage = std::chrono::steady_clock::now();
@@ -104,7 +113,11 @@ int runRender(const RenderArgs& args) {
   backend->setScene(scene);
   const double uploadSeconds = secondsSince(stage);
   stage = std::chrono::steady_clock::now();
-  const RenderResult result = backend->render(config, map ? &map->map : nullptr, settings);
+  std::optional<RenderResult> rendered =
+      cluster ? cluster->render(*backend, config, renderMap, settings)
+              : backend->render(config, renderMap, settings);
+  if (!rendered) return 0;  // a cluster rank other than 0: rank 0 writes every image
+  const RenderResult& result = *rendered;
   const double renderSeconds = secondsSince(stage);
 
   const fs::path output = args.output.empty() ? fs::path("out") / ("render-" + config.name)
@@ -116,6 +129,7 @@ int runRender(const RenderArgs& args) {
                  {"triangles", scene.triangleCount()},
                  {"vertices", scene.vertexCount()}}},
       {"map", map ? nlohmann::json(map->origin) : nlohmann::json(nullptr)},
+      {"cluster", cluster ? cluster->report() : nlohmann::json(nullptr)},
       {"timings", {{"setup_seconds", setupSeconds},
                    {"scene_load_seconds", loadSeconds},
                    {"scene_upload_seconds", uploadSeconds},
@@ -181,6 +195,7 @@ const RegisterCommand registration{Command{
       sub.add_flag("--ao", args->ambientOcclusion, "Ambient occlusion");
       sub.add_option("-o,--output", args->output, "Output directory (default: out/render-NAME)");
       sub.add_flag("-q,--quiet", args->quiet, "No progress bar");
+      addClusterOptions(sub, args->cluster);
       return [args] { return runRender(*args); };
     }}};
 

@@ -9,12 +9,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
 #include <nlohmann/json.hpp>
 
 #include "backend_factory.hpp"
+#include "cluster_cli.hpp"
 #include "command.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/backends/render_output.hpp"
@@ -36,7 +38,8 @@ struct WalkArgs {
   int frames = 0;  // 0: one pass of the path
   int bakeResolution = 0;
   double fps = 30.0, scale = 0.1, radius = 0.10, bakeEdgeLength = 0.0;
-  bool noPacing = false, quiet = false;
+  bool noPacing = false, quiet = false, waitForBakes = false;
+  ClusterCliOptions cluster;
 };
 
 nlohmann::json toJson(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
@@ -45,6 +48,11 @@ nlohmann::json toJson(const glm::dquat& q) { return {q.w, q.x, q.y, q.z}; }
 double secondsSince(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
+
+// --cluster: how long the other ranks wait for rank 0's first bake, and for its frames (rank 0
+// also renders and writes every frame's images).
+constexpr double kClusterBakeSeconds = 600.0;
+constexpr double kFrameSeconds = 60.0;
 
 std::string frameName(int index) {
   char name[32];
@@ -82,13 +90,19 @@ int runWalk(const WalkArgs& args) {
   double frameSeconds = path.keys().front().seconds;
   RecordedPathTracker tracker(path, /*loop=*/true, [&frameSeconds] { return frameSeconds; });
 
+  // --cluster: rank 0 tracks, bakes and decides every frame; each rank renders its walls.
+  std::optional<CliCluster> cluster;
+  if (args.cluster.enabled) cluster.emplace(config, args.cluster);
+  const bool root = !cluster || cluster->isRoot();
   std::unique_ptr<RenderBackend> backend = makeBackend(args.backend);
   const Scene scene = sceneByNameOrFile(args.scene);
   backend->setScene(scene);
-  if (!args.quiet)
+  if (!args.quiet && root)
     std::fprintf(stderr, "walk: baking the first map of '%s'...\n", config.name.c_str());
-  MapFollower follower(config, bakeFunction(args), MapFollowerOptions{.radius = args.radius});
+  std::optional<MapFollower> follower;
+  if (root) follower.emplace(config, bakeFunction(args), MapFollowerOptions{.radius = args.radius});
   const double setupSeconds = secondsSince(start);
+  nlohmann::json rankLog = nlohmann::json::array();  // --cluster: this rank's frame states
 
   RenderSettings settings;
   settings.mode = RenderMode::Conformal;
@@ -109,23 +123,51 @@ int runWalk(const WalkArgs& args) {
       std::this_thread::sleep_until(loopStart + std::chrono::duration_cast<Clock::duration>(
                                                     std::chrono::duration<double>(walkSeconds)));
     frameSeconds = path.keys().front().seconds + walkSeconds;
-    const HeadPose head = tracker.latest().value().head;
-    const FollowerFrame frame = follower.beginFrame(head);
+    ClusterFrameState state;  // what rank 0 decides for this frame
+    FollowerFrame frame;
+    bool bakeStarted = false;
+    if (root) {
+      state.frame = static_cast<std::uint64_t>(index);
+      state.seconds = frameSeconds;
+      state.head = tracker.latest().value().head;
+      frame = follower->beginFrame(state.head);
+      state.mapGeneration = frame.generation;
+      bakeStarted = follower->stats().bakesStarted > previousBakesStarted;
+      previousBakesStarted = follower->stats().bakesStarted;
+      // Offline determinism: a bake started now is swapped in at the next frame, whatever it costs.
+      if (args.waitForBakes && frame.baking) follower->waitForBake();
+    }
+    if (cluster) {
+      if (root && (index == 0 || frame.swapped))  // every rank holds the map before the frame
+        cluster->shareFrameMap(frame.map, frame.generation);
+      cluster->exchangeFrame(state, index == 0 ? kClusterBakeSeconds : kFrameSeconds);
+      frame.map = cluster->map();
+      frame.generation = state.mapGeneration;
+      rankLog.push_back({{"frame", state.frame}, {"seconds", state.seconds},
+                         {"head", {{"position", toJson(state.head.position)},
+                                   {"orientation", toJson(state.head.orientation)}}},
+                         {"map_generation", state.mapGeneration}});
+    }
+    const HeadPose head = state.head;
     const glm::dvec3 reference(frame.map->reference.x, frame.map->reference.y,
                                frame.map->reference.z);
     if (index == 0 || frame.generation != frameConfigGeneration) {
       frameConfig = withReference(config, reference);
       frameConfigGeneration = frame.generation;
     }
-    const bool bakeStarted = follower.stats().bakesStarted > previousBakesStarted;
-    previousBakesStarted = follower.stats().bakesStarted;
 
     // The centre eye at the tracked head; the virtual camera sits at the map's reference point,
     // so the virtual world (camera + (p - reference)) stays put when the reference moves.
     settings.head = head;
     settings.camera.position = reference;
     try {  // into the previous frame's images (written out already): no fresh output memory
-      backend->renderInto(frameConfig, frame.map.get(), settings, result);
+      if (!cluster) {
+        backend->renderInto(frameConfig, frame.map.get(), settings, result);
+      } else if (auto all = cluster->render(*backend, frameConfig, frame.map.get(), settings)) {
+        result = std::move(*all);
+      } else {
+        continue;  // rank 0 writes the frame
+      }
     } catch (const Error& error) {
       throw Error(error.code(), "frame " + std::to_string(index) + " (t = " +
                                     std::to_string(frameSeconds) + " s): " + error.what());
@@ -134,7 +176,7 @@ int runWalk(const WalkArgs& args) {
     writeRenderOutput(directory, frameConfig, settings, result,
                       {{"walk", {{"frame", index}, {"seconds", frameSeconds}}}});
 
-    for (const std::string& message : follower.takeErrors()) {
+    for (const std::string& message : follower->takeErrors()) {
       errors.push_back({{"frame", index}, {"message", message}});
       std::fprintf(stderr, "walk: frame %d: re-bake failed, keeping the old map: %s\n", index,
                    message.c_str());
@@ -160,8 +202,17 @@ int runWalk(const WalkArgs& args) {
                    frame.baking ? (bakeStarted ? "  [re-bake started]" : "  [baking]") : "");
   }
 
+  if (cluster) {  // every rank's frame states, to show they all saw the same frames
+    const nlohmann::json log = {{"rank", cluster->rank()},
+                                {"walls", cluster->walls()},
+                                {"frames", rankLog}};
+    writeTextAtomically(fs::path(args.output) /
+                            ("cluster-rank-" + std::to_string(cluster->rank()) + ".json"),
+                        log.dump(2) + "\n");
+    if (!root) return 0;
+  }
   // No waiting for a running bake before the report: it is counted as still running.
-  const MapFollowerStats stats = follower.stats();
+  const MapFollowerStats stats = follower->stats();
   const int stillRunning = stats.bakesStarted - stats.bakesSucceeded - stats.bakesFailed;
   nlohmann::json report = {
       {"display", {{"name", config.name}, {"config", configPath.string()}}},
@@ -172,6 +223,8 @@ int runWalk(const WalkArgs& args) {
       {"radius_m", args.radius},
       {"scale", args.scale},
       {"paced", !args.noPacing},
+      {"wait_for_bakes", args.waitForBakes},
+      {"cluster", cluster ? cluster->report() : nlohmann::json(nullptr)},
       {"frames", frames},
       {"rebakes", {{"started", stats.bakesStarted},
                    {"swapped_in", stats.bakesSucceeded},
@@ -225,8 +278,12 @@ const RegisterCommand registration{Command{
       sub.add_flag("--no-pacing", args->noPacing,
                    "Render as fast as possible instead of frame i no earlier than i/fps seconds "
                    "after the first (with it, bakes rarely finish within the walk)");
+      sub.add_flag("--wait-for-bakes", args->waitForBakes,
+                   "Wait for every re-bake, so it is swapped in at the next frame: the same frames "
+                   "at any speed (offline runs, --cluster comparisons)");
       sub.add_option("-o,--output", args->output, "Output directory")->capture_default_str();
       sub.add_flag("-q,--quiet", args->quiet, "No per-frame progress lines");
+      addClusterOptions(sub, args->cluster);
       return [args] { return runWalk(*args); };
     }}};
 

@@ -173,7 +173,8 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
   wall.name = byIndex.string("name");
   if (wall.name.empty()) byIndex.failKey("name", "must not be empty");
   const ObjectReader r(wallJson, sourceName + ": wall '" + wall.name + "'");
-  r.rejectUnknownKeys({"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel"});
+  r.rejectUnknownKeys(
+      {"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel", "node"});
   wall.lowerLeft = r.vec3("lower_left");
   wall.lowerRight = r.vec3("lower_right");
   wall.upperLeft = r.vec3("upper_left");
@@ -183,6 +184,13 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
     r.failKey("resolution", "must be between 1 and " + std::to_string(kMaxWallPixels) +
                                 " pixels per side, got " + wallJson.at("resolution").dump());
   wall.bezel = readBezel(r, wallJson);
+  if (r.has("node")) {  // a host name, or a rank number (cluster.hpp)
+    const json& node = wallJson.at("node");
+    if (node.is_number_integer() && node.get<std::int64_t>() >= 0)
+      wall.node = std::to_string(node.get<std::int64_t>());
+    else if (node.is_string() && !node.get<std::string>().empty()) wall.node = node;
+    else r.failKey("node", "must be a host name or a rank number (>= 0), got " + node.dump());
+  }
   return wall;
 }
 
@@ -286,6 +294,7 @@ json toJson(const DisplayConfig& config) {
                        {"right", w.bezel.right},
                        {"bottom", w.bezel.bottom},
                        {"top", w.bezel.top}}}});
+    if (!w.node.empty()) walls.back()["node"] = w.node;  // absent: hashes of node-less configs stay
   }
   const char* field = config.source == SourceField::Hemisphere ? "hemisphere" : "sphere";
   return {{"name", config.name},

@@ -19,6 +19,7 @@
 //       "lower_left": [x,y,z], "lower_right": [x,y,z], "upper_left": [x,y,z],   required
 //       "resolution": [width, height],          required, pixels of the lit area
 //       "bezel": {"left": 0, "right": 0, "bottom": 0, "top": 0}   optional, metres
+//       "node": "render-3" | 3                  optional: the cluster host or rank that draws it
 //     }]
 //   }
 #include <filesystem>
@@ -43,6 +44,7 @@ struct Wall {
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
   int width = 0, height = 0;  // pixels of the lit area
   Bezel bezel;
+  std::string node;  // cluster host name or rank number that draws this wall; empty: any
 
   glm::dvec3 upperRight() const;
   glm::dvec3 right() const;   // unit, lower-left -> lower-right

@@ -1,0 +1,49 @@
+// A wall's optional "node": the cluster host or rank that draws it (runtime/cluster.hpp).
+#include <gtest/gtest.h>
+
+#include "confvis/base/error.hpp"
+#include "confvis/engine/display_config.hpp"
+#include "display_test_support.hpp"
+
+using namespace confvis;
+using confvis::testing::shippedConfigJson;
+using nlohmann::json;
+
+namespace {
+
+json& wall(json& config, const std::string& name) {
+  for (json& w : config["walls"])
+    if (w["name"] == name) return w;
+  throw std::logic_error("no wall " + name);
+}
+
+TEST(DisplayConfigNode, NamesAHostOrARankAndEntersTheHashOnlyWhenGiven) {
+  json config = shippedConfigJson("cave5.json");
+  const DisplayConfig plain = parseDisplayConfig(config, "cave5.json");
+  EXPECT_EQ(plain.wall("left").node, "");
+  EXPECT_FALSE(toJson(plain)["walls"][0].contains("node"));  // old hashes stay valid
+
+  wall(config, "left")["node"] = "render-2";
+  wall(config, "right")["node"] = 3;
+  const DisplayConfig placed = parseDisplayConfig(config, "cave5.json");
+  EXPECT_EQ(placed.wall("left").node, "render-2");
+  EXPECT_EQ(placed.wall("right").node, "3");
+  EXPECT_NE(placed.hash, plain.hash);
+  EXPECT_EQ(parseDisplayConfig(toJson(placed), "round trip").hash, placed.hash);
+}
+
+TEST(DisplayConfigNode, AnythingElseIsOneErrorNamingTheWall) {
+  for (const json& bad : {json(-1), json(""), json(1.5), json::array({1}), json(true)}) {
+    json config = shippedConfigJson("cave5.json");
+    wall(config, "floor")["node"] = bad;
+    try {
+      (void)parseDisplayConfig(config, "broken.json");
+      ADD_FAILURE() << "node " << bad.dump() << " accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("wall 'floor'"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("node"), std::string::npos) << e.what();
+    }
+  }
+}
+
+}  // namespace

@@ -1,0 +1,224 @@
+// End-to-end cluster runs under mpirun (Open MPI, all ranks on this machine): the outputs of a
+// cluster equal one process's byte for byte, every rank sees the same frames and maps, a
+// mismatched config is refused at start, and a rank that stops answering ends every rank within
+// the timeout with a message naming it. Own binary and CTest label: ctest -L mpi.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <thread>
+
+#include "../cli_test_support.hpp"
+
+namespace fs = std::filesystem;
+using confvis::testing::CliRun;
+using confvis::testing::runCli;
+using confvis::testing::scratch;
+
+namespace {
+
+// Root may run mpirun only with these; harmless otherwise.
+const std::string kMpiEnvironment =
+    "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1";
+
+// `ranks` copies of `confvis args` under mpirun.
+CliRun runMpi(int ranks, const std::string& args) {
+  const std::string command = kMpiEnvironment + " " + CONFVIS_MPIEXEC + " --oversubscribe -np " +
+                              std::to_string(ranks) + " " + CONFVIS_CLI_PATH + " " + args +
+                              " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  char buffer[4096];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+std::string bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Every image file under `dir` (EXR, PNG), relative paths: the reports hold timings and differ.
+std::set<fs::path> images(const fs::path& dir) {
+  std::set<fs::path> files;
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    if (entry.is_regular_file() &&
+        (entry.path().extension() == ".exr" || entry.path().extension() == ".png"))
+      files.insert(fs::relative(entry.path(), dir));
+  return files;
+}
+
+void expectSameImages(const fs::path& single, const fs::path& cluster) {
+  const std::set<fs::path> expected = images(single);
+  ASSERT_FALSE(expected.empty());
+  EXPECT_EQ(images(cluster), expected);
+  for (const fs::path& file : expected)
+    EXPECT_TRUE(bytes(single / file) == bytes(cluster / file)) << file << " differs";
+}
+
+nlohmann::json readJson(const fs::path& file) {
+  nlohmann::json j;
+  std::ifstream(file) >> j;
+  return j;
+}
+
+TEST(ClusterCli, RenderOnThreeRanksEqualsOneProcessByteForByte) {
+  const std::string common = "render --scale 0.04 -q --scene checker-sphere ";
+  const fs::path single = scratch("render-single"), cluster = scratch("render-cluster");
+  const CliRun one = runCli(common + "-o " + single.string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CliRun many = runMpi(3, common + "--cluster -o " + cluster.string());
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+  expectSameImages(single, cluster);
+  // cave5's five walls dealt in config order over three ranks.
+  const nlohmann::json ranks = readJson(cluster / "render.json").at("cluster").at("ranks");
+  ASSERT_EQ(ranks.size(), 3u);
+  EXPECT_EQ(ranks[0].at("walls").size(), 2u);
+  EXPECT_EQ(ranks[1].at("walls").size(), 2u);
+  EXPECT_EQ(ranks[2].at("walls").size(), 1u);
+}
+
+TEST(ClusterCli, PlainStereoOnSixRanksWithAnIdleHeadNodeEqualsOneProcess) {
+  const std::string common = "render --scale 0.03 -q --mode plain --eyes stereo ";
+  const fs::path single = scratch("plain-single"), cluster = scratch("plain-cluster");
+  ASSERT_EQ(runCli(common + "-o " + single.string()).exitCode, 0);
+  const CliRun many = runMpi(6, common + "--cluster -o " + cluster.string());
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+  expectSameImages(single, cluster);
+  EXPECT_TRUE(readJson(cluster / "render.json")["cluster"]["ranks"][5]["walls"].empty());
+}
+
+TEST(ClusterCli, WalkOnFiveRanksEqualsOneProcessAndSwapsMapsOnTheSameFrame) {
+  // The head leaves the 5 cm radius at frame 12; --wait-for-bakes swaps the new map in at the
+  // next frame in both runs, whatever the bake costs.
+  const std::string common = "walk --frames 16 --fps 8 --scale 0.02 --radius 0.05 "
+                             "--bake-resolution 32 --no-pacing --wait-for-bakes -q ";
+  const fs::path single = scratch("walk-single"), cluster = scratch("walk-cluster");
+  const CliRun one = runCli(common + "-o " + single.string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CliRun many = runMpi(5, common + "--cluster -o " + cluster.string());
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+  expectSameImages(single, cluster);
+
+  const nlohmann::json rank0 = readJson(cluster / "cluster-rank-0.json");
+  ASSERT_EQ(rank0.at("frames").size(), 16u);
+  std::set<std::string> walls;
+  for (int r = 0; r < 5; ++r) {
+    const nlohmann::json log = readJson(cluster / ("cluster-rank-" + std::to_string(r) + ".json"));
+    EXPECT_EQ(log.at("frames"), rank0.at("frames")) << "rank " << r << " saw other frames";
+    for (const auto& w : log.at("walls")) walls.insert(w.get<std::string>());
+  }
+  EXPECT_EQ(walls.size(), 5u);  // every wall drawn by some rank
+  // The re-bake happened and was swapped in on one frame number for all ranks.
+  const nlohmann::json& frames = rank0.at("frames");
+  EXPECT_EQ(frames.front().at("map_generation"), 0);
+  EXPECT_GE(frames.back().at("map_generation").get<int>(), 1);
+  const nlohmann::json walk = readJson(single / "walk.json");
+  for (std::size_t i = 0; i < frames.size(); ++i)
+    EXPECT_EQ(frames[i].at("map_generation"), walk["frames"][i]["map"]["generation"]) << i;
+}
+
+TEST(ClusterCli, AMismatchedConfigIsRefusedAtStartNamingTheRank) {
+  const fs::path other = scratch("cave5-other.json");
+  nlohmann::json config = readJson(fs::path(CONFVIS_SOURCE_DIR) / "configs/cave5.json");
+  config["edge_length"] = 0.25;
+  std::ofstream(other) << config.dump();
+  const std::string base = std::string(CONFVIS_CLI_PATH) + " render --scale 0.02 -q --cluster ";
+  const std::string command = kMpiEnvironment + " " + CONFVIS_MPIEXEC +
+                              " --oversubscribe -np 1 " + base + "-o " +
+                              scratch("mismatch").string() + " : -np 1 " + base + other.string() +
+                              " -o " + scratch("mismatch").string() + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  char buffer[4096];
+  while (pipe && fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  EXPECT_NE(WEXITSTATUS(status), 0) << output;
+  EXPECT_NE(output.find("rank 1 (host"), std::string::npos) << output;
+  EXPECT_NE(output.find("config hash"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(scratch("mismatch") / "render.json"));
+}
+
+// A 3-rank walk long enough to be interrupted; each rank records its pid (exec keeps it), so a
+// test can stop or kill one mid-walk as a hung or crashed machine would.
+struct RunningWalk {
+  FILE* pipe = nullptr;
+  fs::path out, pids;
+
+  RunningWalk(const std::string& name, const std::string& options) {
+    out = scratch(name);
+    pids = scratch(name + "-pids");
+    fs::create_directories(pids);
+    const std::string walk = std::string(CONFVIS_CLI_PATH) +
+                             " walk --frames 400 --fps 8 --scale 0.02 --bake-resolution 32 -q "
+                             "--cluster " + options + " -o " + out.string();
+    const std::string command = kMpiEnvironment + " " + CONFVIS_MPIEXEC +
+                                " --oversubscribe -np 3 sh -c 'echo $$ > " + pids.string() +
+                                "/$OMPI_COMM_WORLD_RANK; exec " + walk + "' 2>&1";
+    pipe = popen(command.c_str(), "r");
+  }
+  // Waits until frames flow (rank 0 writes them); the pid of `rank`, 0 if it never started.
+  int pidOnceRunning(int rank) const {
+    const auto start = std::chrono::steady_clock::now();
+    while (!fs::exists(out / "frame-0004") &&
+           std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    int pid = 0;
+    if (fs::exists(out / "frame-0004")) std::ifstream(pids / std::to_string(rank)) >> pid;
+    return pid;
+  }
+  // Everything mpirun and the ranks print, and the exit status, once the job ended.
+  CliRun finish() {
+    std::string output;
+    char buffer[4096];
+    while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    const int status = pclose(pipe);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+  }
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(ClusterCli, ARankThatStopsAnsweringEndsEveryRankWithinTheTimeout) {
+  RunningWalk walk("stall", "--cluster-timeout 1");
+  ASSERT_NE(walk.pipe, nullptr);
+  const int pid = walk.pidOnceRunning(2);
+  ASSERT_GT(pid, 0);
+  const auto stopped = std::chrono::steady_clock::now();
+  ASSERT_EQ(kill(pid, SIGSTOP), 0);
+  const CliRun run = walk.finish();
+  const double seconds = secondsSince(stopped);
+  kill(pid, SIGKILL);  // in case mpirun left it stopped
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  // 1 s timeout: rank 0 names rank 2 after 1 s, the others leave at once; mpirun then ends the
+  // stopped one. Generous bound for a loaded 2-core machine.
+  EXPECT_LT(seconds, 15.0) << run.output;
+  // Rank 0 finds rank 2 missing at the swap lock and tells rank 1: both name it.
+  EXPECT_NE(run.output.find("rank 0: lost rank 2 (host"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("rank 1: lost rank 2 (host"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("no answer within 1 s"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(walk.out / "frame-0399"));
+}
+
+TEST(ClusterCli, ARankThatDiesEndsEveryRankAtOnce) {
+  RunningWalk walk("killed", "");
+  ASSERT_NE(walk.pipe, nullptr);
+  const int pid = walk.pidOnceRunning(1);
+  ASSERT_GT(pid, 0);
+  const auto killed = std::chrono::steady_clock::now();
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  const CliRun run = walk.finish();  // returns only once every rank has ended
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  EXPECT_LT(secondsSince(killed), 15.0) << run.output;  // mpirun itself ends the job
+  EXPECT_NE(run.output.find("rank 1"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(walk.out / "frame-0399"));
+}
+
+}  // namespace

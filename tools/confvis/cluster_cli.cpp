@@ -1,0 +1,124 @@
+#include "cluster_cli.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+
+#include "command.hpp"
+#include "confvis/base/error.hpp"
+#ifdef CONFVIS_HAVE_CLUSTER
+#include "confvis/runtime/cluster.hpp"
+#endif
+
+namespace confvis::cli {
+
+void addClusterOptions(CLI::App& sub, ClusterCliOptions& options) {
+  sub.add_flag("--cluster", options.enabled,
+               "Run as one rank of an MPI job (mpirun -np N confvis ...): the walls are dealt to "
+               "the ranks (a wall's \"node\" picks its rank or host), rank 0 writes the outputs");
+  sub.add_option("--cluster-timeout", options.timeoutSeconds,
+                 "Seconds a rank waits for another before ending the job with an error naming it")
+      ->check(kPositiveNumber)
+      ->capture_default_str();
+}
+
+#ifdef CONFVIS_HAVE_CLUSTER
+
+CliCluster::CliCluster(const DisplayConfig& display, const ClusterCliOptions& options) {
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized) {
+    int provided = 0;  // only this thread talks to MPI; bakes run on threads of their own
+    MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  }
+  cluster_ = std::make_unique<Cluster>(MPI_COMM_WORLD, display,
+                                       ClusterOptions{.timeoutSeconds = options.timeoutSeconds});
+}
+
+CliCluster::~CliCluster() {
+  if (std::uncaught_exceptions() > 0) return;  // see the class comment
+  cluster_.reset();
+  MPI_Finalize();
+}
+
+bool CliCluster::isRoot() const { return cluster_->isRoot(); }
+int CliCluster::rank() const { return cluster_->rank(); }
+const std::vector<std::string>& CliCluster::walls() const { return cluster_->walls(); }
+void CliCluster::exchangeFrame(ClusterFrameState& state, double patienceSeconds) {
+  cluster_->exchangeFrame(state, patienceSeconds);
+}
+void CliCluster::shareFrameMap(std::shared_ptr<const RetargetMap> map, std::uint64_t generation) {
+  cluster_->shareMapNow(std::move(map), generation);
+}
+std::shared_ptr<const RetargetMap> CliCluster::map() const { return cluster_->map(); }
+
+const RetargetMap* CliCluster::shareMap(const RetargetMap* rootMap, double patienceSeconds) {
+  std::shared_ptr<const RetargetMap> copy;
+  if (isRoot() && rootMap) copy = std::make_shared<RetargetMap>(*rootMap);
+  // Every rank learns from the root whether there is a map at all (plain mode has none).
+  ClusterFrameState state;
+  state.mapGeneration = copy ? 1 : 0;
+  cluster_->exchangeFrame(state, patienceSeconds);
+  if (state.mapGeneration == 0) return nullptr;
+  cluster_->shareMapNow(std::move(copy), 1);
+  return cluster_->map().get();
+}
+
+std::optional<RenderResult> CliCluster::render(RenderBackend& backend,
+                                               const DisplayConfig& display,
+                                               const RetargetMap* map,
+                                               const RenderSettings& settings) {
+  RenderSettings mine = settings;
+  mine.walls.clear();
+  for (const std::string& wall : cluster_->walls())
+    if (settings.walls.empty() ||
+        std::find(settings.walls.begin(), settings.walls.end(), wall) != settings.walls.end())
+      mine.walls.push_back(wall);
+  const auto start = std::chrono::steady_clock::now();
+  RenderResult result;  // a rank without walls renders nothing (empty walls would mean all)
+  if (!mine.walls.empty()) result = backend.render(display, map, mine);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  // Other ranks may draw more than this one: wait a few times this rank's own time for them.
+  // The swap lock first: a rank that stopped answering is named to every rank there.
+  const double patience = 4.0 * seconds + 1.0;
+  cluster_->swapLock(patience);
+  RenderResult all = cluster_->gatherImages(result, display, settings.eyes, patience);
+  if (!isRoot()) return std::nullopt;
+  return all;
+}
+
+nlohmann::json CliCluster::report() const {
+  nlohmann::json ranks = nlohmann::json::array();
+  for (int r = 0; r < cluster_->size(); ++r)
+    ranks.push_back({{"rank", r}, {"host", cluster_->host(r)}, {"walls", cluster_->wallsOf(r)}});
+  return {{"ranks", ranks}};
+}
+
+#else
+
+CliCluster::CliCluster(const DisplayConfig&, const ClusterCliOptions&) {
+  throw Error(ErrorCode::InvalidInput,
+              "--cluster: this confvis was built without MPI (install libopenmpi-dev and "
+              "rebuild with CONFVIS_CLUSTER=ON)");
+}
+CliCluster::~CliCluster() = default;
+bool CliCluster::isRoot() const { return true; }
+int CliCluster::rank() const { return 0; }
+const std::vector<std::string>& CliCluster::walls() const {
+  static const std::vector<std::string> none;
+  return none;
+}
+void CliCluster::exchangeFrame(ClusterFrameState&, double) {}
+void CliCluster::shareFrameMap(std::shared_ptr<const RetargetMap>, std::uint64_t) {}
+std::shared_ptr<const RetargetMap> CliCluster::map() const { return nullptr; }
+const RetargetMap* CliCluster::shareMap(const RetargetMap* map, double) { return map; }
+std::optional<RenderResult> CliCluster::render(RenderBackend& backend, const DisplayConfig& d,
+                                               const RetargetMap* map, const RenderSettings& s) {
+  return backend.render(d, map, s);
+}
+nlohmann::json CliCluster::report() const { return nullptr; }
+
+#endif
+
+}  // namespace confvis::cli
