@@ -173,7 +173,8 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
   wall.name = byIndex.string("name");
   if (wall.name.empty()) byIndex.failKey("name", "must not be empty");
   const ObjectReader r(wallJson, sourceName + ": wall '" + wall.name + "'");
-  r.rejectUnknownKeys({"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel"});
+  r.rejectUnknownKeys({"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel",
+                       "window", "stereo_output"});
   wall.lowerLeft = r.vec3("lower_left");
   wall.lowerRight = r.vec3("lower_right");
   wall.upperLeft = r.vec3("upper_left");
@@ -183,6 +184,7 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
     r.failKey("resolution", "must be between 1 and " + std::to_string(kMaxWallPixels) +
                                 " pixels per side, got " + wallJson.at("resolution").dump());
   wall.bezel = readBezel(r, wallJson);
+  wall.output = detail::readWallOutput(wallJson, r.where());
   return wall;
 }
 
@@ -250,7 +252,7 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
     detail::checkFacesReference(config.walls.back(), config.reference, sourceName);
   }
   detail::checkWallSet(config, sourceName);
-  config.hash = fnv1a64Hex(toJson(config).dump());
+  config.hash = fnv1a64Hex(detail::withoutWallOutputs(toJson(config)).dump());
   return config;
 }
 
@@ -281,6 +283,7 @@ json toJson(const DisplayConfig& config) {
                        {"right", w.bezel.right},
                        {"bottom", w.bezel.bottom},
                        {"top", w.bezel.top}}}});
+    detail::writeWallOutput(w.output, walls.back());
   }
   const char* field = config.source == SourceField::Hemisphere ? "hemisphere" : "sphere";
   return {{"name", config.name},

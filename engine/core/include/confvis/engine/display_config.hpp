@@ -18,6 +18,7 @@
 //       "lower_left": [x,y,z], "lower_right": [x,y,z], "upper_left": [x,y,z],   required
 //       "resolution": [width, height],          required, pixels of the lit area
 //       "bezel": {"left": 0, "right": 0, "bottom": 0, "top": 0}   optional, metres
+//       "window": {...}, "stereo_output": "mono"   optional, live display (display_output.hpp)
 //     }]
 //   }
 #include <filesystem>
@@ -26,6 +27,8 @@
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
+
+#include "confvis/engine/display_output.hpp"
 
 namespace confvis {
 
@@ -40,6 +43,7 @@ struct Wall {
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
   int width = 0, height = 0;  // pixels of the lit area
   Bezel bezel;
+  WallOutput output;  // where its pixels go on a live display; not part of the hash
 
   glm::dvec3 upperRight() const;
   glm::dvec3 right() const;   // unit, lower-left -> lower-right
@@ -67,7 +71,8 @@ struct DisplayConfig {
   double edgeLength = 0.20;                  // template refinement threshold, metres
   int cubeResolution = 256;                  // baked cube-map face size, texels
   double eyeSeparation = 0.064;              // metres
-  // Hex FNV-1a 64 of toJson(*this).dump(): identifies a display for caches of baked maps.
+  // Hex FNV-1a 64 of toJson(*this).dump() without the walls' outputs: identifies a display for
+  // caches of baked maps.
   std::string hash;
 
   // Throws Error(InvalidInput) naming the unknown wall and listing the known ones.
