@@ -16,6 +16,9 @@ packages=(
   libpugixml-dev
   # CLI parsing and tests
   libcli11-dev libgtest-dev
+  # live display (confvis view): GLFW windows; its tests run under Xvfb and drive the windows
+  # through Xlib (close, resize)
+  libglfw3-dev libx11-dev xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do
