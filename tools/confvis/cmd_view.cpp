@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 struct ViewArgs {
   std::string config, scene = "checker-sphere", backend = "embree", device, eyes, tracker;
-  std::string mode = "conformal", screenshotDirectory, output;
+  std::string mode = "conformal", stereoRays = "exact", screenshotDirectory, output;
   int frames = 0, bakeResolution = 0;
   double scale = 1.0, radius = 0.10;
   bool noVsync = false, validate = false, quiet = false;
@@ -72,6 +72,7 @@ int runView(const ViewArgs& args) {
 
   LiveViewOptions options;
   options.stereo = stereoRun(args, config);
+  options.stereoRays = args.stereoRays == "fast" ? StereoRays::Fast : StereoRays::Exact;
   options.vsync = !args.noVsync;
   options.frames = args.frames;
   options.scale = args.scale;
@@ -86,6 +87,7 @@ int runView(const ViewArgs& args) {
   report["scene"] = args.scene;
   report["backend"] = backend->name();
   report["eyes"] = options.stereo ? "stereo" : "mono";
+  report["stereo_rays"] = args.stereoRays;
   report["scale"] = args.scale;
   report["vsync"] = options.vsync;
   report["map"] = mapOrigin;
@@ -121,6 +123,10 @@ const RegisterCommand registration{Command{
       sub.add_option("--eyes", args->eyes,
                      "mono or stereo; default: stereo where a wall's stereo_output shows a pair")
           ->check(CLI::IsMember({"mono", "stereo"}));
+      sub.add_option("--stereo-rays", args->stereoRays,
+                     "Conformal stereo eyes: exact curved rays or fast straight rays (Embree)")
+          ->check(CLI::IsMember({"exact", "fast"}))
+          ->capture_default_str();
       sub.add_option("--mode", args->mode, "Start conformal or plain (C toggles)")
           ->check(CLI::IsMember({"conformal", "plain"}))
           ->capture_default_str();

@@ -104,6 +104,7 @@ nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
 
   RenderSettings settings;
   settings.resolutionScale = options.scale;
+  settings.stereoRays = options.stereoRays;
   RenderMode mode = options.mode;
   VirtualCamera navigation = options.camera;
   CameraControls controls;

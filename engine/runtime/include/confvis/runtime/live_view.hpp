@@ -15,6 +15,7 @@ namespace confvis {
 
 struct LiveViewOptions {
   bool stereo = false;   // render left and right eyes (walls show them per stereo_output)
+  StereoRays stereoRays = StereoRays::Exact;  // conformal stereo eyes (RenderSettings')
   bool vsync = true;     // FIFO; false: MAILBOX or IMMEDIATE where offered
   int frames = 0;        // 0: until Esc or a window is closed
   double scale = 1.0;    // rendered pixels per wall pixel
