@@ -170,7 +170,8 @@ TEST(CliView, ResizeRecreatesTheSwapchainAndCloseEndsCleanly) {
 
 // The head walks 30 cm within the first half second: the map follower re-bakes in the
 // background while frames keep coming through the old map, and the new one is swapped in. No
-// frame with the bake in flight may take much longer than the slow frames without one: the bake
+// frame with the bake in flight, nor the frame that swaps the new map in (the renderer prepares
+// its per-map tables there), may take much longer than the slow frames without one: the bake
 // shares the machine's cores with the renderer, so frames slow down, but a frame that waited
 // for the bake would take the bake's whole time (frame 0, which creates the swapchains, is left
 // out of both sides).
@@ -193,7 +194,7 @@ TEST(CliView, ReBakeInTheBackgroundHoldsNoFrameUp) {
   int baking = 0, swappedAt = -1;
   for (std::size_t i = 1; i < frames.size(); ++i) {
     const double ms = frames[i]["ms"].get<double>();
-    if (frames[i]["bake_in_flight"].get<bool>()) {
+    if (frames[i]["bake_in_flight"].get<bool>() || frames[i]["map_swapped"].get<bool>()) {
       ++baking;
       worstBaking = std::max(worstBaking, ms);
     } else {
@@ -205,7 +206,7 @@ TEST(CliView, ReBakeInTheBackgroundHoldsNoFrameUp) {
   std::sort(calm.begin(), calm.end());
   const double calmP99 = calm[static_cast<std::size_t>(std::ceil(0.99 * calm.size())) - 1];
   std::printf("[ measured ] %zu frames without a bake: p50 %.2f ms, p99 %.2f ms; %d frames with "
-              "a bake in flight: worst %.2f ms\n",
+              "a bake in flight or swapping its map in: worst %.2f ms\n",
               calm.size(), calm[calm.size() / 2], calmP99, baking, worstBaking);
   EXPECT_GE(baking, 1) << "frames kept coming while the bake ran";
   EXPECT_LE(worstBaking, 10.0 * calmP99 + 100.0);
