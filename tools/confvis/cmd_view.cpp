@@ -17,6 +17,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/engine/scene_loader.hpp"
+#include "confvis/runtime/background_priority.hpp"
 #include "confvis/runtime/live_view.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/runtime/tracker_factory.hpp"
@@ -58,17 +59,20 @@ int runView(const ViewArgs& args) {
   // The first map as `confvis render` gets it (identity, or the bake cache), unless
   // --bake-resolution asks for every map at another resolution; re-bakes around the moving head
   // skip the cache.
+  // Re-bakes at a low priority, so the frames keep their cores while one runs; the first map is
+  // made here, at the caller's priority.
   const BakeFunction bake = followerBake(args.bakeResolution, 0.0);
   const MapFollowerOptions followerOptions{.radius = args.radius};
   std::string mapOrigin = "baked now at " + std::to_string(args.bakeResolution) + " texels";
-  std::unique_ptr<MapFollower> follower;
+  std::optional<RetargetMap> firstMap;
   if (args.bakeResolution > 0) {
-    follower = std::make_unique<MapFollower>(config, bake, followerOptions);
+    firstMap = bake(config, config.reference);
   } else {
     MapSource first = retargetMapFor(config, "", !args.quiet);
     mapOrigin = first.origin;
-    follower = std::make_unique<MapFollower>(config, std::move(first.map), bake, followerOptions);
+    firstMap = std::move(first.map);
   }
+  MapFollower follower(config, std::move(*firstMap), inBackground(bake), followerOptions);
 
   LiveViewOptions options;
   options.stereo = stereoRun(args, config);
@@ -81,7 +85,7 @@ int runView(const ViewArgs& args) {
   options.screenshotDirectory = args.screenshotDirectory;
   options.validation = args.validate;
   options.showProgress = !args.quiet;
-  nlohmann::json report = runLiveView(config, *backend, *follower, tracker.get(), options);
+  nlohmann::json report = runLiveView(config, *backend, follower, tracker.get(), options);
 
   report["display"] = {{"name", config.name}, {"config", configPath.string()}};
   report["scene"] = args.scene;
