@@ -18,6 +18,9 @@ packages=(
   libcli11-dev libgtest-dev
   # cluster rendering (--cluster, confvis::Cluster): Open MPI and its mpirun
   libopenmpi-dev openmpi-bin
+  # live display (confvis view): GLFW windows; its tests run under Xvfb and drive the windows
+  # through Xlib (close, resize)
+  libglfw3-dev libx11-dev xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do

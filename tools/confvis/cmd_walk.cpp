@@ -25,6 +25,7 @@
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "confvis/runtime/tracker.hpp"
+#include "retarget_map_source.hpp"
 #include "shipped_files.hpp"
 
 namespace confvis::cli {
@@ -60,17 +61,6 @@ std::string frameName(int index) {
   return name;
 }
 
-// Every head position is a new config: the on-disk bake cache would only fill up.
-BakeFunction bakeFunction(const WalkArgs& args) {
-  BakeDisplayOptions options;
-  options.useCache = false;
-  if (args.bakeResolution > 0) options.resolution = args.bakeResolution;
-  if (args.bakeEdgeLength > 0.0) options.edgeLength = args.bakeEdgeLength;
-  return [options](const DisplayConfig& config, const glm::dvec3&) {
-    return bakeDisplay(config, options).map;
-  };
-}
-
 int runWalk(const WalkArgs& args) {
   const auto start = Clock::now();
   const fs::path configPath = args.config.empty()
@@ -100,7 +90,9 @@ int runWalk(const WalkArgs& args) {
   if (!args.quiet && root)
     std::fprintf(stderr, "walk: baking the first map of '%s'...\n", config.name.c_str());
   std::optional<MapFollower> follower;
-  if (root) follower.emplace(config, bakeFunction(args), MapFollowerOptions{.radius = args.radius});
+  if (root)
+    follower.emplace(config, followerBake(args.bakeResolution, args.bakeEdgeLength),
+                     MapFollowerOptions{.radius = args.radius});
   const double setupSeconds = secondsSince(start);
   nlohmann::json rankLog = nlohmann::json::array();  // --cluster: this rank's frame states
 

@@ -24,4 +24,14 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
   return {std::move(baked.map), std::move(origin)};
 }
 
+BakeFunction followerBake(int resolution, double edgeLength) {
+  BakeDisplayOptions options;
+  options.useCache = false;
+  if (resolution > 0) options.resolution = resolution;
+  if (edgeLength > 0.0) options.edgeLength = edgeLength;
+  return [options](const DisplayConfig& config, const glm::dvec3&) {
+    return bakeDisplay(config, options).map;
+  };
+}
+
 }  // namespace confvis::cli

@@ -5,6 +5,7 @@
 
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
+#include "confvis/runtime/map_follower.hpp"
 
 namespace confvis::cli {
 
@@ -18,5 +19,10 @@ struct MapSource {
 // first render of a display pays for the bake).
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
                          bool showProgress);
+
+// The bake a MapFollower re-bakes with as the head moves: bakeDisplay without the on-disk cache
+// (every head position is a new config: the cache would only fill up). resolution, edgeLength:
+// the config's where 0.
+BakeFunction followerBake(int resolution, double edgeLength);
 
 }  // namespace confvis::cli

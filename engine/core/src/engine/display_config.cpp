@@ -173,8 +173,8 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
   wall.name = byIndex.string("name");
   if (wall.name.empty()) byIndex.failKey("name", "must not be empty");
   const ObjectReader r(wallJson, sourceName + ": wall '" + wall.name + "'");
-  r.rejectUnknownKeys(
-      {"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel", "node"});
+  r.rejectUnknownKeys({"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel",
+                       "window", "stereo_output", "node"});
   wall.lowerLeft = r.vec3("lower_left");
   wall.lowerRight = r.vec3("lower_right");
   wall.upperLeft = r.vec3("upper_left");
@@ -191,6 +191,7 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
     else if (node.is_string() && !node.get<std::string>().empty()) wall.node = node;
     else r.failKey("node", "must be a host name or a rank number (>= 0), got " + node.dump());
   }
+  wall.output = detail::readWallOutput(wallJson, r.where());
   return wall;
 }
 
@@ -261,7 +262,7 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
     detail::checkFacesReference(config.walls.back(), config.reference, sourceName);
   }
   detail::checkWallSet(config, sourceName);
-  json hashed = toJson(config);
+  json hashed = detail::withoutWallOutputs(toJson(config));
   hashed.erase("tracking");  // the tracker does not change the map: its edits keep the bake cache
   config.hash = fnv1a64Hex(hashed.dump());
   return config;
@@ -295,6 +296,7 @@ json toJson(const DisplayConfig& config) {
                        {"bottom", w.bezel.bottom},
                        {"top", w.bezel.top}}}});
     if (!w.node.empty()) walls.back()["node"] = w.node;  // absent: hashes of node-less configs stay
+    detail::writeWallOutput(w.output, walls.back());
   }
   const char* field = config.source == SourceField::Hemisphere ? "hemisphere" : "sphere";
   return {{"name", config.name},

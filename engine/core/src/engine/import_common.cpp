@@ -125,12 +125,33 @@ DisplayConfig finishImport(ImportedDisplay display, const std::string& sourceNam
                                {"lower_right", vecJson(w.lowerRight)},
                                {"upper_left", vecJson(w.upperLeft)},
                                {"resolution", json::array({w.width, w.height})}});
+  for (std::size_t i = 0; i < walls.size(); ++i) config["walls"][i].update(walls[i].output);
   DisplayConfig result = parseDisplayConfig(config, sourceName);
   if (report) {
     report->format = display.format;
     report->notes = std::move(display.notes);
   }
   return result;
+}
+
+json importedOutput(const ImportedWindow& window) {
+  json output = json::object();
+  json w = json::object();
+  if (window.fullscreen) w["fullscreen"] = window.monitor.value_or(0);
+  else if (window.position) w["position"] = {window.position->first, window.position->second};
+  if (window.size) w["size"] = {window.size->first, window.size->second};
+  if (window.border) w["decorated"] = *window.border;
+  if (window.position || window.fullscreen || window.size) output["window"] = w;
+  if (window.eye == "left" || window.eye == "right") {
+    output["stereo_output"] = window.eye;
+  } else if (window.stereo == "none") {
+    output["stereo_output"] = "mono";
+  } else if (window.stereo == "side_by_side" || window.stereo == "top_bottom") {
+    output["stereo_output"] = window.stereo == "side_by_side" ? "side-by-side" : "top-bottom";
+  }
+  // Other modes (active quad-buffer, anaglyph, ...) have no confvis equivalent: left unset, so
+  // `confvis view --eyes` decides.
+  return output;
 }
 
 // ---- XML -------------------------------------------------------------------------------------

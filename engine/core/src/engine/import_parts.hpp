@@ -19,7 +19,23 @@ struct ImportedWall {
   std::string element;  // where it came from, for notes: "node 0 window 1 viewport 0"
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};  // file units
   int width = 0, height = 0;
+  // "window" / "stereo_output" for the wall's JSON (display_output.hpp), where the file says.
+  nlohmann::json output = nlohmann::json::object();
 };
+
+// A window as SGCT (JSON and XML) and ParaView describe it, in screen pixels.
+struct ImportedWindow {
+  std::optional<std::pair<int, int>> position, size;
+  bool fullscreen = false;
+  std::optional<int> monitor;
+  std::optional<bool> border;
+  std::string stereo;  // SGCT's stereo mode ("none", "side_by_side", ...); empty: not given
+  std::string eye;     // SGCT viewport eye ("left", "right", "center"); empty: not given
+};
+
+// The wall's output JSON for `window`. Stereo modes confvis has no equivalent for (SGCT's active
+// quad-buffer, anaglyph, ...) are left unset, so `confvis view --eyes` decides.
+nlohmann::json importedOutput(const ImportedWindow& window);
 
 struct ImportedDisplay {
   DisplayFormat format = DisplayFormat::Confvis;

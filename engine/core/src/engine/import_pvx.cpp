@@ -3,6 +3,7 @@
 // ParaView 6.1), <EyeSeparation Value="..."/> (default 0.065) and one <Machine> per display with
 // Geometry="WxH+X+Y" and the corners LowerLeft, LowerRight, UpperRight in room coordinates.
 // ParaView's older wiki documents UpperLeft instead of UpperRight; both are accepted.
+#include <array>
 #include <charconv>
 #include <string>
 
@@ -25,8 +26,8 @@ pugi::xml_node serverProcess(const pugi::xml_node& root) {
   return chosen ? chosen : root;
 }
 
-// "WxH+X+Y" (X and Y may be negative, "-X"): width and height, or nullopt when malformed.
-std::optional<std::pair<int, int>> parseGeometry(std::string_view text) {
+// "WxH+X+Y" (X and Y may be negative, "-X"): {W, H, X, Y}, or nullopt when malformed.
+std::optional<std::array<int, 4>> parseGeometry(std::string_view text) {
   int values[4] = {0, 0, 0, 0};
   const char* p = text.data();
   const char* end = text.data() + text.size();
@@ -43,7 +44,7 @@ std::optional<std::pair<int, int>> parseGeometry(std::string_view text) {
     p = next;
   }
   if (p != end) return std::nullopt;
-  return std::pair{values[0], values[1]};
+  return std::array{values[0], values[1], values[2], values[3]};
 }
 
 void readMachine(const detail::XmlReader& xml, const pugi::xml_node& machine, std::size_t index,
@@ -75,7 +76,13 @@ void readMachine(const detail::XmlReader& xml, const pugi::xml_node& machine, st
     const auto size = parseGeometry(*geometry);
     if (!size)
       xml.fail(machine, "attribute 'Geometry' must be WIDTHxHEIGHT+X+Y, got \"" + *geometry + "\"");
-    std::tie(wall.width, wall.height) = *size;
+    wall.width = (*size)[0];
+    wall.height = (*size)[1];
+    // The X geometry places the machine's window: carry it over for `confvis view`.
+    detail::ImportedWindow window;
+    window.size = std::pair{(*size)[0], (*size)[1]};
+    window.position = std::pair{(*size)[2], (*size)[3]};
+    wall.output = detail::importedOutput(window);
   } else if (options.fallbackResolution) {
     std::tie(wall.width, wall.height) = *options.fallbackResolution;
   } else {

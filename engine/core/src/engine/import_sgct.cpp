@@ -93,6 +93,35 @@ class JsonAt {
   const std::string& source_;
 };
 
+// The window's placement and stereo mode; SGCT JSON: "pos" and "size" {x, y}, "fullscreen",
+// "monitor", "border", "stereo", and the viewport's "eye".
+detail::ImportedWindow jsonWindow(const JsonAt& window, const JsonAt& viewport) {
+  detail::ImportedWindow result;
+  auto pair = [](const JsonAt& xy) {
+    return std::pair{static_cast<int>(std::lround(xy.at("x").number())),
+                     static_cast<int>(std::lround(xy.at("y").number()))};
+  };
+  auto flag = [](const JsonAt& value) {
+    if (!value.value().is_boolean()) value.fail("must be true or false");
+    return value.value().get<bool>();
+  };
+  if (window.has("pos")) result.position = pair(window.at("pos"));
+  if (window.has("size")) result.size = pair(window.at("size"));
+  if (window.has("fullscreen")) result.fullscreen = flag(window.at("fullscreen"));
+  if (window.has("monitor")) result.monitor = window.at("monitor").integer();
+  if (window.has("border")) result.border = flag(window.at("border"));
+  if (window.has("stereo")) result.stereo = window.at("stereo").string();
+  if (viewport.has("eye")) result.eye = viewport.at("eye").string();
+  return result;
+}
+
+// A window's placement carries over when it shows one wall: confvis opens a window per wall, so
+// a window split into several viewports keeps its walls but not its placement.
+void carryWindow(detail::ImportedWall& wall, const detail::ImportedWindow& window,
+                 std::size_t viewportsInWindow) {
+  if (viewportsInWindow == 1) wall.output = detail::importedOutput(window);
+}
+
 void readJsonUsers(const JsonAt& root, detail::ImportedDisplay& display) {
   if (!root.has("users")) return;
   const JsonAt users = root.at("users");
@@ -130,6 +159,7 @@ void readJsonViewport(const JsonAt& viewport, const JsonAt& window, const std::s
   wall.height = viewportPixels(size.at("y").integer(), fy);
   wall.element = viewport.path();
   wall.name = wallName("", windowName, node, windowIndex, index, count);
+  carryWindow(wall, jsonWindow(window, viewport), count);
   display.walls.push_back(std::move(wall));
 }
 
@@ -180,6 +210,35 @@ pugi::xml_node planeOf(const pugi::xml_node& viewport) {
   return viewport.child("Projectionplane");
 }
 
+// SGCT XML: <Window fullScreen= border= monitor=> with <Pos x y/>, <Size x y/>, <Stereo type/>;
+// <Viewport eye=>.
+detail::ImportedWindow xmlWindow(const detail::XmlReader& xml, const pugi::xml_node& window,
+                                 const pugi::xml_node& viewport) {
+  detail::ImportedWindow result;
+  auto pair = [&](const pugi::xml_node& xy) {
+    return std::pair{static_cast<int>(std::lround(xml.number(xy, "x"))),
+                     static_cast<int>(std::lround(xml.number(xy, "y")))};
+  };
+  auto flag = [&](const pugi::xml_node& node, const char* name) -> std::optional<bool> {
+    const std::optional<std::string> text = xml.attribute(node, name);
+    if (!text) return std::nullopt;
+    if (*text != "true" && *text != "false")
+      xml.fail(node, std::string("attribute '") + name + "' must be true or false, got \"" +
+                         *text + "\"");
+    return *text == "true";
+  };
+  if (const pugi::xml_node pos = window.child("Pos")) result.position = pair(pos);
+  if (const pugi::xml_node size = window.child("Size")) result.size = pair(size);
+  result.fullscreen = flag(window, "fullScreen").value_or(false);
+  result.border = flag(window, "border");
+  if (xml.attribute(window, "monitor"))
+    result.monitor = static_cast<int>(std::lround(xml.number(window, "monitor")));
+  if (const pugi::xml_node stereo = window.child("Stereo"))
+    result.stereo = xml.attribute(stereo, "type").value_or("");
+  result.eye = xml.attribute(viewport, "eye").value_or("");
+  return result;
+}
+
 void readXmlViewport(const detail::XmlReader& xml, const pugi::xml_node& viewport,
                      const pugi::xml_node& window, std::size_t node, std::size_t windowIndex,
                      std::size_t index, std::size_t count, detail::ImportedDisplay& display) {
@@ -209,6 +268,7 @@ void readXmlViewport(const detail::XmlReader& xml, const pugi::xml_node& viewpor
   wall.name = wallName(xml.attribute(viewport, "name").value_or(""),
                        xml.attribute(window, "name").value_or(""), node, windowIndex, index,
                        count);
+  carryWindow(wall, xmlWindow(xml, window, viewport), count);
   display.walls.push_back(std::move(wall));
 }
 

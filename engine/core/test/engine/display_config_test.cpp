@@ -124,7 +124,7 @@ TEST(DisplayConfig, FlatWallIsASixteenByNineScreenInFront) {
 }
 
 TEST(DisplayWall, HelpersDescribeTheRectangle) {
-  Wall w{"w", {1, 0, 0}, {1, 0, -4}, {1, 2, 0}, 400, 200, {}, {}};  // like a CAVE's left wall
+  Wall w{"w", {1, 0, 0}, {1, 0, -4}, {1, 2, 0}, 400, 200, {}, {}, {}};  // like a CAVE's left wall
   EXPECT_TRUE(vecNear(w.upperRight(), {1, 2, -4}));
   EXPECT_TRUE(vecNear(w.right(), {0, 0, -1}));
   EXPECT_TRUE(vecNear(w.up(), {0, 1, 0}));
@@ -135,14 +135,14 @@ TEST(DisplayWall, HelpersDescribeTheRectangle) {
 }
 
 TEST(DisplayWall, PixelCentresCountRowsFromTheTop) {
-  Wall w{"w", {0, 0, 0}, {4, 0, 0}, {0, 2, 0}, 4, 2, {}, {}};  // 1 m pixels
+  Wall w{"w", {0, 0, 0}, {4, 0, 0}, {0, 2, 0}, 4, 2, {}, {}, {}};  // 1 m pixels
   EXPECT_TRUE(vecNear(w.pixelCenter(0, 0), {0.5, 1.5, 0}));
   EXPECT_TRUE(vecNear(w.pixelCenter(3, 1), {3.5, 0.5, 0}));
   EXPECT_TRUE(vecNear(w.pixelCenter(1, 1), {1.5, 0.5, 0}));
 }
 
 TEST(DisplayWall, LitRectangleIsTheWallMinusItsBezels) {
-  Wall w{"w", {0, 0, 0}, {4, 0, 0}, {0, 2, 0}, 8, 4, {0.1, 0.2, 0.3, 0.4}, {}};
+  Wall w{"w", {0, 0, 0}, {4, 0, 0}, {0, 2, 0}, 8, 4, {0.1, 0.2, 0.3, 0.4}, {}, {}};
   const Wall lit = w.litRectangle();
   EXPECT_TRUE(vecNear(lit.lowerLeft, {0.1, 0.3, 0}));
   EXPECT_TRUE(vecNear(lit.lowerRight, {3.8, 0.3, 0}));

@@ -20,6 +20,7 @@
 //       "resolution": [width, height],          required, pixels of the lit area
 //       "bezel": {"left": 0, "right": 0, "bottom": 0, "top": 0}   optional, metres
 //       "node": "render-3" | 3                  optional: the cluster host or rank that draws it
+//       "window": {...}, "stereo_output": "mono"   optional, live display (display_output.hpp)
 //     }]
 //   }
 #include <filesystem>
@@ -30,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "confvis/engine/tracking_config.hpp"
+#include "confvis/engine/display_output.hpp"
 
 namespace confvis {
 
@@ -44,6 +46,7 @@ struct Wall {
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
   int width = 0, height = 0;  // pixels of the lit area
   Bezel bezel;
+  WallOutput output;  // where its pixels go on a live display; not part of the hash
   std::string node;  // cluster host name or rank number that draws this wall; empty: any
 
   glm::dvec3 upperRight() const;
@@ -73,8 +76,8 @@ struct DisplayConfig {
   int cubeResolution = 256;                  // baked cube-map face size, texels
   double eyeSeparation = 0.064;              // metres
   TrackingConfig tracking;                   // live head tracker; not part of the hash
-  // Hex FNV-1a 64 of toJson(*this).dump() without "tracking": identifies a display for caches of
-  // baked maps.
+  // Hex FNV-1a 64 of toJson(*this).dump() without "tracking" and the walls' outputs: identifies
+  // a display for caches of baked maps.
   std::string hash;
 
   // Throws Error(InvalidInput) naming the unknown wall and listing the known ones.

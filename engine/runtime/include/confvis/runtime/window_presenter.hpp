@@ -1,0 +1,96 @@
+#pragma once
+// Presents one window's frames with a Vulkan swapchain: the frame's pixels (8-bit sRGB codes,
+// composed on the CPU from the renderer's wall images) go through a host-visible staging buffer
+// into an image and are blitted into the swapchain image, stretched to the window. The
+// swapchain is recreated when the window is resized or the surface reports it out of date;
+// a minimised window presents nothing. One frame in flight per window.
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "confvis/runtime/present_context.hpp"
+
+struct GLFWwindow;
+
+namespace confvis {
+
+// A presented frame read back from the swapchain image: RGBA 8-bit codes, top row first.
+struct Screenshot {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;
+};
+
+class WindowPresenter {
+ public:
+  // vsync: FIFO; otherwise MAILBOX, else IMMEDIATE, where the surface offers them (else FIFO).
+  WindowPresenter(PresentContext& context, GLFWwindow* window, bool vsync);
+  ~WindowPresenter();
+  WindowPresenter(const WindowPresenter&) = delete;
+  WindowPresenter& operator=(const WindowPresenter&) = delete;
+
+  // Waits for this window's previous frame, then returns where to write width x height RGBA
+  // pixels (sRGB codes, top row first) for the next present().
+  std::uint8_t* beginFrame(int width, int height);
+  // Presents what beginFrame's pixels hold. False when nothing was presented (minimised, or the
+  // swapchain was out of date and is recreated for the next frame). capture: the swapchain image
+  // is also read back (latestScreenshot, after the next beginFrame or finish()).
+  bool present(bool capture);
+  // Waits for the last frame; its screenshot is then complete.
+  void finish();
+  const Screenshot& latestScreenshot() const { return screenshot_; }
+
+  int recreations() const { return recreations_; }
+  VkPresentModeKHR presentMode() const { return presentMode_; }
+  VkExtent2D extent() const { return extent_; }
+  VkFormat format() const { return format_; }
+
+ private:
+  struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    void* mapped = nullptr;
+    VkDeviceSize size = 0;
+  };
+
+  void release() noexcept;
+  void createSwapchain();
+  void destroySwapchain(VkSwapchainKHR swapchain) noexcept;
+  bool ensureSwapchainMatchesWindow();
+  void ensureBuffer(Buffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage);
+  void destroyBuffer(Buffer& buffer) noexcept;
+  void ensureContentImage(int width, int height);
+  void destroyContentImage() noexcept;
+  void record(VkCommandBuffer commands, std::uint32_t imageIndex, bool capture);
+  void collectScreenshot();
+
+  PresentContext& context_;
+  GLFWwindow* window_;
+  bool vsync_;
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+  VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
+  VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;
+  VkExtent2D extent_{0, 0};
+  std::vector<VkImage> images_;
+  std::vector<VkSemaphore> renderDone_;  // per swapchain image: a present may still hold one
+  bool canCapture_ = false;
+  int recreations_ = 0;
+
+  VkCommandBuffer commands_ = VK_NULL_HANDLE;
+  VkSemaphore imageAcquired_ = VK_NULL_HANDLE;
+  VkFence frameDone_ = VK_NULL_HANDLE;
+  bool frameInFlight_ = false;
+  bool captureInFlight_ = false;
+
+  Buffer staging_, readback_;
+  VkImage content_ = VK_NULL_HANDLE;
+  VkDeviceMemory contentMemory_ = VK_NULL_HANDLE;
+  VkFormat contentFormat_ = VK_FORMAT_UNDEFINED;
+  int imageWidth_ = 0, imageHeight_ = 0;  // of content_
+  int frameWidth_ = 0, frameHeight_ = 0;  // asked for by beginFrame
+  Screenshot screenshot_;
+  bool screenshotBgra_ = false;
+};
+
+}  // namespace confvis

@@ -1,0 +1,265 @@
+#include "confvis/runtime/live_view.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "confvis/base/error.hpp"
+#include "confvis/backends/render_plan.hpp"
+#include "confvis/base/png_io.hpp"
+#include "confvis/runtime/camera_controls.hpp"
+#include "confvis/runtime/display_window.hpp"
+#include "confvis/runtime/frame_log.hpp"
+#include "confvis/runtime/present_context.hpp"
+#include "confvis/runtime/window_content.hpp"
+#include "confvis/runtime/window_plan.hpp"
+#include "confvis/runtime/window_presenter.hpp"
+
+namespace confvis {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsBetween(Clock::time_point from, Clock::time_point to) {
+  return std::chrono::duration<double>(to - from).count();
+}
+
+// Walls rendered with the same eyes share one renderInto call.
+struct RenderGroup {
+  std::vector<Eye> eyes;
+  std::vector<std::string> walls;
+  RenderResult result;
+};
+
+std::vector<RenderGroup> groupByEyes(const std::vector<WindowPlan>& plans) {
+  std::vector<RenderGroup> groups;
+  for (const WindowPlan& plan : plans) {
+    std::vector<Eye> eyes = plan.eyes;
+    std::sort(eyes.begin(), eyes.end());
+    auto group = std::find_if(groups.begin(), groups.end(),
+                              [&](const RenderGroup& g) { return g.eyes == eyes; });
+    if (group == groups.end()) group = groups.insert(groups.end(), RenderGroup{eyes, {}, {}});
+    group->walls.push_back(plan.wall);
+  }
+  return groups;
+}
+
+// A wall name as a file name inside the screenshot directory: nothing but [A-Za-z0-9._-].
+std::string fileStem(const std::string& wall) {
+  std::string stem = wall;
+  for (char& c : stem)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+  if (stem.empty() || stem[0] == '.') stem = "_" + stem;
+  return stem;
+}
+
+void writeScreenshot(const std::filesystem::path& path, const Screenshot& shot) {
+  ImageRGBA image(shot.width, shot.height);
+  for (std::size_t i = 0; i < shot.rgba.size(); ++i) image.pixels[i] = shot.rgba[i] / 255.0f;
+  writePng(path, image, PngOptions{.srgb = false});  // the codes as they are
+}
+
+const char* presentModeName(VkPresentModeKHR mode) {
+  switch (mode) {
+    case VK_PRESENT_MODE_FIFO_KHR: return "fifo";
+    case VK_PRESENT_MODE_MAILBOX_KHR: return "mailbox";
+    case VK_PRESENT_MODE_IMMEDIATE_KHR: return "immediate";
+    case VK_PRESENT_MODE_FIFO_RELAXED_KHR: return "fifo-relaxed";
+    default: return "other";
+  }
+}
+
+std::string trackerText(const Tracker* tracker) {
+  if (!tracker) return "no tracker";
+  const TrackerStatus s = tracker->status();
+  std::string text = "tracker " + std::to_string(s.packetsReceived) + " poses, " +
+                     std::to_string(s.packetsDropped) + " dropped";
+  if (s.lost) text += ", LOST (last pose kept)";
+  return text;
+}
+
+}  // namespace
+
+nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
+                           MapFollower& follower, Tracker* tracker,
+                           const LiveViewOptions& options) {
+  GlfwSession glfw;
+  PresentContext context(PresentContextOptions{.validation = options.validation});
+  const std::vector<WindowPlan> plans =
+      planWindows(config, options.stereo, options.scale, glfw.monitors());
+  std::vector<std::unique_ptr<DisplayWindow>> windows;
+  std::vector<std::unique_ptr<WindowPresenter>> presenters;
+  for (const WindowPlan& plan : plans) {
+    windows.push_back(std::make_unique<DisplayWindow>(plan, "confvis view: " + plan.wall));
+    presenters.push_back(
+        std::make_unique<WindowPresenter>(context, windows.back()->handle(), options.vsync));
+  }
+  std::vector<RenderGroup> groups = groupByEyes(plans);
+  const bool capture = !options.screenshotDirectory.empty();
+
+  RenderSettings settings;
+  settings.resolutionScale = options.scale;
+  settings.stereoRays = options.stereoRays;
+  RenderMode mode = options.mode;
+  VirtualCamera navigation = options.camera;
+  CameraControls controls;
+  DisplayConfig frameConfig = config;
+  bool haveFrameConfig = false;
+  std::uint64_t frameConfigGeneration = 0;
+  int bakesStartedBefore = follower.stats().bakesStarted;
+  FrameLog log;
+  nlohmann::json bakeErrors = nlohmann::json::array();
+  std::string endReason = "frames";
+  std::vector<std::uint8_t> composed;
+
+  const Clock::time_point start = Clock::now();
+  Clock::time_point frameStart = start, lastTitle = start - std::chrono::seconds(1),
+                    lastProgress = start;
+  double lastFrameSeconds = 0.0;
+  for (int index = 0; options.frames <= 0 || index < options.frames; ++index) {
+    glfw.pollEvents();
+    bool quit = false, closed = false;
+    for (const auto& window : windows) {
+      const WindowInput input = window->takeInput();
+      if (input.toggleMode)
+        mode = mode == RenderMode::Conformal ? RenderMode::Plain : RenderMode::Conformal;
+      quit = quit || input.quit;
+      closed = closed || window->closeRequested();
+    }
+    if (quit || closed) {
+      endReason = closed ? "window closed" : "escape";
+      break;
+    }
+    controls.update(windows, navigation, lastFrameSeconds);
+
+    HeadPose head{config.reference};
+    if (tracker)
+      if (const std::optional<TrackedPose> pose = tracker->latest()) head = pose->head;
+    const FollowerFrame frame = follower.beginFrame(head);
+    const glm::dvec3 reference(frame.map->reference.x, frame.map->reference.y,
+                               frame.map->reference.z);
+    if (!haveFrameConfig || frame.generation != frameConfigGeneration) {
+      frameConfig = withReference(config, reference);  // render_plan wants the map's reference
+      frameConfigGeneration = frame.generation;
+      haveFrameConfig = true;
+    }
+    FrameRecord record;
+    record.mapGeneration = frame.generation;
+    record.mapSwapped = frame.swapped;
+    record.bakeStarted = follower.stats().bakesStarted > bakesStartedBefore;
+    record.bakeInFlight = frame.baking;
+    record.conformal = mode == RenderMode::Conformal;
+    bakesStartedBefore = follower.stats().bakesStarted;
+
+    // The virtual world stays put when the map's reference moves: the camera follows it.
+    settings.mode = mode;
+    settings.head = head;
+    settings.camera = navigation;
+    settings.camera.position =
+        navigation.position + navigation.rotation() * (reference - config.reference);
+    const Clock::time_point renderStart = Clock::now();
+    for (RenderGroup& group : groups) {
+      settings.eyes = group.eyes;
+      settings.walls = group.walls;
+      try {
+        backend.renderInto(frameConfig, frame.map.get(), settings, group.result);
+      } catch (const Error& error) {
+        throw Error(error.code(), "frame " + std::to_string(index) + ": " + error.what());
+      }
+    }
+    const Clock::time_point presentStart = Clock::now();
+    for (std::size_t w = 0; w < windows.size(); ++w) {
+      const WindowPlan& plan = plans[w];
+      auto imageOf = [&](Eye eye) -> const ImageRGBA* {
+        for (const RenderGroup& group : groups)
+          for (const WallImage& image : group.result.images)
+            if (image.wall == plan.wall && image.eye == eye) return &image.image;
+        return nullptr;
+      };
+      std::uint8_t* pixels = presenters[w]->beginFrame(plan.contentWidth, plan.contentHeight);
+      composeWindow(plan, imageOf, pixels);
+      presenters[w]->present(capture);
+    }
+    for (const std::string& message : follower.takeErrors()) {
+      bakeErrors.push_back({{"frame", index}, {"message", message}});
+      std::fprintf(stderr, "view: frame %d: re-bake failed, keeping the old map: %s\n", index,
+                   message.c_str());
+    }
+    const Clock::time_point frameEnd = Clock::now();
+    record.renderSeconds = secondsBetween(renderStart, presentStart);
+    record.presentSeconds = secondsBetween(presentStart, frameEnd);
+    record.frameSeconds = lastFrameSeconds = secondsBetween(frameStart, frameEnd);
+    frameStart = frameEnd;
+    log.add(record);
+
+    if (secondsBetween(lastTitle, frameEnd) >= 0.25) {  // titles are cheap but not free
+      lastTitle = frameEnd;
+      char status[160];
+      std::snprintf(status, sizeof status, " | %.1f ms | %s | map %llu%s | ",
+                    record.frameSeconds * 1e3, modeName(mode),
+                    static_cast<unsigned long long>(frame.generation),
+                    frame.baking ? " (re-baking)" : "");
+      for (const auto& window : windows)
+        window->setTitle("confvis view: " + window->plan().wall + status + trackerText(tracker));
+    }
+    if (options.showProgress && secondsBetween(lastProgress, frameEnd) >= 1.0) {
+      lastProgress = frameEnd;
+      std::fprintf(stderr, "view: frame %d, %.1f ms, map %llu%s, %s\n", index + 1,
+                   record.frameSeconds * 1e3, static_cast<unsigned long long>(frame.generation),
+                   frame.baking ? " (re-baking)" : "", trackerText(tracker).c_str());
+    }
+  }
+
+  nlohmann::json windowReport = nlohmann::json::array();
+  if (capture) std::filesystem::create_directories(options.screenshotDirectory);
+  for (std::size_t w = 0; w < windows.size(); ++w) {
+    presenters[w]->finish();
+    const WindowPlan& plan = plans[w];
+    nlohmann::json entry = {
+        {"wall", plan.wall},
+        {"stereo_output", toString(plan.stereo)},
+        {"content", {plan.contentWidth, plan.contentHeight}},
+        {"swapchain", {presenters[w]->extent().width, presenters[w]->extent().height}},
+        {"present_mode", presentModeName(presenters[w]->presentMode())},
+        {"swapchain_recreations", presenters[w]->recreations()}};
+    const Screenshot& shot = presenters[w]->latestScreenshot();
+    if (capture && !shot.rgba.empty()) {
+      const std::string file = fileStem(plan.wall) + ".png";
+      writeScreenshot(options.screenshotDirectory / file, shot);
+      entry["screenshot"] = file;
+    }
+    windowReport.push_back(entry);
+  }
+
+  const MapFollowerStats stats = follower.stats();
+  const ValidationReport validation = context.validation();
+  nlohmann::json report = log.toJson();
+  report["frame_count"] = log.records().size();
+  report["end"] = endReason;
+  report["seconds"] = secondsBetween(start, Clock::now());
+  report["present_device"] = context.deviceName();
+  report["windows"] = windowReport;
+  report["rebakes"] = {{"started", stats.bakesStarted},
+                       {"swapped", stats.bakesSucceeded},
+                       {"failed", stats.bakesFailed},
+                       {"running_at_end",
+                        stats.bakesStarted - stats.bakesSucceeded - stats.bakesFailed},
+                       {"errors", bakeErrors}};
+  const TrackerStatus trackerStatus = tracker ? tracker->status() : TrackerStatus{};
+  report["tracker"] = {{"packets_received", trackerStatus.packetsReceived},
+                       {"packets_dropped", trackerStatus.packetsDropped},
+                       {"lost", trackerStatus.lost},
+                       {"present", tracker != nullptr}};
+  report["validation"] = {{"enabled", validation.enabled},
+                          {"errors", validation.errors},
+                          {"warnings", validation.warnings},
+                          {"messages", validation.messages}};
+  return report;
+}
+
+}  // namespace confvis

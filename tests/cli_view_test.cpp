@@ -1,0 +1,236 @@
+// End-to-end tests of `confvis view` on an X display (Xvfb when DISPLAY is unset; skipped only
+// where no Xvfb is installed): presented frames read back from the swapchain equal the offline
+// render of the same frame, closing a window ends the program with exit 0, resizing one
+// recreates its swapchain without a validation message, and a re-bake in the background holds
+// no frame up.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_test_support.hpp"
+#include "confvis/base/atomic_file.hpp"
+#include "confvis/base/png_io.hpp"
+#include "view_test_support.hpp"
+
+namespace fs = std::filesystem;
+using confvis::testing::CliRun;
+using confvis::testing::runCli;
+using confvis::testing::scratch;
+using confvis::testing::VirtualDisplay;
+
+namespace {
+
+std::string config(const std::string& name) {
+  return std::string(CONFVIS_SOURCE_DIR) + "/configs/" + name + ".json";
+}
+
+#define REQUIRE_DISPLAY()                                    \
+  if (VirtualDisplay::shared().name().empty()) {             \
+    GTEST_SKIP() << VirtualDisplay::shared().whyUnavailable(); \
+  }
+
+CliRun runView(const std::string& args) {
+  return runCli("view " + args + " -q", VirtualDisplay::shared().environment());
+}
+
+nlohmann::json readReport(const fs::path& directory) {
+  return nlohmann::json::parse(confvis::readTextFile(directory / "view.json"));
+}
+
+// Pixels whose largest channel difference exceeds `tolerance` (8-bit codes), as a fraction.
+// Images of different sizes are all bad.
+double badPixelFraction(const fs::path& a, const fs::path& b, int tolerance) {
+  const confvis::ImageRGBA x = confvis::readPng(a, confvis::PngDecoding::Raw);
+  const confvis::ImageRGBA y = confvis::readPng(b, confvis::PngDecoding::Raw);
+  if (x.width != y.width || x.height != y.height) return 1.0;
+  std::size_t bad = 0;
+  for (int row = 0; row < x.height; ++row)
+    for (int col = 0; col < x.width; ++col) {
+      double worst = 0.0;
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(double(x.at(col, row)[c]) - y.at(col, row)[c]) * 255.0);
+      bad += worst > tolerance + 0.01;
+    }
+  return static_cast<double>(bad) / x.pixelCount();
+}
+
+constexpr int kTolerance = 2;         // 8-bit codes per channel
+constexpr double kBadBudget = 0.005;  // of a wall's pixels
+const std::string kScale = " --scale 0.05";  // 96 x 96 pixels per wall of cave6
+
+// The view's screenshots against `confvis render` of the same frame, and against a render from
+// a camera 20 cm to the side, which must fail the same check. Mono runs present without vsync
+// (lavapipe's X11 surfaces offer MAILBOX and IMMEDIATE), stereo runs with FIFO.
+void expectScreenshotsMatchRender(const std::string& backend, const std::string& eyes) {
+  const std::string name = backend + "-" + eyes;
+  const fs::path shots = scratch("view-shots-" + name), view = scratch("view-" + name);
+  const fs::path same = scratch("view-render-" + name), moved = scratch("view-moved-" + name);
+  const std::string common = config("cave6") + " --backend " + backend + " --eyes " + eyes + kScale;
+  const bool vsync = eyes == "stereo";
+  const CliRun run = runView(common + " --frames 3 --screenshot-dir " + shots.string() + " -o " +
+                             view.string() + (vsync ? "" : " --no-vsync"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  ASSERT_EQ(runCli("render " + common + " -q -o " + same.string()).exitCode, 0);
+  ASSERT_EQ(runCli("render " + common + " --camera 0.2,0,0 -q -o " + moved.string()).exitCode, 0);
+
+  const nlohmann::json report = readReport(view);
+  EXPECT_EQ(report["frame_count"], 3);
+  EXPECT_EQ(report["end"], "frames");
+  ASSERT_EQ(report["windows"].size(), 6u);
+  for (const nlohmann::json& window : report["windows"]) {
+    const std::string wall = window["wall"];
+    SCOPED_TRACE(wall);
+    const int width = eyes == "stereo" ? 192 : 96;
+    EXPECT_EQ(window["swapchain"], nlohmann::json({width, 96}));
+    EXPECT_EQ(window["stereo_output"], eyes == "stereo" ? "side-by-side" : "mono");
+    if (vsync) {
+      EXPECT_EQ(window["present_mode"], "fifo");
+    } else {
+      EXPECT_NE(window["present_mode"], "fifo");
+    }
+    ASSERT_EQ(window["screenshot"], wall + ".png");
+    EXPECT_LE(badPixelFraction(shots / (wall + ".png"), same / (wall + ".png"), kTolerance),
+              kBadBudget);
+    // The walls that see the sphere move with the camera; the check must catch that.
+    if (wall == "front" || wall == "left" || wall == "right" || wall == "back") {
+      EXPECT_GT(badPixelFraction(shots / (wall + ".png"), moved / (wall + ".png"), kTolerance),
+                kBadBudget);
+    }
+  }
+}
+
+}  // namespace
+
+TEST(CliView, EmbreeMonoScreenshotIsTheOfflineRender) {
+  REQUIRE_DISPLAY();
+  expectScreenshotsMatchRender("embree", "mono");
+}
+
+TEST(CliView, EmbreeSideBySideStereoScreenshotIsTheOfflineRender) {
+  REQUIRE_DISPLAY();
+  expectScreenshotsMatchRender("embree", "stereo");
+}
+
+TEST(CliView, VulkanMonoScreenshotIsTheOfflineRender) {
+  REQUIRE_DISPLAY();
+  expectScreenshotsMatchRender("vulkan", "mono");
+}
+
+TEST(CliView, VulkanSideBySideStereoScreenshotIsTheOfflineRender) {
+  REQUIRE_DISPLAY();
+  expectScreenshotsMatchRender("vulkan", "stereo");
+}
+
+// A window manager's resize and close, sent from outside: the swapchain is recreated at the
+// new size, the validation layer reports nothing, and closing ends the program with exit 0.
+TEST(CliView, ResizeRecreatesTheSwapchainAndCloseEndsCleanly) {
+  REQUIRE_DISPLAY();
+  const fs::path out = scratch("view-close"), log = scratch("view-close.log");
+  const pid_t pid = confvis::testing::startBackground(
+      "env " + VirtualDisplay::shared().environment() + " " + CONFVIS_CLI_PATH + " view " +
+          config("cave6") + kScale + " --validate -q -o " + out.string(),
+      log);
+  Display* display = XOpenDisplay(VirtualDisplay::shared().name().c_str());
+  ASSERT_NE(display, nullptr);
+  const auto window = confvis::testing::waitForWindow(display, "confvis view: front", 30.0);
+  ASSERT_TRUE(window) << "no window appeared: " << confvis::readTextFile(log);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // a few frames at the first size
+  XResizeWindow(display, *window, 160, 120);
+  XFlush(display);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // frames at the new size
+  confvis::testing::requestClose(display, *window);
+  const std::optional<int> exitCode = confvis::testing::waitExit(pid, 60.0);
+  XCloseDisplay(display);
+  ASSERT_TRUE(exitCode) << "still running after the close: " << confvis::readTextFile(log);
+  EXPECT_EQ(*exitCode, 0) << confvis::readTextFile(log);
+
+  const nlohmann::json report = readReport(out);
+  EXPECT_EQ(report["end"], "window closed");
+  EXPECT_GT(report["frame_count"].get<int>(), 2);
+  EXPECT_TRUE(report["validation"]["enabled"].get<bool>());
+  EXPECT_EQ(report["validation"]["errors"], 0) << report["validation"].dump(2);
+  EXPECT_EQ(report["validation"]["warnings"], 0) << report["validation"].dump(2);
+  for (const nlohmann::json& entry : report["windows"]) {
+    SCOPED_TRACE(entry["wall"].get<std::string>());
+    if (entry["wall"] == "front") {
+      EXPECT_GE(entry["swapchain_recreations"].get<int>(), 1);
+      EXPECT_EQ(entry["swapchain"], nlohmann::json({160, 120}));
+    } else {
+      EXPECT_EQ(entry["swapchain_recreations"], 0);
+      EXPECT_EQ(entry["swapchain"], nlohmann::json({96, 96}));
+    }
+  }
+}
+
+// The head walks 30 cm within the first half second: the map follower re-bakes in the
+// background while frames keep coming through the old map, and the new one is swapped in. No
+// frame with the bake in flight, nor the frame that swaps the new map in (the renderer prepares
+// its per-map tables there), may take much longer than the slow frames without one: the bake
+// shares the machine's cores with the renderer, so frames slow down, but a frame that waited
+// for the bake would take the bake's whole time (frame 0, which creates the swapchains, is left
+// out of both sides).
+TEST(CliView, ReBakeInTheBackgroundHoldsNoFrameUp) {
+  REQUIRE_DISPLAY();
+  const fs::path out = scratch("view-rebake"), path = scratch("view-rebake.csv");
+  std::ofstream(path) << "seconds,x,y,z,qw,qx,qy,qz\n0,0,0,0,1,0,0,0\n0.5,0.3,0,0,1,0,0,0\n"
+                         "1000,0.3,0,0,1,0,0,0\n";
+  const CliRun run = runView(config("cave5") + " --tracker path:" + path.string() +
+                             " --bake-resolution 64 --scale 0.02 --frames 300 -o " + out.string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const nlohmann::json report = readReport(out);
+  ASSERT_GE(report["rebakes"]["started"].get<int>(), 1) << report["rebakes"].dump();
+  EXPECT_GE(report["rebakes"]["swapped"].get<int>(), 1) << report["rebakes"].dump();
+  EXPECT_EQ(report["rebakes"]["failed"], 0);
+
+  const nlohmann::json& frames = report["frames"];
+  std::vector<double> calm;
+  double worstBaking = 0.0;
+  int baking = 0, swappedAt = -1;
+  for (std::size_t i = 1; i < frames.size(); ++i) {
+    const double ms = frames[i]["ms"].get<double>();
+    if (frames[i]["bake_in_flight"].get<bool>() || frames[i]["map_swapped"].get<bool>()) {
+      ++baking;
+      worstBaking = std::max(worstBaking, ms);
+    } else {
+      calm.push_back(ms);
+    }
+    if (frames[i]["map_swapped"].get<bool>() && swappedAt < 0) swappedAt = static_cast<int>(i);
+  }
+  ASSERT_GE(calm.size(), 100u);
+  std::sort(calm.begin(), calm.end());
+  const double calmP99 = calm[static_cast<std::size_t>(std::ceil(0.99 * calm.size())) - 1];
+  std::printf("[ measured ] %zu frames without a bake: p50 %.2f ms, p99 %.2f ms; %d frames with "
+              "a bake in flight or swapping its map in: worst %.2f ms\n",
+              calm.size(), calm[calm.size() / 2], calmP99, baking, worstBaking);
+  EXPECT_GE(baking, 1) << "frames kept coming while the bake ran";
+  EXPECT_LE(worstBaking, 10.0 * calmP99 + 100.0);
+  // The log says when the map changed: generation 1 from the first swapped frame on.
+  ASSERT_GE(swappedAt, 1);
+  EXPECT_EQ(frames[swappedAt - 1]["map_generation"], 0);
+  EXPECT_EQ(frames[swappedAt]["map_generation"], 1);
+  EXPECT_TRUE(frames[swappedAt - 1]["bake_in_flight"].get<bool>());
+}
+
+TEST(CliView, NoDisplayOrBadPlacementIsOneClearError) {
+  // Without any display: one error naming what is missing, exit 2.
+  const CliRun noDisplay = runCli("view " + config("cave6") + " --frames 1 -q",
+                                  "DISPLAY= WAYLAND_DISPLAY=");
+  EXPECT_EQ(noDisplay.exitCode, 2) << noDisplay.output;
+  EXPECT_NE(noDisplay.output.find("display"), std::string::npos) << noDisplay.output;
+
+  REQUIRE_DISPLAY();
+  nlohmann::json broken = nlohmann::json::parse(confvis::readTextFile(config("cave6")));
+  broken["walls"][2]["window"] = {{"position", {5000, 5000}}, {"size", {100, 100}}};
+  const fs::path file = scratch("view-off-screen.json");
+  std::ofstream(file) << broken.dump();
+  const CliRun run = runView(file.string() + " --frames 1 -o " + scratch("view-off").string());
+  EXPECT_EQ(run.exitCode, 2) << run.output;
+  EXPECT_NE(run.output.find("wall 'right'"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("no monitor"), std::string::npos) << run.output;
+}
