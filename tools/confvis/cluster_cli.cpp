@@ -20,6 +20,9 @@ void addClusterOptions(CLI::App& sub, ClusterCliOptions& options) {
                  "Seconds a rank waits for another before ending the job with an error naming it")
       ->check(kPositiveNumber)
       ->capture_default_str();
+  sub.add_flag("--cluster-ignore-nodes", options.ignoreNodes,
+               "Deal the walls to the ranks in config order, whatever host their \"node\" names "
+               "(a lab's cluster config tried on one machine)");
 }
 
 #ifdef CONFVIS_HAVE_CLUSTER
@@ -31,7 +34,10 @@ CliCluster::CliCluster(const DisplayConfig& display, const ClusterCliOptions& op
     int provided = 0;  // only this thread talks to MPI; bakes run on threads of their own
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   }
-  cluster_ = std::make_unique<Cluster>(MPI_COMM_WORLD, display,
+  DisplayConfig dealt = display;  // same hash on every rank: only the dealing changes
+  if (options.ignoreNodes)
+    for (Wall& wall : dealt.walls) wall.node.clear();
+  cluster_ = std::make_unique<Cluster>(MPI_COMM_WORLD, dealt,
                                        ClusterOptions{.timeoutSeconds = options.timeoutSeconds});
 }
 

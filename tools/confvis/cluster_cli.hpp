@@ -20,6 +20,7 @@ namespace confvis::cli {
 struct ClusterCliOptions {
   bool enabled = false;
   double timeoutSeconds = 5.0;
+  bool ignoreNodes = false;  // deal every wall in config order (trying a lab's config on one host)
 };
 void addClusterOptions(CLI::App& sub, ClusterCliOptions& options);
 

@@ -14,8 +14,9 @@ bool isRankNumber(const std::string& node) {
          std::all_of(node.begin(), node.end(), [](unsigned char c) { return std::isdigit(c); });
 }
 
-std::string hostList(const std::vector<std::string>& rankHosts) {
-  std::vector<std::string> hosts = rankHosts;
+std::string hostList(const std::vector<std::vector<std::string>>& rankHosts) {
+  std::vector<std::string> hosts;
+  for (const auto& names : rankHosts) hosts.push_back(names.empty() ? "?" : names.front());
   std::sort(hosts.begin(), hosts.end());
   hosts.erase(std::unique(hosts.begin(), hosts.end()), hosts.end());
   std::string list;
@@ -25,8 +26,8 @@ std::string hostList(const std::vector<std::string>& rankHosts) {
 
 }  // namespace
 
-std::vector<std::vector<std::string>> assignWalls(const DisplayConfig& display,
-                                                  const std::vector<std::string>& rankHosts) {
+std::vector<std::vector<std::string>> assignWalls(
+    const DisplayConfig& display, const std::vector<std::vector<std::string>>& rankHosts) {
   const int ranks = static_cast<int>(rankHosts.size());
   if (ranks <= 0) throw Error(ErrorCode::InvalidInput, "a cluster needs at least one rank");
   std::vector<std::vector<std::string>> walls(ranks);
@@ -47,7 +48,8 @@ std::vector<std::vector<std::string>> assignWalls(const DisplayConfig& display,
     } else {
       std::vector<int> onHost;
       for (int r = 0; r < ranks; ++r)
-        if (rankHosts[r] == wall.node) onHost.push_back(r);
+        if (std::find(rankHosts[r].begin(), rankHosts[r].end(), wall.node) != rankHosts[r].end())
+          onHost.push_back(r);
       if (onHost.empty())
         throw Error(ErrorCode::InvalidInput, where + ": node '" + wall.node +
                                                  "' runs no rank of this cluster (hosts: " +

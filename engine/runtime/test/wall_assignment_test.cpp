@@ -22,12 +22,12 @@ DisplayConfig fiveWalls() {
 
 TEST(WallAssignment, WallsWithoutNodesAreDealtInConfigOrder) {
   const DisplayConfig display = fiveWalls();
-  EXPECT_EQ(assignWalls(display, {"a", "a", "a", "a", "a"}),
+  EXPECT_EQ(assignWalls(display, {{"a"}, {"a"}, {"a"}, {"a"}, {"a"}}),
             (Walls{{"front"}, {"left"}, {"right"}, {"floor"}, {"back"}}));
-  EXPECT_EQ(assignWalls(display, {"a", "a"}),
+  EXPECT_EQ(assignWalls(display, {{"a"}, {"a"}}),
             (Walls{{"front", "right", "back"}, {"left", "floor"}}));
   // More ranks than walls: the last rank draws nothing (a head node).
-  EXPECT_EQ(assignWalls(display, std::vector<std::string>(6, "a")),
+  EXPECT_EQ(assignWalls(display, std::vector<std::vector<std::string>>(6, {"a"})),
             (Walls{{"front"}, {"left"}, {"right"}, {"floor"}, {"back"}, {}}));
 }
 
@@ -37,15 +37,17 @@ TEST(WallAssignment, NodesNameRanksOrHosts) {
   display.walls[1].node = "render-b";  // left and right on render-b's ranks, in order
   display.walls[2].node = "render-b";
   display.walls[3].node = "render-b";  // a third wall on render-b goes back to its first rank
-  const Walls walls = assignWalls(display, {"head", "render-b", "render-c", "render-b"});
-  EXPECT_EQ(walls, (Walls{{"back"}, {"left", "floor"}, {"front"}, {"right"}}));
+  display.walls[4].node = "10.0.0.3";  // SGCT names nodes by address
+  const Walls walls = assignWalls(
+      display, {{"head"}, {"render-b", "10.0.0.2"}, {"render-c", "10.0.0.3"}, {"render-b"}});
+  EXPECT_EQ(walls, (Walls{{}, {"left", "floor"}, {"front", "back"}, {"right"}}));
 }
 
 TEST(WallAssignment, UnknownRankOrHostNamesTheWall) {
   DisplayConfig display = fiveWalls();
   display.walls[2].node = "7";
   try {
-    assignWalls(display, {"a", "b"});
+    assignWalls(display, {{"a"}, {"b"}});
     FAIL() << "rank 7 of 2 accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("wall 'right'"), std::string::npos) << e.what();
@@ -53,7 +55,7 @@ TEST(WallAssignment, UnknownRankOrHostNamesTheWall) {
   }
   display.walls[2].node = "projector-9";
   try {
-    assignWalls(display, {"b", "a", "b"});
+    assignWalls(display, {{"b"}, {"a"}, {"b"}});
     FAIL() << "unknown host accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("'projector-9'"), std::string::npos) << e.what();

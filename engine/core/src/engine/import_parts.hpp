@@ -45,6 +45,11 @@ struct ImportedDisplay {
   std::vector<std::string> notes;
 };
 
+// The host (SGCT node address, ParaView machine name) that draws display.walls[first..]: their
+// "node" for cluster runs. Loopback names ("localhost", "127.0.0.1", "::1") and empty ones name
+// no host (a one-machine setup: any rank may draw the wall).
+void setImportedNode(ImportedDisplay& display, std::size_t first, const std::string& host);
+
 // Scales, names, drops walls that repeat an earlier wall's corners (a second stereo eye), picks
 // the source field, then validates through parseDisplayConfig so geometric errors read exactly
 // like those of a confvis config ("FILE: wall 'NAME': ...").

@@ -93,6 +93,8 @@ void readMachine(const detail::XmlReader& xml, const pugi::xml_node& machine, st
   if (wall.name.empty()) wall.name = "machine" + std::to_string(index);
   wall.element = xml.where(machine);
   display.walls.push_back(std::move(wall));
+  // pvserver runs one process per <Machine> on the host it names: so does `--cluster`.
+  detail::setImportedNode(display, display.walls.size() - 1, display.walls.back().name);
 }
 
 }  // namespace

@@ -181,6 +181,7 @@ DisplayConfig parseSgctJson(const std::string& text, const std::string& sourceNa
   for (std::size_t n = 0; n < nodes.arraySize(); ++n) {
     const JsonAt node = nodes.at(n);
     if (!node.has("windows")) continue;
+    const std::size_t firstWall = display.walls.size();
     const JsonAt windows = node.at("windows");
     for (std::size_t w = 0; w < windows.arraySize(); ++w) {
       const JsonAt window = windows.at(w);
@@ -192,6 +193,8 @@ DisplayConfig parseSgctJson(const std::string& text, const std::string& sourceNa
         readJsonViewport(viewports.at(v), window, windowName, n, w, v, count, display,
                          sourceName);
     }
+    detail::setImportedNode(display, firstWall,
+                            node.has("address") ? node.at("address").string() : "");
   }
   if (display.walls.empty())
     throw Error(ErrorCode::InvalidInput,
@@ -287,6 +290,7 @@ DisplayConfig parseSgctXml(const std::string& text, const std::string& sourceNam
   }
   std::size_t n = 0;
   for (const pugi::xml_node node : cluster.children("Node")) {
+    const std::size_t firstWall = display.walls.size();
     std::size_t w = 0;
     for (const pugi::xml_node window : node.children("Window")) {
       const auto viewports = window.children("Viewport");
@@ -296,6 +300,7 @@ DisplayConfig parseSgctXml(const std::string& text, const std::string& sourceNam
         readXmlViewport(xml, viewport, window, n, w, v++, count, display);
       ++w;
     }
+    detail::setImportedNode(display, firstWall, xml.attribute(node, "address").value_or(""));
     ++n;
   }
   if (display.walls.empty())

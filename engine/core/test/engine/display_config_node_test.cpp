@@ -1,6 +1,9 @@
 // A wall's optional "node": the cluster host or rank that draws it (runtime/cluster.hpp).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <set>
+
 #include "confvis/base/error.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "display_test_support.hpp"
@@ -44,6 +47,27 @@ TEST(DisplayConfigNode, AnythingElseIsOneErrorNamingTheWall) {
       EXPECT_NE(std::string(e.what()).find("node"), std::string::npos) << e.what();
     }
   }
+}
+
+}  // namespace
+
+namespace {
+
+TEST(DisplayConfigNode, ImportersKeepTheHostThatDrawsEachWall) {
+  const std::filesystem::path imported = std::filesystem::path(CONFVIS_SOURCE_DIR) / "configs/imported";
+  // SGCT: each render node's address (one wall per node in this sample).
+  for (const char* file : {"sgct-cave4.json", "sgct-cave4.xml"}) {
+    const DisplayConfig sgct = loadDisplayConfig(imported / file);
+    std::set<std::string> nodes;
+    for (const Wall& wall : sgct.walls) {
+      EXPECT_EQ(wall.node.rfind("10.0.0.1", 0), 0u) << file << ": " << wall.name << " " << wall.node;
+      nodes.insert(wall.node);
+    }
+    EXPECT_EQ(nodes.size(), sgct.walls.size()) << file;
+  }
+  // ParaView: pvserver runs one process per <Machine> on the host it names.
+  const DisplayConfig pvx = loadDisplayConfig(imported / "paraview-cave3.pvx");
+  for (const Wall& wall : pvx.walls) EXPECT_EQ(wall.node, wall.name);
 }
 
 }  // namespace

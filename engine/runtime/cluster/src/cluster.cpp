@@ -4,6 +4,9 @@
 #include <thread>
 
 #include <nlohmann/json.hpp>
+#include <arpa/inet.h>
+#include <ifaddrs.h>
+#include <netinet/in.h>
 #include <unistd.h>
 
 #include "cluster_maps.hpp"
@@ -23,6 +26,26 @@ std::string hostName() {
   return name;
 }
 
+// This host's IPv4 and IPv6 addresses: configs (SGCT's) name nodes by address as often as by name.
+std::vector<std::string> hostAddresses() {
+  std::vector<std::string> addresses;
+  ifaddrs* list = nullptr;
+  if (getifaddrs(&list) != 0) return addresses;
+  for (const ifaddrs* a = list; a; a = a->ifa_next) {
+    if (!a->ifa_addr) continue;
+    char text[INET6_ADDRSTRLEN] = {};
+    const int family = a->ifa_addr->sa_family;
+    const void* raw = family == AF_INET
+                          ? static_cast<const void*>(&reinterpret_cast<const sockaddr_in*>(a->ifa_addr)->sin_addr)
+                      : family == AF_INET6
+                          ? static_cast<const void*>(&reinterpret_cast<const sockaddr_in6*>(a->ifa_addr)->sin6_addr)
+                          : nullptr;
+    if (raw && inet_ntop(family, raw, text, sizeof text)) addresses.push_back(text);
+  }
+  freeifaddrs(list);
+  return addresses;
+}
+
 // The root's answer to the start-up check: the hosts of all ranks, or why the cluster cannot run.
 json verdict(const std::vector<json>& hellos) {
   const json& root = hellos.front();
@@ -40,7 +63,11 @@ json verdict(const std::vector<json>& hellos) {
                               "'): every rank must run the same confvis on the same config"}};
   }
   json hosts = json::array();
-  for (const json& h : hellos) hosts.push_back(h.at("host"));
+  for (const json& h : hellos) {
+    json names = h.at("addresses");
+    names.insert(names.begin(), h.at("host"));
+    hosts.push_back(names);
+  }
   return {{"hosts", hosts}};
 }
 
@@ -56,7 +83,7 @@ Cluster::Cluster(MPI_Comm comm, const DisplayConfig& display, ClusterOptions opt
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &size);
   hosts_.assign(size, "unknown");
-  const json hello = {{"host", hostName()}, {"hash", display.hash},
+  const json hello = {{"host", hostName()}, {"addresses", hostAddresses()}, {"hash", display.hash},
                       {"version", versionString()}, {"display", display.name}};
   const auto deadline = deadlineIn(options_.timeoutSeconds);
   json answer;
@@ -91,8 +118,9 @@ Cluster::Cluster(MPI_Comm comm, const DisplayConfig& display, ClusterOptions opt
   }
   if (answer.contains("error"))
     throw ClusterError(ErrorCode::InvalidInput, "cluster: " + answer.at("error").get<std::string>());
-  hosts_ = answer.at("hosts").get<std::vector<std::string>>();
-  walls_ = assignWalls(display, hosts_);
+  const auto names = answer.at("hosts").get<std::vector<std::vector<std::string>>>();
+  for (std::size_t r = 0; r < names.size(); ++r) hosts_[r] = names[r].front();
+  walls_ = assignWalls(display, names);
 }
 
 Cluster::~Cluster() {

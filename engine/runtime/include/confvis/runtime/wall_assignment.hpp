@@ -12,9 +12,11 @@ namespace confvis {
 // walls are dealt in order to the ranks on that host. Walls without a node are dealt in config
 // order to the ranks, starting with rank 0 and skipping none, so with more ranks than walls the
 // last ranks draw nothing (a head node that only tracks and bakes is a rank without walls).
-// rankHosts[r] is rank r's host name. Error(InvalidInput) naming the wall when its node names a
-// rank >= rankHosts.size() or a host no rank runs on (the hosts are listed).
-std::vector<std::vector<std::string>> assignWalls(const DisplayConfig& display,
-                                                  const std::vector<std::string>& rankHosts);
+// rankHosts[r] names rank r's host: its host name first, then any other name a config may use
+// for it (its IP addresses: SGCT configs name nodes by address). Error(InvalidInput) naming the
+// wall when its node names a rank >= rankHosts.size() or a host no rank runs on (the hosts are
+// listed).
+std::vector<std::vector<std::string>> assignWalls(
+    const DisplayConfig& display, const std::vector<std::vector<std::string>>& rankHosts);
 
 }  // namespace confvis
