@@ -6,7 +6,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/runtime/tracker.hpp"
-#include "number_text.hpp"
+#include "confvis/engine/number_text.hpp"
 
 namespace confvis {
 

@@ -10,7 +10,7 @@
 #include <pugixml.hpp>
 
 #include "confvis/engine/display_import.hpp"
-#include "number_text.hpp"
+#include "confvis/engine/number_text.hpp"
 
 namespace confvis::detail {
 

@@ -1,4 +1,4 @@
-#include "number_text.hpp"
+#include "confvis/engine/number_text.hpp"
 
 #include <charconv>
 #include <cmath>

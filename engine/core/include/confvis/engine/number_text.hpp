@@ -1,5 +1,5 @@
 #pragma once
-// Strict numbers from text (private to confvis_engine): imported display files and recorded head
+// Strict numbers from text: imported display files and recorded head
 // paths must not turn "0/05" or "1.5m" into a silently truncated value.
 #include <optional>
 #include <string_view>
