@@ -1,4 +1,5 @@
 #include "confvis/engine/display_config.hpp"
+#include "confvis/engine/default_edge_length.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -250,6 +251,7 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
     detail::checkFacesReference(config.walls.back(), config.reference, sourceName);
   }
   detail::checkWallSet(config, sourceName);
+  if (!top.has("edge_length")) config.edgeLength = defaultEdgeLength(config.walls, config.reference);
   config.hash = fnv1a64Hex(toJson(config).dump());
   return config;
 }
