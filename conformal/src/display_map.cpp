@@ -69,7 +69,7 @@ struct FlowResult {
   double seconds = 0;
 };
 
-FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
+FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, Progress& progress) {
   const auto start = Clock::now();
   FlowResult result;
   // Inversive distance (exact for any initial lengths, like Yamabe) converged in 5 Newton
@@ -86,11 +86,14 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
   // triangle near the display's centre, made a round hole) bends the map around it: on
   // flat-wall at 20 cm, mirrored points then differ by 59 px (median) against 0.0000 px
   // (tools/bench/alignment_bench.cpp), for about 1.5 x the flow time (conformal/README.md).
-  options.geometry = conformal::Geometry::Spherical;
+  options.geometry = route == DisplayMapRoute::Spherical ? conformal::Geometry::Spherical
+                                                         : conformal::Geometry::Euclidean;
   // Continuation reaches the hemisphere for cut sources (cave3's) in a stall or two; a display it
   // cannot reach after 3 (a thin band of monitors) takes the Euclidean route instead of minutes.
   options.maxStalledStages = 3;
   try {
+    if (options.geometry == conformal::Geometry::Euclidean)
+      throw Error(ErrorCode::Unreachable, "the Euclidean route was asked for");
     result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
   } catch (const Error& e) {
     if (e.code() != ErrorCode::Unreachable) throw;
@@ -136,9 +139,9 @@ DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOption
   start = Clock::now();
   const bool identical = templates.sourceKind == SourceKind::Closed;
   auto sourceFuture = std::async(std::launch::async, [&] {
-    return identical ? FlowResult{} : runDiskMap(map.source, progress);
+    return identical ? FlowResult{} : runDiskMap(map.source, options.route, progress);
   });
-  const FlowResult targetFlow = runDiskMap(map.target, progress);
+  const FlowResult targetFlow = runDiskMap(map.target, options.route, progress);
   FlowResult sourceFlow = sourceFuture.get();
   if (identical) {
     sourceFlow = targetFlow;

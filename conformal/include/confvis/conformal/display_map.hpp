@@ -49,8 +49,16 @@ struct DisplayMap {
 
 struct DisplayConfig;
 
+// Spherical (default): no removed face, so a symmetric display gets an exactly symmetric map,
+// and far closer to the true Riemann map; Euclidean-route fallback where its flow stalls.
+// Euclidean: the faster preset (cave5 at 20 cm, shared 2-core machine: 50 against 75 ms CPU for
+// the whole re-bake), but its removed face bends the map around the display's centre (0.7 px
+// median mirror asymmetry on cave3, 59 px on flat-wall).
+enum class DisplayMapRoute { Spherical, Euclidean };
+
 struct DisplayMapOptions {
   double edgeLength = 0.0;          // metres; <= 0 takes the config's edge_length
+  DisplayMapRoute route = DisplayMapRoute::Spherical;
   bool showProgress = false;
 };
 
