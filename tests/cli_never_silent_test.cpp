@@ -78,3 +78,21 @@ TEST(CliNeverSilent, ACorrectBakeRecordsItsChecks) {
   EXPECT_GE(checks["coverage"].get<double>(), 0.995);
   EXPECT_FALSE(sidecar["timings"]["display_map"].contains("repair"));
 }
+
+TEST(CliNeverSilent, ABakeThatFailsItsChecksIsRepairedAndSaysSo) {
+  // cave5 at 2 m edges: too coarse (the display shows 99.4 % of the source, ratio p99 5.9); the
+  // hemisphere repair does not apply to a display all around the viewer, halved edges pass.
+  const fs::path out = scratchDir() / "cave5-coarse";
+  const CliRun bake = runCli("bake " + config("cave5.json") + " -o " + out.string() +
+                             " --edge-length 2 --resolution 32 -q");
+  ASSERT_EQ(bake.exitCode, 0) << bake.output;
+  EXPECT_NE(bake.output.find("repaired with edge length 1 m after edge length 2 m"),
+            std::string::npos)
+      << bake.output;
+  std::ifstream in(out / "bake.json");
+  const nlohmann::json sidecar = nlohmann::json::parse(in);
+  const nlohmann::json& stats = sidecar["timings"]["display_map"];
+  EXPECT_EQ(stats["repair"]["applied"], "edge length 1 m");
+  EXPECT_EQ(stats["edge_length"], 1.0);
+  EXPECT_EQ(stats["checks"]["problems"].size(), 0u);
+}

@@ -59,7 +59,10 @@ std::string bandNote(const DisplayConfig& config) {
     }
   const double across = (azMax - azMin) * 180 / std::numbers::pi;
   const double up = (elMax - elMin) * 180 / std::numbers::pi;
-  if (!(across > 3 * up) && !(up > 3 * across)) return "";
+  // Thin: one extent over three times the other, and under 45 degrees (a CAVE seen from inside
+  // spans 270 degrees around by 71 up and down at its corners, and is no band).
+  const bool band = (across > 3 * up && up < 45) || (up > 3 * across && across < 45);
+  if (!band) return "";
   char text[320];
   std::snprintf(text, sizeof text,
                 "cause: the display is a thin band of directions (%.0f degrees across, %.0f up and "

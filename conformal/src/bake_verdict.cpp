@@ -77,4 +77,16 @@ BakeVerdict judgeBake(const DisplayMap& displayMap, const RetargetMap& map) {
   return verdict;
 }
 
+std::string repairNote(const nlohmann::json& sidecar) {
+  const nlohmann::json* stats = nullptr;
+  if (sidecar.contains("timings") && sidecar["timings"].contains("display_map"))
+    stats = &sidecar["timings"]["display_map"];
+  if (!stats || !stats->contains("repair")) return "";
+  const nlohmann::json& repair = (*stats)["repair"];
+  std::string note = "repaired with " + repair.value("applied", std::string("?"));
+  if (repair.contains("failed_attempts") && !repair["failed_attempts"].empty())
+    note += " after " + repair["failed_attempts"].front().get<std::string>();
+  return note;
+}
+
 }  // namespace confvis

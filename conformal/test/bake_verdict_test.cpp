@@ -73,3 +73,16 @@ TEST(BakeVerdict, DefaultEdgeLengthFollowsTheWalls) {
   // A CAVE seen from 0.5 m in front of its front wall: edges scale with that distance.
   EXPECT_NEAR(defaultEdgeLength(cave.walls, {0, 0, -1.0}), 0.2 * 0.5 / 1.5, 1e-9);
 }
+
+TEST(BakeVerdict, RepairNoteReadsTheSidecar) {
+  EXPECT_EQ(repairNote(nlohmann::json::object()), "");
+  nlohmann::json sidecar;
+  sidecar["timings"]["display_map"]["checks"] = {{"problems", nlohmann::json::array()}};
+  EXPECT_EQ(repairNote(sidecar), "");
+  sidecar["timings"]["display_map"]["repair"] = {
+      {"applied", "edge length 0.1 m"},
+      {"failed_attempts", {"edge length 0.2 m: 3 triangles flipped in the disk maps"}}};
+  EXPECT_EQ(repairNote(sidecar),
+            "repaired with edge length 0.1 m after edge length 0.2 m: 3 triangles flipped in the "
+            "disk maps");
+}

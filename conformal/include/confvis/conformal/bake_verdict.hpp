@@ -37,4 +37,8 @@ inline constexpr double kMinCoverage = 0.995;
 // Measures ray at stride max(1, n / 128), as bake.json does.
 BakeVerdict judgeBake(const DisplayMap& displayMap, const RetargetMap& map);
 
+// The repair a bake.json records (timings.display_map.repair), as one line for the user:
+// "repaired with <attempt> after <first attempt's problems>"; empty when none was needed.
+std::string repairNote(const nlohmann::json& sidecar);
+
 }  // namespace confvis
