@@ -41,7 +41,9 @@ GreenBands ceilingGreenBands(const confvis::ImageRGBA& wall) {
       const float* p = wall.at(x, y);
       const bool green = p[1] > 0.8f && p[0] < 0.2f && p[2] < 0.2f;
       if (green && y < wall.height / 4) ++bands.top;
-      if (green && y >= wall.height / 2) ++bands.lower;
+      // The floor is green too, and reaches the walls' bottom edges (the virtual forward
+      // direction sits on the front wall's centre): the band below the middle, not the bottom.
+      if (green && y >= wall.height / 2 && y < 3 * wall.height / 4) ++bands.lower;
     }
   return bands;
 }

@@ -50,7 +50,7 @@ std::vector<Point> layOutOnSphere(const IntrinsicTriangulation& tri,
 // admissible: Σ K̄(s) < 2π), the step in s halved after a stall and doubled after a success,
 // intermediate stages to a loose tolerance.
 RicciFlowReport flowToHemisphere(IntrinsicTriangulation& tri, CirclePackingMetric& metric,
-                                 const RicciFlowOptions& options) {
+                                 const RicciFlowOptions& options, int maxStalledStages) {
   const std::vector<double> initial = vertexCurvature(tri, metric);
   RicciFlowReport total;
   double reached = 0, step = 1;
@@ -71,7 +71,7 @@ RicciFlowReport flowToHemisphere(IntrinsicTriangulation& tri, CirclePackingMetri
       reached = s;
       step *= 2;
     } catch (const Error& e) {
-      if (e.code() != ErrorCode::Unreachable) throw;
+      if (e.code() != ErrorCode::Unreachable || --maxStalledStages < 0) throw;
       tri = savedTri;
       metric = savedMetric;
       step /= 4;
@@ -94,7 +94,8 @@ DiskMap sphericalDiskMap(const std::vector<Vec3d>& points, const IntrinsicTriang
   CirclePackingMetric metric = initialMetric(
       tri, lengthsScaledToArea(tri, points, 2 * std::numbers::pi), options.scheme,
       Geometry::Spherical);
-  result.flow = flowToHemisphere(tri, metric, diskMapFlowOptions(options));
+  result.flow =
+      flowToHemisphere(tri, metric, diskMapFlowOptions(options), options.maxStalledStages);
   result.usedFlips = result.flow.flipsStartedAt >= 0;
   const std::vector<Point> p = layOutOnSphere(tri, metricEdgeLengths(tri, metric));
 

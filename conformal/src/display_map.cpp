@@ -1,5 +1,6 @@
 // The display map pipeline (design note §3 steps 1-5): templates, projection to the sphere
-// around the reference, the two Riemann maps (in parallel) and the Möbius alignment.
+// around the reference, the two Riemann maps (in parallel) and the Möbius alignment at the
+// forward direction (display_alignment.hpp).
 #include "confvis/conformal/display_map.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/display_template.hpp"
 #include "confvis/engine/display_config.hpp"
+#include "display_alignment.hpp"
 
 namespace confvis {
 namespace {
@@ -67,7 +69,7 @@ struct FlowResult {
   double seconds = 0;
 };
 
-FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
+FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, Progress& progress) {
   const auto start = Clock::now();
   FlowResult result;
   // Inversive distance (exact for any initial lengths, like Yamabe) converged in 5 Newton
@@ -76,20 +78,40 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, Progress& progress) {
   options.scheme = conformal::Scheme::InversiveDistance;
   const conformal::IntrinsicTriangulation whole =
       conformal::buildTriangulation(static_cast<int>(mesh.sphere.size()), mesh.triangles);
-  options.removedFace = chooseRemovedFace(mesh, whole);
   // Newton converges in under 10 iterations here; one that needs more is stuck on a mesh only
   // Delaunay flips can flatten (thin bezel strips), so give up early and retry with flips.
   options.maxIterations = 30;
-  // Start near the flat metric: 6 + 5 -> 4 + 5 Newton steps for cave5 at 20 cm (conformal README).
-  options.flatteningGuess = true;
-  result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
+  // The spherical route first: it removes no face, so a symmetric mesh gets an exactly symmetric
+  // map, and it is far closer to the true Riemann map. The Euclidean route's removed face (one
+  // triangle near the display's centre, made a round hole) bends the map around it: on
+  // flat-wall at 20 cm, mirrored points then differ by 59 px (median) against 0.0000 px
+  // (tools/bench/alignment_bench.cpp), for about 1.5 x the flow time (conformal/README.md).
+  options.geometry = route == DisplayMapRoute::Spherical ? conformal::Geometry::Spherical
+                                                         : conformal::Geometry::Euclidean;
+  // Continuation reaches the hemisphere for cut sources (cave3's) in a stall or two; a display it
+  // cannot reach after 3 (a thin band of monitors) takes the Euclidean route instead of minutes.
+  options.maxStalledStages = 3;
+  try {
+    if (options.geometry == conformal::Geometry::Euclidean)
+      throw Error(ErrorCode::Unreachable, "the Euclidean route was asked for");
+    result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
+  } catch (const Error& e) {
+    if (e.code() != ErrorCode::Unreachable) throw;
+    // The spherical energy is not convex; the Euclidean route's always is.
+    options.geometry = conformal::Geometry::Euclidean;
+    options.removedFace = chooseRemovedFace(mesh, whole);
+    // Start near the flat metric: 6 + 5 -> 4 + 5 Newton steps for cave5 at 20 cm (README).
+    options.flatteningGuess = true;
+    result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
+  }
   result.seconds = secondsSince(start);
   progress.advance();
   return result;
 }
 
 nlohmann::json meshStats(const SphereDiskMesh& mesh, const FlowResult& flow) {
-  return {{"vertices", mesh.sphere.size()},
+  return {{"route", conformal::toString(flow.map.geometry)},
+          {"vertices", mesh.sphere.size()},
           {"triangles", mesh.triangles.size()},
           {"boundary_vertices", mesh.boundary.size()},
           {"flow_iterations", flow.map.flow.iterations},
@@ -117,9 +139,9 @@ DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOption
   start = Clock::now();
   const bool identical = templates.sourceKind == SourceKind::Closed;
   auto sourceFuture = std::async(std::launch::async, [&] {
-    return identical ? FlowResult{} : runDiskMap(map.source, progress);
+    return identical ? FlowResult{} : runDiskMap(map.source, options.route, progress);
   });
-  const FlowResult targetFlow = runDiskMap(map.target, progress);
+  const FlowResult targetFlow = runDiskMap(map.target, options.route, progress);
   FlowResult sourceFlow = sourceFuture.get();
   if (identical) {
     sourceFlow = targetFlow;
@@ -130,10 +152,11 @@ DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOption
   start = Clock::now();
   map.source.disk = sourceFlow.map.uv;
   map.target.disk = targetFlow.map.uv;
-  const auto& s = map.sourceMarkers;
-  const auto& t = map.targetMarkers;
-  conformal::alignDiskMap(map.source.disk, s[0], s[1], s[2]);
-  conformal::alignDiskMap(map.target.disk, t[0], t[1], t[2]);
+  // The forward direction: the hemisphere's axis, else -z (design note §2).
+  const glm::dvec3 axis = config.source == SourceField::Hemisphere
+                              ? glm::normalize(config.hemisphereAxis)
+                              : glm::dvec3(0, 0, -1);
+  const nlohmann::json anchor = detail::alignAtForward(map, {axis.x, axis.y, axis.z}, config.name);
   const double alignmentSeconds = secondsSince(start);
   progress.advance();
   progress.finish();
@@ -141,6 +164,7 @@ DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOption
   map.stats = {{"template", templateSeconds},
                {"flow", flowSeconds},
                {"alignment", alignmentSeconds},
+               {"anchor", anchor},
                {"source_kind", toString(templates.sourceKind)},
                {"edge_length", options.edgeLength > 0 ? options.edgeLength : config.edgeLength},
                {"source", meshStats(map.source, sourceFlow)},

@@ -175,11 +175,13 @@ DisplayTemplates hemisphereTemplates(const DisplayConfig& config, const CoarseDi
   auto hasAzimuth = [&](int v) {
     return std::abs(glm::dot(glm::normalize(out.target.points[v] - c), axis)) < 1 - 1e-6;
   };
+  bool candidatesAreCorners = display.closed();  // a closed display's star leaves
   if (!display.closed()) {
     const std::vector<int>& loop = display.topology.boundaryLoops.front();
     candidates = boundaryCorners(c, display.mesh, loop, false);  // coarse ids survive refinement
     std::erase_if(candidates, [&](int v) { return !hasAzimuth(v); });
-    if (candidates.size() < 3) {
+    candidatesAreCorners = candidates.size() >= 3;
+    if (!candidatesAreCorners) {
       candidates = loop;
       std::erase_if(candidates, [&](int v) { return !hasAzimuth(v); });
     }
@@ -190,14 +192,23 @@ DisplayTemplates hemisphereTemplates(const DisplayConfig& config, const CoarseDi
                     ": hemisphere source: the display boundary has fewer than three corners off "
                     "the hemisphere axis to anchor the map");
   out.targetMarkers = spreadMarkers(c, out.target, candidates);
+  // Rim points at the azimuths of every display corner (of the markers alone where the corners
+  // were too few), so that a display symmetric about the axis gets a symmetric source mesh.
+  std::vector<int> rimCorners = candidatesAreCorners ? candidates : std::vector<int>{};
+  for (int v : out.targetMarkers)
+    if (std::find(rimCorners.begin(), rimCorners.end(), v) == rimCorners.end())
+      rimCorners.push_back(v);
   std::vector<glm::dvec3> directions;
-  for (int v : out.targetMarkers) directions.push_back(glm::normalize(out.target.points[v] - c));
+  for (int v : rimCorners) directions.push_back(glm::normalize(out.target.points[v] - c));
   // A half cube of the display's apparent size: area per steradian like the walls'.
   const double radius =
       std::sqrt(wallArea(config) * 2 * std::numbers::pi / (12 * solidAngle(display.mesh, c)));
   const HalfCube cube = hemisphereHalfCube(config, radius, directions);
   TemplateBuild source = assembleCells(cube.cells, c, cube.rimPoints);
-  for (int k = 0; k < 3; ++k) out.sourceMarkers[k] = findVertex(source, cube.rimPoints[k]);
+  for (int k = 0; k < 3; ++k) {
+    const auto at = std::find(rimCorners.begin(), rimCorners.end(), out.targetMarkers[k]);
+    out.sourceMarkers[k] = findVertex(source, cube.rimPoints[at - rimCorners.begin()]);
+  }
   refineTemplate(source, c, h);
   out.source = toTemplateMesh(source, false, "hemisphere source");
   const auto& m = out.sourceMarkers;

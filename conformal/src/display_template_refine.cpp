@@ -4,6 +4,7 @@
 // triangle keeps its longest edge above maxEdge / 2 (no over-refinement). Triangles keep their
 // neighbours across each edge, so a split is a constant-time update.
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <queue>
 
@@ -46,7 +47,21 @@ class Refiner {
       const Candidate top = queue_.top();
       queue_.pop();
       const int k = cornerOf(top.triangle, top.a, top.b);
-      if (k >= 0) split(top.triangle, k);  // else already split
+      if (k < 0) continue;  // already split
+      // An isosceles triangle whose two equal sides are its longest (a fan triangle between
+      // mirror-image corners) is split at its base first, into two mirror-image halves: bisecting
+      // one equal side before the other would break the mirror symmetry of the display in its
+      // mesh, and so in its map. The popped side is queued again.
+      const int n = neighbour_[top.triangle][k];
+      const int baseT = isoscelesBase(top.triangle, k);
+      const int baseN = n >= 0 && baseT < 0 ? isoscelesBase(n, cornerOf(n, top.a, top.b)) : -1;
+      if (baseT >= 0 || baseN >= 0) {
+        if (baseT >= 0) split(top.triangle, baseT);
+        else split(n, baseN);
+        queue_.push(top);  // stale if the side moved to a child: split() queued it there
+        continue;
+      }
+      split(top.triangle, k);
     }
     mesh_.cut.clear();
     for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
@@ -68,6 +83,23 @@ class Refiner {
       const int p = v[k], q = v[(k + 1) % 3];
       if ((p == a && q == b) || (p == b && q == a)) return k;
     }
+    return -1;
+  }
+
+  double edgeLength(int t, int k) const {
+    const auto& v = mesh_.triangles[t];
+    return glm::length(mesh_.points[v[k]] - mesh_.points[v[(k + 1) % 3]]);
+  }
+
+  // The corner starting t's base where the edge at corner k ties with exactly one other edge of
+  // t (to 1e-12) and both are longer than the third, the base; else -1.
+  int isoscelesBase(int t, int k) const {
+    if (k < 0) return -1;
+    const double l = edgeLength(t, k), l1 = edgeLength(t, (k + 1) % 3),
+                 l2 = edgeLength(t, (k + 2) % 3);
+    const double tie = 1e-12 * l;
+    if (std::abs(l1 - l) <= tie && l2 < l - tie) return (k + 2) % 3;
+    if (std::abs(l2 - l) <= tie && l1 < l - tie) return (k + 1) % 3;
     return -1;
   }
 

@@ -155,8 +155,18 @@ std::vector<FanCell> wallCells(const DisplayConfig& config, double maxEdge) {
       FanCell cell;
       cell.lit = lit;
       cell.wall = index;
-      cell.fanFromFirstCorner = true;
-      cell.polygon.assign(corners.begin(), corners.end());
+      // The diagonal runs through the corner nearest the reference point, so a mirror through
+      // the reference point maps the split to the split (a display's symmetry survives into its
+      // mesh and map). Where two neighbouring corners are equally near (a quad the mirror plane
+      // halves) either diagonal would break the symmetry: fan from the centre instead.
+      std::array<double, 4> distance;
+      for (int k = 0; k < 4; ++k) distance[k] = glm::length(corners[k] - config.reference);
+      const int nearest = static_cast<int>(
+          std::min_element(distance.begin(), distance.end()) - distance.begin());
+      const double tie = 1e-9 * distance[nearest];
+      cell.fanFromFirstCorner = distance[(nearest + 1) % 4] - distance[nearest] > tie &&
+                                distance[(nearest + 3) % 4] - distance[nearest] > tie;
+      for (int k = 0; k < 4; ++k) cell.polygon.push_back(corners[(nearest + k) % 4]);
       for (const glm::dvec3& p : corners) cell.centre += p / 4.0;
       cells.push_back(std::move(cell));
     };

@@ -29,4 +29,12 @@ Mobius Mobius::alignMarkers(Complex p, Complex q, Complex r) {
   return crossRatio(1.0, i, -1.0).inverse() * crossRatio(p, q, r);
 }
 
+Mobius Mobius::diskAutomorphism(Complex a, double t) {
+  if (!(std::abs(a) < 1))
+    throw Error(ErrorCode::InvalidInput, "disk automorphism: the point sent to 0 must lie inside "
+                                         "the unit disk");
+  const Complex rotation = std::polar(1.0, t);
+  return {rotation, -rotation * a, -std::conj(a), 1.0};
+}
+
 }  // namespace confvis::conformal

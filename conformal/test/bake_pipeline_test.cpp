@@ -87,7 +87,9 @@ TEST(BakePipeline, FrontHemisphereDisplayWithHemisphereSourceGivesTheIdentity) {
     const double geom = worstIdentityError(map.geom, geomValid);
     std::printf("front hemisphere at %.2f m: max identity error ray %.4f, geom %.4f texels\n",
                 edge, ray, geom);
-    EXPECT_LT(ray, 0.7 * previous);
+    // The spherical route maps both meshes onto the same hemisphere: exact to float rounding
+    // (1e-6 texels) at every edge length, else shrinking under refinement.
+    EXPECT_LT(ray, std::max(0.7 * previous, 1e-4));
     previous = ray;
     EXPECT_NEAR(static_cast<double>(rayValid) / (6 * n * n), 0.5, 0.01);
     EXPECT_NEAR(static_cast<double>(geomValid) / (6 * n * n), 0.5, 0.01);

@@ -1,6 +1,7 @@
 // computeDisplayMap against closed forms: the 6-sided CAVE maps to itself, a hemisphere maps by
 // stereographic projection, a display covering exactly the front hemisphere gives the identity,
-// and the symmetric 5-sided CAVE sends its floor centre to the middle of both disks.
+// and the mirror-symmetric 5-sided CAVE gets mirror-symmetric disks centred on the forward
+// direction.
 #include "confvis/conformal/display_map.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/distortion.hpp"
+#include "../src/display_alignment.hpp"
 #include "display_test_configs.hpp"
 
 using namespace confvis;
@@ -31,14 +33,24 @@ conformal::TriMesh sphereMesh(const SphereDiskMesh& m) {
   return mesh;
 }
 
-// A valid aligned disk map: markers at 1, i, -1, boundary on the unit circle in counter-clockwise
-// order, no triangle flipped, close to conformal.
-void expectAlignedDiskMap(const SphereDiskMesh& m, const std::array<int, 3>& markers,
-                          const std::string& what) {
+// The disk point of a sphere direction (the mesh's piecewise-linear map).
+Complex diskAt(const SphereDiskMesh& m, const Vec3d& direction) {
+  const detail::SphereLocation at = detail::locateDirection(m, normalized(direction));
+  EXPECT_GE(at.triangle, 0) << "direction not in the mesh";
+  return at.triangle >= 0 ? detail::diskPoint(m, at) : Complex(2, 2);
+}
+
+// A valid aligned disk map: the anchor (forward) direction at 0 with up along +i, boundary on the
+// unit circle in counter-clockwise order, no triangle flipped, close to conformal.
+void expectAlignedDiskMap(const SphereDiskMesh& m, const std::string& what,
+                          const Vec3d& anchor = {0, 0, -1}) {
   ASSERT_EQ(m.disk.size(), m.sphere.size()) << what;
-  EXPECT_LT(std::abs(m.disk[markers[0]] - Complex(1, 0)), 1e-9) << what;
-  EXPECT_LT(std::abs(m.disk[markers[1]] - Complex(0, 1)), 1e-9) << what;
-  EXPECT_LT(std::abs(m.disk[markers[2]] - Complex(-1, 0)), 1e-9) << what;
+  EXPECT_LT(std::abs(diskAt(m, anchor)), 1e-12) << what;
+  // Up: a step of a degree above the anchor lands on the positive imaginary axis, to the PL
+  // map's own turn between neighbouring triangles.
+  const Vec3d up = detail::upAt(normalized(anchor));
+  const Complex above = diskAt(m, std::cos(0.02) * normalized(anchor) + std::sin(0.02) * up);
+  EXPECT_NEAR(std::arg(above), M_PI / 2, 0.05) << what;
   double winding = 0;
   for (std::size_t i = 0; i < m.boundary.size(); ++i) {
     const Complex z = m.disk[m.boundary[i]];
@@ -61,14 +73,14 @@ int vertexToward(const SphereDiskMesh& m, const Vec3d& direction) {
   return best;
 }
 
-// Stereographic projection of the hemisphere about `axis` (from -axis), aligned at the markers.
+// Stereographic projection of the hemisphere about `axis` (from -axis): the axis goes to 0 and
+// `up` = right x axis along +i, as the alignment puts them.
 std::vector<Complex> alignedStereographic(const SphereDiskMesh& m, const Vec3d& axis,
-                                          const Vec3d& right, const std::array<int, 3>& markers) {
+                                          const Vec3d& right) {
   const Vec3d up = cross(right, axis);  // seen from the reference: right, up, axis forward
   std::vector<Complex> z;
   for (const Vec3d& p : m.sphere)
     z.emplace_back(dot(p, right) / (1 + dot(p, axis)), dot(p, up) / (1 + dot(p, axis)));
-  conformal::alignDiskMap(z, markers[0], markers[1], markers[2]);
   return z;
 }
 
@@ -110,7 +122,7 @@ TEST(DisplayMap, SixSidedCaveIsTheIdentity) {
   DisplayMapOptions options;
   options.edgeLength = 0.5;
   const DisplayMap map = computeDisplayMap(shipped("cave6"), options);
-  expectAlignedDiskMap(map.target, map.targetMarkers, "target");
+  expectAlignedDiskMap(map.target, "target");
   EXPECT_EQ(map.source.sphere, map.target.sphere);
   EXPECT_EQ(map.source.triangles, map.target.triangles);
   EXPECT_EQ(map.source.disk, map.target.disk);
@@ -118,27 +130,28 @@ TEST(DisplayMap, SixSidedCaveIsTheIdentity) {
   EXPECT_LT(maxIdentityError(map), 1e-9);
 }
 
-TEST(DisplayMap, FiveSidedCaveMapsCornersAndTheFloorCentreSymmetrically) {
+TEST(DisplayMap, FiveSidedCaveDisksAreCentredOnForwardAndMirrorSymmetric) {
   DisplayMapOptions options;
   options.edgeLength = 0.3;
   const DisplayMap map = computeDisplayMap(shipped("cave5"), options);
-  expectAlignedDiskMap(map.source, map.sourceMarkers, "source");
-  expectAlignedDiskMap(map.target, map.targetMarkers, "target");
-  // The display is symmetric under quarter turns about the vertical axis, which permute the
-  // ceiling corners: with three of them at 1, i, -1 the fourth goes to -i and the floor centre,
-  // fixed by the turns, to 0, in both disks.
+  expectAlignedDiskMap(map.source, "source");
+  expectAlignedDiskMap(map.target, "target");
+  // The display is symmetric under the left/right mirror x -> -x, which keeps forward and up:
+  // in both disks it becomes z -> -conj(z). The floor centre lies on the imaginary axis (below
+  // the centre), mirror-image ceiling corners at mirror-image points.
   for (const SphereDiskMesh* m : {&map.source, &map.target}) {
-    // Up to discretisation: the mesh of each face is symmetric, the face removed for the flow
-    // is not.
-    EXPECT_LT(std::abs(m->disk[vertexToward(*m, {0, -1, 0})]), 5e-3);
-    int atMinusI = 0;
-    for (double x : {-1.0, 1.0})
-      for (double z : {-1.0, 1.0})
-        atMinusI += std::abs(m->disk[vertexToward(*m, {x, 1, z})] - Complex(0, -1)) < 5e-3;
-    EXPECT_EQ(atMinusI, 1);
+    const Complex floor = m->disk[vertexToward(*m, {0, -1, 0})];
+    EXPECT_LT(std::abs(floor.real()), 1e-6);
+    EXPECT_LT(floor.imag(), -0.1);
+    for (double z : {-1.0, 1.0}) {
+      const Complex left = m->disk[vertexToward(*m, {-1, 1, z})];
+      const Complex right = m->disk[vertexToward(*m, {1, 1, z})];
+      EXPECT_LT(std::abs(left + std::conj(right)), 1e-6) << "ceiling corners at z = " << z;
+    }
   }
   for (const char* stage : {"template", "flow", "alignment"})
     EXPECT_GE(map.stats.at(stage).get<double>(), 0);
+  EXPECT_EQ(map.stats["anchor"]["rule"], "straight ahead");
   EXPECT_EQ(map.stats["source"]["vertices"].get<std::size_t>(), map.source.sphere.size());
   EXPECT_EQ(map.stats["target"]["triangles"].get<std::size_t>(), map.target.triangles.size());
 }
@@ -150,11 +163,11 @@ TEST(DisplayMap, HemisphereSourceIsTheStereographicProjectionUpToMobius) {
     DisplayMapOptions options;
     options.edgeLength = h;
     const DisplayMap map = computeDisplayMap(config, options);
-    expectAlignedDiskMap(map.source, map.sourceMarkers, "source");
-    expectAlignedDiskMap(map.target, map.targetMarkers, "target");
+    expectAlignedDiskMap(map.source, "source");
+    expectAlignedDiskMap(map.target, "target");
     const double error =
         maxDistance(map.source.disk,
-                    alignedStereographic(map.source, {0, 0, -1}, {1, 0, 0}, map.sourceMarkers));
+                    alignedStereographic(map.source, {0, 0, -1}, {1, 0, 0}));
     EXPECT_LT(error, previous * 0.7) << "h = " << h;
     previous = error;
   }
@@ -168,12 +181,12 @@ TEST(DisplayMap, DisplayCoveringExactlyTheFrontHemisphereIsTheIdentity) {
   DisplayMapOptions options;
   options.edgeLength = 0.2;
   const DisplayMap map = computeDisplayMap(config, options);
-  expectAlignedDiskMap(map.target, map.targetMarkers, "target");
+  expectAlignedDiskMap(map.target, "target");
   EXPECT_LT(maxDistance(map.target.disk,
-                        alignedStereographic(map.target, {0, 0, -1}, {1, 0, 0}, map.targetMarkers)),
+                        alignedStereographic(map.target, {0, 0, -1}, {1, 0, 0})),
             0.02);
   EXPECT_LT(maxDistance(map.source.disk,
-                        alignedStereographic(map.source, {0, 0, -1}, {1, 0, 0}, map.sourceMarkers)),
+                        alignedStereographic(map.source, {0, 0, -1}, {1, 0, 0})),
             0.02);
   EXPECT_LT(maxIdentityError(map), 0.025);  // measured 0.015 rad at 0.2 m
   EXPECT_NE(map.source.sphere.size(), map.target.sphere.size())
@@ -188,8 +201,8 @@ TEST(DisplayMap, MovedReferenceOtherCavesAndTheMonitorWallGiveValidMaps) {
     DisplayMapOptions options;
     options.edgeLength = config.name == "md230x6" ? 0.1 : 0.4;
     const DisplayMap map = computeDisplayMap(config, options);
-    expectAlignedDiskMap(map.source, map.sourceMarkers, config.name + " source");
-    expectAlignedDiskMap(map.target, map.targetMarkers, config.name + " target");
+    expectAlignedDiskMap(map.source, config.name + " source");
+    expectAlignedDiskMap(map.target, config.name + " target");
     // Sphere sources share the markers' directions (cut leaves); hemisphere markers share only
     // their azimuths about the axis.
     for (int k = 0; k < 3 && config.source == SourceField::FullSphere; ++k) {
@@ -211,7 +224,7 @@ TEST(DisplayMap, SixSidedCaveWithBezelsIsTheIdentityWithUnlitFrames) {
   DisplayMapOptions options;
   options.edgeLength = 0.6;
   const DisplayMap map = computeDisplayMap(config, options);
-  expectAlignedDiskMap(map.target, map.targetMarkers, "target");
+  expectAlignedDiskMap(map.target, "target");
   EXPECT_EQ(map.source.disk, map.target.disk);
   EXPECT_LT(maxIdentityError(map), 1e-9);
   // The ceiling's cross: its centre (a grid vertex on the ceiling) opens into four boundary

@@ -10,6 +10,7 @@
 //
 //   build/confvis_bench_bake [--config configs/cave5.json] [--edges 0.2,0.1,0.05]
 //                            [--resolutions 256,512,1024] [--repeat 5] [--threads 0]
+//                            [--route spherical|euclidean]
 #include <CLI/CLI.hpp>
 #include <sys/resource.h>
 
@@ -79,6 +80,9 @@ int main(int argc, char** argv) {
   app.add_option("--resolutions", resolutions, "Cube-map face sizes")->capture_default_str();
   app.add_option("--repeat", repeat, "Runs per row (median wall times; CPU min/mean)")->capture_default_str();
   app.add_option("--threads", threads, "Bake threads (0: one per core)")->capture_default_str();
+  std::string route = "spherical";
+  app.add_option("--route", route, "Disk-map route of the display map: spherical | euclidean")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   const DisplayConfig base = loadDisplayConfig(configPath);
@@ -105,7 +109,10 @@ int main(int argc, char** argv) {
         for (int r = 0; r < repeat; ++r) {
           const auto start = Clock::now();
           const double cpuStart = processCpuSeconds();
-          last = computeDisplayMap(config);
+          DisplayMapOptions mapOptions;
+          mapOptions.route =
+              route == "euclidean" ? DisplayMapRoute::Euclidean : DisplayMapRoute::Spherical;
+          last = computeDisplayMap(config, mapOptions);
           const double bakeCpuStart = processCpuSeconds();
           BakeOptions bake;
           bake.reference = {config.reference.x, config.reference.y, config.reference.z};

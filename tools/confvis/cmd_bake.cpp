@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/bake_display.hpp"
+#include "confvis/conformal/bake_verdict.hpp"
 #include "confvis/conformal/bake_files.hpp"
 
 namespace confvis::cli {
@@ -72,6 +73,8 @@ int runBake(const BakeArgs& args) {
 
   const BakedDisplay baked = bakeDisplay(config, options);
   if (!baked.cacheNote.empty()) std::fprintf(stderr, "confvis bake: note: %s\n", baked.cacheNote.c_str());
+  if (const std::string repair = repairNote(baked.sidecar); !repair.empty())
+    std::fprintf(stderr, "confvis bake: note: %s\n", repair.c_str());
   const fs::path output = args.output.empty() ? fs::path(baked.config.name + "-bake") : fs::path(args.output);
   std::error_code ec;
   if (!baked.cacheEntry.empty() && fs::exists(baked.cacheEntry / "bake.json", ec))

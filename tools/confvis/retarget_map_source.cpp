@@ -4,6 +4,7 @@
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/display_template.hpp"
 #include "confvis/conformal/bake_display.hpp"
+#include "confvis/conformal/bake_verdict.hpp"
 
 namespace confvis::cli {
 
@@ -21,6 +22,8 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
   BakedDisplay baked = bakeDisplay(config, options);
   std::string origin = baked.fromCache ? "baked earlier" : "baked now";
   if (!baked.cacheEntry.empty()) origin += " (cache " + baked.cacheEntry.string() + ")";
+  if (const std::string repair = repairNote(baked.sidecar); !repair.empty())
+    origin += ", " + repair;
   return {std::move(baked.map), std::move(origin)};
 }
 

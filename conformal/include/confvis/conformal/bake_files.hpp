@@ -25,7 +25,8 @@ namespace confvis {
 struct DisplayConfig;
 
 inline constexpr const char* kBakeFormat = "confvis-bake";
-inline constexpr int kBakeFormatVersion = 3;  // 2: round trips split at the cut; 3: measured across it
+inline constexpr int kBakeFormatVersion = 4;  // 2: round trips split at the cut; 3: measured
+// across it; 4: aligned at the forward direction, checked (older cache entries are stale)
 
 // The sidecar for a fresh bake of `config` (the effective config, overrides applied). Measures
 // the baked map's quality (baked_map_quality.hpp) on every `qualityStride`-th texel; 0 picks a

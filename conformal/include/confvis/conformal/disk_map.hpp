@@ -46,6 +46,11 @@ struct DiskMapOptions {
   // it: the map is then computed again from the embedded metric. Ignored by the tangential and
   // Thurston schemes, whose starting metric is not the embedded one.
   bool flatteningGuess = true;
+  // Spherical route: when a flow stalls, the hemisphere is approached by continuation with a
+  // smaller step; after this many stalled stages the route fails with Error(Unreachable) (each
+  // costs up to 20 Newton steps), for callers with a cheaper fallback (the display map's
+  // Euclidean route). The default never gives up before the step falls below 1/1024.
+  int maxStalledStages = 1000;
   std::function<void(int, double)> onIteration;
 };
 

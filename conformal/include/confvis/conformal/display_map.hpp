@@ -1,9 +1,13 @@
 #pragma once
 // The conformal map of a display before baking (design note §3 steps 1-5): the source and target
 // templates projected to the unit sphere around the reference point, each with its aligned
-// Riemann map to the unit disk. Both disks share three boundary markers sent to 1, i, -1, so
-// T_ray = phi_S^-1 o phi_D and T_geom = phi_D^-1 o phi_S can be evaluated by point location in
-// the other disk. The bake (bake.hpp) turns this into a RetargetMap.
+// Riemann map to the unit disk. Both disks are aligned by a disk automorphism at the forward
+// direction (the hemisphere axis, else -z): the source's forward direction and the display point
+// straight ahead of the reference point (the display's centre of directions where it covers no
+// such point) go to 0, "up" (+y) to +i, so T_ray = phi_S^-1 o phi_D sends the straight-ahead
+// point to the forward direction and keeps up up there; T_ray and T_geom = phi_D^-1 o phi_S are
+// evaluated by point location in the other disk. The bake (bake.hpp) turns this into a
+// RetargetMap.
 #include <array>
 #include <complex>
 #include <cstdint>
@@ -33,21 +37,33 @@ struct SphereDiskMesh {
 struct DisplayMap {
   SphereDiskMesh source;  // S: the virtual field of view shown (sphere cut open, or hemisphere)
   SphereDiskMesh target;  // D: the directions covered by the display's lit walls
-  std::array<int, 3> sourceMarkers{};  // vertex indices in source, sent to 1, i, -1
-  std::array<int, 3> targetMarkers{};  // the corresponding vertices in target
-  // Seconds per stage ("template", "flow", "alignment") and mesh sizes, for bake.json.
+  // Three corresponding boundary vertices (cut leaves and the display corners they stand for;
+  // for a hemisphere source, rim points at those corners' azimuths). Not pinned by the
+  // alignment; stats["anchor"]["leaf_offset_degrees"] says how far apart T_ray puts them.
+  std::array<int, 3> sourceMarkers{};
+  std::array<int, 3> targetMarkers{};
+  // Seconds per stage ("template", "flow", "alignment"), the alignment's anchors ("anchor") and
+  // mesh sizes, for bake.json.
   nlohmann::json stats = nlohmann::json::object();
 };
 
 struct DisplayConfig;
 
+// Spherical (default): no removed face, so a symmetric display gets an exactly symmetric map,
+// and far closer to the true Riemann map; Euclidean-route fallback where its flow stalls.
+// Euclidean: the faster preset (cave5 at 20 cm, shared 2-core machine: 50 against 75 ms CPU for
+// the whole re-bake), but its removed face bends the map around the display's centre (0.7 px
+// median mirror asymmetry on cave3, 59 px on flat-wall).
+enum class DisplayMapRoute { Spherical, Euclidean };
+
 struct DisplayMapOptions {
   double edgeLength = 0.0;          // metres; <= 0 takes the config's edge_length
+  DisplayMapRoute route = DisplayMapRoute::Spherical;
   bool showProgress = false;
 };
 
 // Templates, refinement, projection to the sphere, both Riemann maps and the Möbius alignment
-// for a validated display config, with config.reference as the reference point.
+// at the forward direction for a validated display config, with config.reference as the reference point.
 // Throws Error(InvalidInput) naming the culprit for displays it cannot map (visible region not a
 // disk, ...), Error(Unreachable) if a flow fails.
 DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOptions& options = {});

@@ -1,6 +1,7 @@
 #pragma once
 // Möbius transformations z ↦ (az + b)/(cz + d), built from exact cross-ratios (dissertation
-// §8.3.3, whose printed second map is garbled): align(p, q, r) sends p, q, r to 1, i, -1.
+// §8.3.3, whose printed second map is garbled): alignMarkers(p, q, r) sends p, q, r to 1, i, -1;
+// diskAutomorphism(a, t) = e^{it}(z - a)/(1 - conj(a) z) moves a to 0 and turns by t there.
 #include <complex>
 
 namespace confvis::conformal {
@@ -22,6 +23,9 @@ class Mobius {
   // Sends p, q, r to 1, i, -1. For p, q, r counter-clockwise on the unit circle the result maps
   // the unit disk onto itself; throws Error(InvalidInput) for clockwise or coincident markers.
   static Mobius alignMarkers(Complex p, Complex q, Complex r);
+  // e^{it}(z - a)/(1 - conj(a) z): maps the unit disk onto itself, a to 0, with derivative
+  // e^{it}/(1 - |a|^2) at a. Throws Error(InvalidInput) unless |a| < 1.
+  static Mobius diskAutomorphism(Complex a, double t);
 
  private:
   Complex a_{1}, b_{0}, c_{0}, d_{1};

@@ -1,4 +1,5 @@
 #include "confvis/engine/display_config.hpp"
+#include "confvis/engine/default_edge_length.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -262,6 +263,7 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
     detail::checkFacesReference(config.walls.back(), config.reference, sourceName);
   }
   detail::checkWallSet(config, sourceName);
+  if (!top.has("edge_length")) config.edgeLength = defaultEdgeLength(config.walls, config.reference);
   json hashed = detail::withoutWallOutputs(toJson(config));
   hashed.erase("tracking");  // the tracker does not change the map: its edits keep the bake cache
   config.hash = fnv1a64Hex(hashed.dump());

@@ -166,7 +166,9 @@ TEST(DisplayConfig, OptionalFieldsTakeTheDocumentedDefaults) {
   EXPECT_TRUE(vecNear(c.reference, {0, 0, 0}));
   EXPECT_EQ(c.source, SourceField::FullSphere);
   EXPECT_TRUE(vecNear(c.hemisphereAxis, {0, 0, -1}));
-  EXPECT_DOUBLE_EQ(c.edgeLength, 0.20);
+  // Without edge_length: 20 cm scaled by the wall's distance (1 m) over a CAVE's 1.5 m
+  // (default_edge_length.hpp).
+  EXPECT_DOUBLE_EQ(c.edgeLength, 0.20 / 1.5);
   EXPECT_EQ(c.cubeResolution, 256);
   EXPECT_DOUBLE_EQ(c.eyeSeparation, 0.064);
   EXPECT_EQ(c.walls[0].bezel.left, 0.0);
