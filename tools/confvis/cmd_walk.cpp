@@ -94,11 +94,6 @@ int runWalk(const WalkArgs& args) {
   settings.mode = RenderMode::Conformal;
   settings.eyes = {Eye::Center};
   settings.resolutionScale = args.scale;
-  // The map's render config: the display with its reference at the map's (render_plan requires
-  // them to match), rebuilt only when a new map is swapped in.
-  DisplayConfig frameConfig = config;
-  std::uint64_t frameConfigGeneration = 0;
-
   nlohmann::json frames = nlohmann::json::array(), errors = nlohmann::json::array();
   int previousBakesStarted = 0;
   const auto loopStart = Clock::now();
@@ -111,12 +106,9 @@ int runWalk(const WalkArgs& args) {
     frameSeconds = path.keys().front().seconds + walkSeconds;
     const HeadPose head = tracker.latest().value().head;
     const FollowerFrame frame = follower.beginFrame(head);
-    const glm::dvec3 reference(frame.map->reference.x, frame.map->reference.y,
-                               frame.map->reference.z);
-    if (index == 0 || frame.generation != frameConfigGeneration) {
-      frameConfig = withReference(config, reference);
-      frameConfigGeneration = frame.generation;
-    }
+    // The map's render config: the display with its reference at the map's.
+    const DisplayConfig& frameConfig = *frame.display;
+    const glm::dvec3 reference = frameConfig.reference;
     const bool bakeStarted = follower.stats().bakesStarted > previousBakesStarted;
     previousBakesStarted = follower.stats().bakesStarted;
 
