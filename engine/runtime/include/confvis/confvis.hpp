@@ -63,10 +63,11 @@
 #include "confvis/runtime/background_bake.hpp"
 #include "confvis/runtime/map_follower.hpp"
 
-// Rendering through the map (backends: Embree, Vulkan): render plans and eyeName(), the warp
-// in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).
+// Rendering through the map (backends: Embree, Vulkan): render plans and eyeName(), typed frame
+// statistics (frameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).
 #include "confvis/backends/analytic_maps.hpp"
 #include "confvis/backends/conformal_warp.hpp"
+#include "confvis/backends/frame_stats.hpp"
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
