@@ -65,6 +65,24 @@ foreach(file IN ITEMS readme_app warp_consumer.spv)
 endforeach()
 set(consumer_output "${output}")
 
+# The README's application renders real frames through a real bake (Vulkan, lavapipe in CI) on
+# the shipped CAVE made small: 16-pixel walls, a coarse map.
+file(READ ${prefix}/share/confvis/configs/cave5.json cave)
+string(JSON cave SET "${cave}" cube_resolution 32)
+string(JSON cave SET "${cave}" edge_length 0.5)
+string(JSON walls LENGTH "${cave}" walls)
+math(EXPR last "${walls} - 1")
+foreach(i RANGE ${last})
+  string(JSON cave SET "${cave}" walls ${i} resolution "[16, 16]")
+endforeach()
+file(WRITE ${WORK_DIR}/small-cave.json "${cave}")
+run("running the README's application" ${WORK_DIR}/build/readme_app ${WORK_DIR}/small-cave.json
+    ${prefix}/share/confvis/configs/paths/cave-walk.csv checker-sphere 30)
+message(STATUS "README application output:\n${output}")
+if(NOT output MATCHES "app: 30 frames on 5 walls, [0-9]+ re-bakes")
+  message(FATAL_ERROR "the README's application printed: ${output}")
+endif()
+
 # Views and maps only: the config must not look for Embree, TBB or Vulkan at all.
 run("configuring the maps-only consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer
     -B ${WORK_DIR}/build-maps -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
