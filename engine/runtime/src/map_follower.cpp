@@ -22,9 +22,8 @@ std::string describe(const glm::dvec3& p) {
 void checkBakedMap(const RetargetMap& map, const glm::dvec3& reference) {
   if (map.ray.faceSize <= 0 || map.geom.faceSize <= 0)
     throw Error(ErrorCode::Internal, "the bake returned an empty map");
-  const glm::dvec3 got(map.reference.x, map.reference.y, map.reference.z);
-  if (!(glm::length(got - reference) <= kSameReference))
-    throw Error(ErrorCode::Internal, "the bake returned a map around " + describe(got) +
+  if (!(glm::length(map.reference - reference) <= kSameReference))
+    throw Error(ErrorCode::Internal, "the bake returned a map around " + describe(map.reference) +
                                          " instead of " + describe(reference));
 }
 
@@ -62,7 +61,7 @@ MapFollower::MapFollower(DisplayConfig config, RetargetMap initial, BakeFunction
     : config_(std::move(config)), bake_(std::move(bake)), options_(options),
       shared_(std::make_shared<Shared>()) {
   if (!bake_) throw Error(ErrorCode::InvalidInput, "MapFollower needs a bake function");
-  reference_ = glm::dvec3(initial.reference.x, initial.reference.y, initial.reference.z);
+  reference_ = initial.reference;
   checkBakedMap(initial, reference_);
   current_ = std::make_shared<const RetargetMap>(std::move(initial));
   currentDisplay_ = std::make_shared<const DisplayConfig>(
