@@ -22,6 +22,10 @@ confvis_example(readme_loop ${PROJECT_SOURCE_DIR}/README.md)
 confvis_example(readme_main ${PROJECT_SOURCE_DIR}/README.md)
 confvis_example(map_follower_loop
   ${PROJECT_SOURCE_DIR}/engine/runtime/include/confvis/runtime/map_follower.hpp)
+confvis_example(background_bake
+  ${PROJECT_SOURCE_DIR}/engine/runtime/include/confvis/runtime/background_bake.hpp)
+confvis_example(frame_stats
+  ${PROJECT_SOURCE_DIR}/backends/common/include/confvis/backends/frame_stats.hpp)
 
 get_property(confvis_example_outputs GLOBAL PROPERTY CONFVIS_EXAMPLE_OUTPUTS)
 file(GLOB confvis_example_tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_LIST_DIR}/*_test.cpp)

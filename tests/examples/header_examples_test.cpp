@@ -4,7 +4,11 @@
 
 #include <confvis/confvis.hpp>
 
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -48,6 +52,74 @@ TEST(HeaderExamples, MapFollowerLoopRendersThroughItsSwappedMaps) {
   EXPECT_TRUE(logged.empty()) << logged.front();
   EXPECT_GE(stats.bakesSucceeded, 1);
   EXPECT_EQ(stats.bakesFailed, 0);
+}
+
+// cave5 with a coarse, small bake, so that three real bakes take a fraction of a second.
+DisplayConfig coarseCave() {
+  nlohmann::json json = toJson(loadDisplayConfig(std::filesystem::path(CONFVIS_SOURCE_DIR) /
+                                                 "configs" / "cave5.json"));
+  json["cube_resolution"] = 16;
+  json["edge_length"] = 0.5;
+  return parseDisplayConfig(json, "cave5 (coarse)");
+}
+
+TEST(HeaderExamples, BackgroundBakeMakesFollowersOnAnyThreadCount) {
+  const DisplayConfig display = coarseCave();
+#include "background_bake.inc"
+  for (MapFollower* each : {&follower, &gentle, &greedy}) {
+    const FollowerFrame frame = each->beginFrame(HeadPose{});
+    EXPECT_EQ(frame.map->resolution(), 16);
+    EXPECT_LT(glm::length(frame.map->reference - display.reference), 1e-12);
+  }
+}
+
+TEST(HeaderExamples, FrameStatsReadsTheFrameJustRendered) {
+  const DisplayConfig display = loadDisplayConfig(std::filesystem::path(CONFVIS_SOURCE_DIR) /
+                                                  "configs" / "cave5.json");
+  EmbreeBackend backend;
+  backend.setScene(builtinScene("checker-sphere"));
+  RenderSettings settings;
+  settings.resolutionScale = 8.0 / display.walls.front().width;
+  const RetargetMap map = RetargetMap::identity(8, display.reference);
+  std::vector<std::string> shown;
+  const auto overlay = [&](const char* format, double value) {
+    char line[64];
+    std::snprintf(line, sizeof line, format, value);
+    shown.emplace_back(line);
+  };
+#include "frame_stats.inc"
+  EXPECT_EQ(stats.backend, "embree");
+  ASSERT_EQ(shown.size(), 1u);
+  EXPECT_NE(shown[0].find(" ms"), std::string::npos);
+}
+
+// A marker `example: NAME` in a public header (or the README) whose example examples.cmake does
+// not extract would be an example nobody compiles.
+TEST(HeaderExamples, EveryMarkedExampleIsExtractedByTheBuild) {
+  const std::filesystem::path root = CONFVIS_SOURCE_DIR;
+  std::ifstream cmake(root / "tests/examples/examples.cmake");
+  ASSERT_TRUE(cmake);
+  const std::string registered((std::istreambuf_iterator<char>(cmake)), {});
+  const std::regex marker(R"re((?:^// |<!-- )example: ([a-z0-9_]+))re");
+  int markers = 0;
+  std::vector<std::filesystem::path> files{root / "README.md"};
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    const std::string path = entry.path().generic_string();
+    if (entry.path().extension() == ".hpp" && path.find("/include/confvis/") != std::string::npos &&
+        path.find("/build") == std::string::npos)
+      files.push_back(entry.path());
+  }
+  for (const std::filesystem::path& file : files) {
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);) {
+      std::smatch match;
+      if (!std::regex_search(line, match, marker)) continue;
+      ++markers;
+      EXPECT_NE(registered.find("confvis_example(" + match[1].str()), std::string::npos)
+          << file << ": example " << match[1] << " is not in tests/examples/examples.cmake";
+    }
+  }
+  EXPECT_GE(markers, 5);  // readme_loop, readme_main, map_follower_loop, background_bake, ...
 }
 
 }  // namespace

@@ -3,8 +3,9 @@
 // render.json and walk.json write); frameStats() reads them into this struct, so an application
 // neither parses JSON nor guesses key names. Fields a backend does not measure stay empty.
 //
+// example: frame_stats (compiled and run by the test suite, tests/examples/)
 //   RenderResult images;
-//   backend.renderInto(display, map, settings, images);
+//   backend.renderInto(display, &map, settings, images);
 //   const FrameStats stats = frameStats(images);
 //   overlay("%.1f ms", 1e3 * stats.seconds);
 //

@@ -5,12 +5,16 @@
 // and the backend's own workers keep cores while a re-bake runs (measured: Embree frames of a
 // render node went from 1.6 to 2.5 s while a bake took every core).
 //
-//   MapFollower follower(display, backgroundBake());     // half the hardware threads
-//   MapFollower follower(display, backgroundBake(1));    // one thread: frames lose least
-//   MapFollower follower(display, backgroundBake(std::thread::hardware_concurrency()));  // all
+// example: background_bake (compiled and run by the test suite, tests/examples/)
+//   MapFollower follower(display, backgroundBake());  // half the hardware threads
+//   MapFollower gentle(display, backgroundBake(1));   // one thread: frames lose least
+//   const int all = static_cast<int>(std::thread::hardware_concurrency());
+//   MapFollower greedy(display, backgroundBake(all));  // every core: bakes finish soonest
 //
 // Thread-safety: the returned function may be called from any thread (the follower calls it on
 // its bake thread), several calls at once included.
+#include <thread>
+
 #include "confvis/runtime/map_follower.hpp"
 
 namespace confvis {
