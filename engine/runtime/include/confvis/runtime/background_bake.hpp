@@ -2,8 +2,8 @@
 // The bake a MapFollower of a live display runs in the background: bakeDisplay
 // (conformal/bake_display.hpp) without the on-disk cache (every head position is a new config:
 // the cache would only fill up), on fewer threads than the machine has, so that the render thread
-// and the backend's own workers keep cores while a re-bake runs (measured: Embree frames of a
-// render node went from 1.6 to 2.5 s while a bake took every core).
+// and the backend's own workers keep cores while a re-bake runs (issue 25 measured a render
+// node's Embree frames going from 1.6 to 2.5 s while a bake took every core).
 //
 // example: background_bake (compiled and run by the test suite, tests/examples/)
 //   MapFollower follower(display, backgroundBake());  // half the hardware threads
