@@ -103,11 +103,16 @@ TEST(HeaderExamples, EveryMarkedExampleIsExtractedByTheBuild) {
   const std::regex marker(R"re((?:^// |<!-- )example: ([a-z0-9_]+))re");
   int markers = 0;
   std::vector<std::filesystem::path> files{root / "README.md"};
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
-    const std::string path = entry.path().generic_string();
-    if (entry.path().extension() == ".hpp" && path.find("/include/confvis/") != std::string::npos &&
-        path.find("/build") == std::string::npos)
-      files.push_back(entry.path());
+  for (auto it = std::filesystem::recursive_directory_iterator(root);
+       it != std::filesystem::recursive_directory_iterator(); ++it) {
+    const std::string name = it->path().filename().string();
+    if (it->is_directory() && (name.rfind("build", 0) == 0 || name.rfind('.', 0) == 0)) {
+      it.disable_recursion_pending();  // build folders (an installed copy), .git
+      continue;
+    }
+    if (it->path().extension() == ".hpp" &&
+        it->path().generic_string().find("/include/confvis/") != std::string::npos)
+      files.push_back(it->path());
   }
   for (const std::filesystem::path& file : files) {
     std::ifstream in(file);
