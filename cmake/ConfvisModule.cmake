@@ -8,18 +8,27 @@ set_property(GLOBAL PROPERTY CONFVIS_TEST_SOURCES "")
 # (the "confvis_" prefix dropped), its include/ folder installed beside the others.
 set_property(GLOBAL PROPERTY CONFVIS_INSTALL_TARGETS "")
 set_property(GLOBAL PROPERTY CONFVIS_INSTALL_INCLUDE_DIRS "")
-set_property(GLOBAL PROPERTY CONFVIS_PACKAGE_DEPENDENCIES "")
 
 function(confvis_install_module name include_dir)
   set_property(GLOBAL APPEND PROPERTY CONFVIS_INSTALL_TARGETS ${name})
   set_property(GLOBAL APPEND PROPERTY CONFVIS_INSTALL_INCLUDE_DIRS ${include_dir})
+  set_property(GLOBAL PROPERTY CONFVIS_LAST_MODULE ${name})
+  # The name an application uses, here (add_subdirectory(confvis)) as after find_package.
+  string(REGEX REPLACE "^confvis_" "" component ${name})
+  add_library(confvis::${component} ALIAS ${name})
 endfunction()
 
-# confvis_package_dependency("embree 3"): one find_dependency(...) line in the generated
-# confvisConfig.cmake, for a package whose targets a module links (publicly, or privately: static
-# libraries carry their private dependencies to the consumer's link line).
+# confvis_package_dependency("embree 3"): the module registered last (confvis_module just before
+# the call) links this package (publicly, or privately: static libraries carry their private
+# dependencies to the consumer's link line), so the generated confvisConfig.cmake runs
+# find_dependency(embree 3) when an application asks for that module's component. The packages
+# every module needs are listed in cmake/ConfvisInstall.cmake.
 function(confvis_package_dependency arguments)
-  set_property(GLOBAL APPEND PROPERTY CONFVIS_PACKAGE_DEPENDENCIES "${arguments}")
+  get_property(module GLOBAL PROPERTY CONFVIS_LAST_MODULE)
+  if(NOT module)
+    message(FATAL_ERROR "confvis_package_dependency(${arguments}) before any confvis_module")
+  endif()
+  set_property(GLOBAL APPEND PROPERTY CONFVIS_PACKAGE_DEPENDENCIES_${module} "${arguments}")
 endfunction()
 
 function(confvis_module name dir)

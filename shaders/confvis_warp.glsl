@@ -16,6 +16,9 @@
 //     orientation; confvis/backends/vulkan/warp_interface.hpp packs the upload data);
 //   - sampler: VK_FILTER_LINEAR (min and mag; the format must support linear filtering),
 //     VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, unnormalizedCoordinates = VK_FALSE.
+// Including it: `#extension GL_GOOGLE_include_directive : require` then
+// `#include "confvis_warp.glsl"`, compiled with `glslangValidator -I<dir>`,
+// where <dir> is ${confvis_SHADER_DIR} of the installed package (share/confvis/shaders).
 // Define CONFVIS_WARP_SET and CONFVIS_WARP_BINDING before including this file to move the binding
 // (defaults: set 1, binding 0). The map is needed in every stage that calls these functions.
 //

@@ -68,8 +68,8 @@ void validateMesh(const SphereDiskMesh& mesh, const std::string& name) {
 // triangle, made before the texel loops: texels switch triangles ~2 times per span.
 struct CodomainFrame {
   double b1[3] = {}, b2[3] = {};
-  Vec3d dx, dy, dw;
-  Vec3d corner;  // s0: the direction written if the sum cancels (antipodal corners only)
+  Vec3d dx{0.0}, dy{0.0}, dw{0.0};
+  Vec3d corner{0.0};  // s0: the direction written if the sum cancels (antipodal corners only)
 };
 
 std::vector<CodomainFrame> codomainFrames(const SphereDiskMesh& codomain,
@@ -196,7 +196,7 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
         const double l1 = l1Start + k * l1Step, l2 = l2Start + k * l2Step, l0 = hw - l1 - l2;
         const double tolerance = -1e-12 * hw;
         if (!(l0 >= tolerance && l1 >= tolerance && l2 >= tolerance)) break;
-        writeDirection(texels + 4 * k, start + k * step, f.corner, alpha);
+        writeDirection(texels + 4 * k, start + static_cast<double>(k) * step, f.corner, alpha);
       }
       return k;
     };

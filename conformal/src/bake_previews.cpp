@@ -35,7 +35,7 @@ CubeMap recolour(const CubeMap& map, Colour&& colour) {
 
 Vec3d checkerColour(const Vec3d& d) {
   const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
-  Vec3d base;
+  Vec3d base{0.0};
   double u, v, major;
   if (ax >= ay && ax >= az) {
     base = {0.9, 0.15, 0.1};

@@ -12,7 +12,7 @@
 namespace confvis::detail {
 
 struct OneSidedSample {
-  Vec3d direction;           // unit
+  Vec3d direction{0.0};           // unit
   float alpha = 0;           // blended over the footprint texels on this side
   bool straddles = false;    // the footprint spans a jump (else: the plain bilinear lookup)
   double footprintSpread = 0;  // largest angle between the blended values (this side's), radians

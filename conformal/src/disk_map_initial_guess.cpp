@@ -10,7 +10,7 @@ namespace {
 
 // A boundary corner to open to π: position, exponent π/α - 1, squared smoothing radius.
 struct Cone {
-  Vec3d position;
+  Vec3d position{0.0};
   double exponent;
   double smoothing2;
   int copies;

@@ -25,7 +25,7 @@ namespace confvis::detail {
 
 // Texel (x, y) of a face has direction normal + c(x) right + c(y) down, c(i) = (2i + 1 - N) / N.
 struct CubeFaceFrame {
-  Vec3d normal, right, down;
+  Vec3d normal{0.0}, right{0.0}, down{0.0};
 };
 CubeFaceFrame cubeFaceFrame(CubeFace face);
 inline double texelCoordinate(int i, int n) { return static_cast<double>(2 * i + 1 - n) / n; }

@@ -20,7 +20,7 @@ Vec3d rotateAbout(const Vec3d& axis, double angle, const Vec3d& v) {
 struct ShearedHalves {
   static constexpr int n = 64;
   static constexpr CubeFace face = CubeFace::PosZ;
-  Vec3d normal;  // the cut plane normal . v = 0 runs between texel columns n/2 - 1 and n/2
+  Vec3d normal{0.0};  // the cut plane normal . v = 0 runs between texel columns n/2 - 1 and n/2
   double alpha = 0.3;
   CubeMap map{n};
 

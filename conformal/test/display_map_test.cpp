@@ -97,7 +97,7 @@ double maxIdentityError(const DisplayMap& map) {
   for (std::size_t v = 0; v < map.target.sphere.size(); ++v) {
     const Complex z = map.target.disk[v];
     double bestOutside = 1e9;
-    Vec3d image;
+    Vec3d image{0.0};
     for (const auto& t : map.source.triangles) {
       const Complex a = map.source.disk[t[0]], b = map.source.disk[t[1]], c = map.source.disk[t[2]];
       const double area = std::imag(std::conj(b - a) * (c - a));

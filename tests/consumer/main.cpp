@@ -22,13 +22,13 @@ int main(int argc, char** argv) {
                   view.right, view.bottom, view.top, view.nearDistance);
 
     const confvis::RetargetMap identity = confvis::RetargetMap::identity(32);
-    const confvis::Vec3d d = confvis::normalized(confvis::Vec3d{0.3, -0.2, -1.0});
-    const std::optional<confvis::Vec3d> v = identity.toVirtual(d);
+    const glm::dvec3 d = glm::normalize(glm::dvec3{0.3, -0.2, -1.0});
+    const std::optional<glm::dvec3> v = identity.toVirtual(d);
     std::printf("identity %s\n", v && confvis::angleBetween(*v, d) < 1e-2 ? "ok" : "wrong");
 
     // The map follows a head that steps 30 cm to the right (a stand-in bake: identity maps).
     confvis::MapFollower follower(cave, [](const confvis::DisplayConfig&, const glm::dvec3& c) {
-      return confvis::RetargetMap::identity(8, confvis::Vec3d{c.x, c.y, c.z});
+      return confvis::RetargetMap::identity(8, c);
     });
     follower.beginFrame(confvis::HeadPose{{0.3, 0.0, 0.0}});
     follower.waitForBake();

@@ -1,7 +1,9 @@
-# ctest driver (cmake -P): install the built confvis into a temporary prefix, configure and build
-# tests/consumer against it alone, run it, and check its output against closed-form values.
-# Arguments: -DBUILD_DIR= -DSOURCE_DIR= -DWORK_DIR= -DGENERATOR=
-foreach(var BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR)
+# ctest driver (cmake -P): install the built confvis into a temporary prefix, move it, check that
+# the package names no absolute path, configure and build tests/consumer against the moved copy
+# alone (all components; then views and maps only, Embree, TBB and Vulkan disabled), run both,
+# and check their output against closed-form values.
+# Arguments: -DBUILD_DIR= -DSOURCE_DIR= -DWORK_DIR= -DGENERATOR= -DEXAMPLES_DIR=
+foreach(var BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR EXAMPLES_DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run_consumer_test.cmake needs -D${var}=...")
   endif()
@@ -16,14 +18,93 @@ function(run step)
 endfunction()
 
 file(REMOVE_RECURSE ${WORK_DIR})
-set(prefix ${WORK_DIR}/prefix)
-run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+set(installed ${WORK_DIR}/installed)
+run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${installed})
+
+# Relocatable: the package is used from a copy of the prefix, the original gone, so a path
+# recorded at install time would break the build below.
+set(prefix ${WORK_DIR}/moved)
+file(COPY ${installed}/ DESTINATION ${prefix})
+file(REMOVE_RECURSE ${installed})
+# No absolute path in the exported targets: not the build tree, not the source tree, not a
+# library file of the build machine (Debian's libstb.so was one).
+file(GLOB_RECURSE package_files ${prefix}/*.cmake)
+if(NOT package_files)
+  message(FATAL_ERROR "no CMake package files under ${prefix}")
+endif()
+foreach(file IN LISTS package_files)
+  file(READ ${file} text)
+  foreach(path IN ITEMS "${BUILD_DIR}" "${SOURCE_DIR}" "${installed}")
+    string(FIND "${text}" "${path}" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "${file} names ${path}")
+    endif()
+  endforeach()
+  # An absolute path begins after a quote, a list separator or a blank (not after ${_IMPORT_PREFIX}).
+  if(text MATCHES "[\";:( ]/([A-Za-z0-9_.+-]+/)*lib[A-Za-z0-9_+-]*\\.(so|a)")
+    message(FATAL_ERROR "${file} names the library file ${CMAKE_MATCH_0}")
+  endif()
+endforeach()
+foreach(file IN ITEMS share/confvis/shaders/confvis_warp.glsl include/confvis/confvis.hpp)
+  if(NOT EXISTS ${prefix}/${file})
+    message(FATAL_ERROR "the install lacks ${file}")
+  endif()
+endforeach()
+
 run("configuring the consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer
     -B ${WORK_DIR}/build -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
-    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+    -DREADME_EXAMPLES_DIR=${EXAMPLES_DIR})
 run("building the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
 run("running the consumer" ${WORK_DIR}/build/consumer ${prefix}/share/confvis/configs/cave5.json)
 message(STATUS "consumer output:\n${output}")
+foreach(file IN ITEMS readme_app warp_consumer.spv)
+  if(NOT EXISTS ${WORK_DIR}/build/${file})
+    message(FATAL_ERROR "the consumer build made no ${file}")
+  endif()
+endforeach()
+set(consumer_output "${output}")
+
+# The README's application renders real frames through a real bake (Vulkan, lavapipe in CI) on
+# the shipped CAVE made small: 16-pixel walls, a coarse map.
+file(READ ${prefix}/share/confvis/configs/cave5.json cave)
+string(JSON cave SET "${cave}" cube_resolution 32)
+string(JSON cave SET "${cave}" edge_length 0.5)
+string(JSON walls LENGTH "${cave}" walls)
+math(EXPR last "${walls} - 1")
+foreach(i RANGE ${last})
+  string(JSON cave SET "${cave}" walls ${i} resolution "[16, 16]")
+endforeach()
+file(WRITE ${WORK_DIR}/small-cave.json "${cave}")
+run("running the README's application" ${WORK_DIR}/build/readme_app ${WORK_DIR}/small-cave.json
+    ${prefix}/share/confvis/configs/paths/cave-walk.csv checker-sphere 30)
+message(STATUS "README application output:\n${output}")
+if(NOT output MATCHES "app: 30 frames on 5 walls, [0-9]+ re-bakes")
+  message(FATAL_ERROR "the README's application printed: ${output}")
+endif()
+
+# Views and maps only: the config must not look for Embree, TBB or Vulkan at all.
+run("configuring the maps-only consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer
+    -B ${WORK_DIR}/build-maps -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+    -DCONSUMER_COMPONENTS=conformal -DCMAKE_DISABLE_FIND_PACKAGE_embree=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON)
+run("building the maps-only consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build-maps)
+run("running the maps-only consumer" ${WORK_DIR}/build-maps/maps_only
+    ${prefix}/share/confvis/configs/cave5.json)
+message(STATUS "maps-only consumer output:\n${output}")
+if(NOT output MATCHES "maps-only front 1.500 map 16 reference 0.25 ahead shown")
+  message(FATAL_ERROR "maps-only consumer output unexpected: ${output}")
+endif()
+# An unknown component is one clear error naming it.
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/consumer
+    -B ${WORK_DIR}/build-unknown -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${prefix}
+    -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCONSUMER_COMPONENTS=raytracer
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "unknown confvis component 'raytracer'")
+  message(FATAL_ERROR "an unknown component was not refused by name (${rc}):\n${err}")
+endif()
+set(output "${consumer_output}")
 
 set(expected
   "display cave5 walls 5"

@@ -14,7 +14,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-glm::dvec3 toGlm(const Vec3d& v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 
@@ -25,12 +24,12 @@ DisplayConfig cubeFaceDisplay(int faceSize, const glm::dvec3& reference) {
   for (CubeFace face : kCubeFaces) {
     // Texel (x, y) lies along normal + c(x) right + c(y) down (cube_map.hpp): the wall's
     // lower-left corner is normal - right + down, its upper-left normal - right - down.
-    const glm::dvec3 n = toGlm(texelDirection(face, faceSize / 2, faceSize / 2, faceSize));
+    const glm::dvec3 n = texelDirection(face, faceSize / 2, faceSize / 2, faceSize);
     const glm::dvec3 centre(std::round(n.x), std::round(n.y), std::round(n.z));
-    const glm::dvec3 right = glm::normalize(toGlm(texelDirection(face, faceSize - 1, 0, faceSize)) -
-                                            toGlm(texelDirection(face, 0, 0, faceSize)));
-    const glm::dvec3 down = glm::normalize(toGlm(texelDirection(face, 0, faceSize - 1, faceSize)) -
-                                           toGlm(texelDirection(face, 0, 0, faceSize)));
+    const glm::dvec3 right = glm::normalize(texelDirection(face, faceSize - 1, 0, faceSize) -
+                                            texelDirection(face, 0, 0, faceSize));
+    const glm::dvec3 down = glm::normalize(texelDirection(face, 0, faceSize - 1, faceSize) -
+                                           texelDirection(face, 0, 0, faceSize));
     Wall wall;
     wall.name = toString(face);
     wall.lowerLeft = reference + centre - right + down;

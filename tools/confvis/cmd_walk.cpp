@@ -100,11 +100,10 @@ int runWalk(const WalkArgs& args) {
   settings.mode = RenderMode::Conformal;
   settings.eyes = {Eye::Center};
   settings.resolutionScale = args.scale;
-  // The map's render config: the display with its reference at the map's (render_plan requires
-  // them to match), rebuilt only when a new map is swapped in.
+  // The map's render config: the display with its reference at the map's, rebuilt when a new map
+  // is swapped in (a --cluster rank other than 0 has no follower to hand it out).
   DisplayConfig frameConfig = config;
   std::uint64_t frameConfigGeneration = 0;
-
   nlohmann::json frames = nlohmann::json::array(), errors = nlohmann::json::array();
   int previousBakesStarted = 0;
   const auto loopStart = Clock::now();

@@ -9,8 +9,6 @@ namespace confvis {
 
 namespace {
 
-Vec3d toVec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-glm::dvec3 toGlm(const Vec3d& v) { return {v.x, v.y, v.z}; }
 
 bool inCeilingCone(const glm::dvec3& d) {
   return d.y >= std::abs(d.x) && d.y >= std::abs(d.z);
@@ -20,12 +18,12 @@ bool inCeilingCone(const glm::dvec3& d) {
 
 RetargetMap rotationMap(const glm::dmat3& rotation, int resolution, const glm::dvec3& reference) {
   RetargetMap map;
-  map.reference = toVec(reference);
+  map.reference = reference;
   map.ray = CubeMap(resolution);
   map.geom = CubeMap(resolution);
   const glm::dmat3 inverse = glm::transpose(rotation);
-  fillCubeMap(map.ray, [&](const Vec3d& d) { return std::pair{toVec(rotation * toGlm(d)), true}; });
-  fillCubeMap(map.geom, [&](const Vec3d& v) { return std::pair{toVec(inverse * toGlm(v)), true}; });
+  fillCubeMap(map.ray, [&](const Vec3d& d) { return std::pair{rotation * d, true}; });
+  fillCubeMap(map.geom, [&](const Vec3d& v) { return std::pair{inverse * v, true}; });
   return map;
 }
 
@@ -42,15 +40,15 @@ RetargetMap ceilinglessDilationMap(double lambda, int resolution, const glm::dve
   if (!(lambda > 0.0) || !std::isfinite(lambda))
     throw Error(ErrorCode::InvalidInput, "the dilation factor must be positive");
   RetargetMap map;
-  map.reference = toVec(reference);
+  map.reference = reference;
   map.ray = CubeMap(resolution);
   map.geom = CubeMap(resolution);
   fillCubeMap(map.ray, [&](const Vec3d& d) {
-    return std::pair{toVec(stereographicDilation(toGlm(d), lambda)), !inCeilingCone(toGlm(d))};
+    return std::pair{stereographicDilation(d, lambda), !inCeilingCone(d)};
   });
   fillCubeMap(map.geom, [&](const Vec3d& v) {
-    const glm::dvec3 physical = stereographicDilation(toGlm(v), 1.0 / lambda);
-    return std::pair{toVec(physical), !inCeilingCone(physical)};
+    const glm::dvec3 physical = stereographicDilation(v, 1.0 / lambda);
+    return std::pair{physical, !inCeilingCone(physical)};
   });
   return map;
 }

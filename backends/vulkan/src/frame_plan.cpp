@@ -48,7 +48,6 @@ void checkSettings(const RenderSettings& settings, const RetargetMap* map, std::
     throw Error(ErrorCode::InvalidInput, "retarget map: reference point is not finite");
 }
 
-glm::dvec3 toGlm(const Vec3d& v) { return {v.x, v.y, v.z}; }
 
 // Smallest angle a pixel of `wall` (lit area, w x h output pixels) subtends at c.
 double smallestPixelAngle(const Wall& wall, std::uint32_t w, std::uint32_t h,
@@ -94,11 +93,11 @@ glm::dvec3 virtualEyePosition(const glm::dvec3& eye, const DisplayConfig& config
                               const RetargetMap* map, const RenderSettings& settings) {
   glm::dvec3 physical = eye;
   if (settings.mode == RenderMode::Conformal) {
-    const glm::dvec3 c = toGlm(map->reference);
+    const glm::dvec3 c = map->reference;
     const double distance = glm::length(eye - c);
     if (distance > 1e-12) {
       const glm::dvec3 d = (eye - c) / distance;
-      if (const auto v = map->toVirtual({d.x, d.y, d.z})) physical = c + distance * toGlm(*v);
+      if (const auto v = map->toVirtual({d.x, d.y, d.z})) physical = c + distance * *v;
     }
   }
   return settings.camera.position + settings.camera.rotation() * (physical - config.reference);
@@ -115,7 +114,7 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;
   const bool conformal = settings.mode == RenderMode::Conformal;
-  const glm::dvec3 warpCentre = conformal ? toGlm(map->reference) : config.reference;
+  const glm::dvec3 warpCentre = conformal ? map->reference : config.reference;
 
   // World (virtual) -> physical frame: the inverse of p -> position + R (p - c).
   const glm::dmat3 rt = glm::transpose(settings.camera.rotation());

@@ -11,8 +11,6 @@
 
 namespace confvis::test {
 
-inline glm::dvec3 toGlm(const Vec3d& v) { return {v.x, v.y, v.z}; }
-inline Vec3d toVec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
 // Rotation by `degrees` about +y (positive turns +x towards -z): T_geom(v) = R v.
 inline glm::dvec3 rotateAboutY(const glm::dvec3& v, double degrees) {
@@ -23,10 +21,10 @@ inline glm::dvec3 rotateAboutY(const glm::dvec3& v, double degrees) {
 inline RetargetMap rotationMap(int resolution, double degrees) {
   RetargetMap map = RetargetMap::identity(resolution);
   fillCubeMap(map.geom, [&](const Vec3d& v) {
-    return std::pair{toVec(rotateAboutY(toGlm(v), degrees)), true};
+    return std::pair{rotateAboutY(v, degrees), true};
   });
   fillCubeMap(map.ray, [&](const Vec3d& d) {
-    return std::pair{toVec(rotateAboutY(toGlm(d), -degrees)), true};
+    return std::pair{rotateAboutY(d, -degrees), true};
   });
   return map;
 }
@@ -43,9 +41,9 @@ inline glm::dvec3 scaleAzimuth(const glm::dvec3& v, double factor) {
 // on opposite edges (x = +-1, z = 0) of the image. T_ray doubles the azimuth of front directions.
 inline RetargetMap azimuthSqueezeMap(int resolution) {
   RetargetMap map = RetargetMap::identity(resolution);
-  fillCubeMap(map.geom, [](const Vec3d& v) { return std::pair{toVec(scaleAzimuth(toGlm(v), 0.5)), true}; });
+  fillCubeMap(map.geom, [](const Vec3d& v) { return std::pair{scaleAzimuth(v, 0.5), true}; });
   fillCubeMap(map.ray, [](const Vec3d& d) {
-    return std::pair{toVec(scaleAzimuth(toGlm(d), 2.0)), d.z < 0.0};
+    return std::pair{scaleAzimuth(d, 2.0), d.z < 0.0};
   });
   return map;
 }
@@ -70,10 +68,10 @@ inline glm::dvec3 scaleStereographic(const glm::dvec3& v, double factor) {
 inline RetargetMap zoomMap(int resolution, double zoom) {
   RetargetMap map = RetargetMap::identity(resolution);
   fillCubeMap(map.geom, [&](const Vec3d& v) {
-    return std::pair{toVec(scaleStereographic(toGlm(v), 1.0 / zoom)), true};
+    return std::pair{scaleStereographic(v, 1.0 / zoom), true};
   });
   fillCubeMap(map.ray, [&](const Vec3d& d) {
-    return std::pair{toVec(scaleStereographic(toGlm(d), zoom)), true};
+    return std::pair{scaleStereographic(d, zoom), true};
   });
   return map;
 }

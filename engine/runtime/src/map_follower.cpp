@@ -22,9 +22,8 @@ std::string describe(const glm::dvec3& p) {
 void checkBakedMap(const RetargetMap& map, const glm::dvec3& reference) {
   if (map.ray.faceSize <= 0 || map.geom.faceSize <= 0)
     throw Error(ErrorCode::Internal, "the bake returned an empty map");
-  const glm::dvec3 got(map.reference.x, map.reference.y, map.reference.z);
-  if (!(glm::length(got - reference) <= kSameReference))
-    throw Error(ErrorCode::Internal, "the bake returned a map around " + describe(got) +
+  if (!(glm::length(map.reference - reference) <= kSameReference))
+    throw Error(ErrorCode::Internal, "the bake returned a map around " + describe(map.reference) +
                                          " instead of " + describe(reference));
 }
 
@@ -36,6 +35,7 @@ struct MapFollower::Shared {
   bool running = false;
   glm::dvec3 reference{0.0};                  // of the running or last bake
   std::shared_ptr<const RetargetMap> result;  // a finished bake not yet swapped in
+  std::shared_ptr<const DisplayConfig> display;  // the config `result` was baked for
   std::optional<std::string> error;           // a failed bake not yet reported
 };
 
@@ -53,6 +53,7 @@ MapFollower::MapFollower(DisplayConfig config, BakeFunction bake, MapFollowerOpt
   checkBakedMap(first, config_.reference);
   reference_ = config_.reference;
   current_ = std::make_shared<const RetargetMap>(std::move(first));
+  currentDisplay_ = std::make_shared<const DisplayConfig>(config_);
 }
 
 MapFollower::MapFollower(DisplayConfig config, RetargetMap initial, BakeFunction bake,
@@ -60,9 +61,11 @@ MapFollower::MapFollower(DisplayConfig config, RetargetMap initial, BakeFunction
     : config_(std::move(config)), bake_(std::move(bake)), options_(options),
       shared_(std::make_shared<Shared>()) {
   if (!bake_) throw Error(ErrorCode::InvalidInput, "MapFollower needs a bake function");
-  reference_ = glm::dvec3(initial.reference.x, initial.reference.y, initial.reference.z);
+  reference_ = initial.reference;
   checkBakedMap(initial, reference_);
   current_ = std::make_shared<const RetargetMap>(std::move(initial));
+  currentDisplay_ = std::make_shared<const DisplayConfig>(
+      reference_ == config_.reference ? config_ : withReference(config_, reference_));
 }
 
 MapFollower::~MapFollower() {
@@ -79,12 +82,14 @@ void MapFollower::startBake(const glm::dvec3& reference) {
   // The thread owns copies of everything it touches, and the shared state through a shared_ptr.
   worker_ = std::thread([shared = shared_, bake = bake_, config = config_, reference] {
     std::shared_ptr<const RetargetMap> result;
+    std::shared_ptr<const DisplayConfig> display;
     std::optional<std::string> error;
     try {
-      const DisplayConfig moved = withReference(config, reference);
-      RetargetMap map = bake(moved, reference);
+      auto moved = std::make_shared<const DisplayConfig>(withReference(config, reference));
+      RetargetMap map = bake(*moved, reference);
       checkBakedMap(map, reference);
       result = std::make_shared<const RetargetMap>(std::move(map));
+      display = std::move(moved);
     } catch (const std::exception& e) {
       error = e.what();
     } catch (...) {
@@ -92,6 +97,7 @@ void MapFollower::startBake(const glm::dvec3& reference) {
     }
     const std::lock_guard lock(shared->mutex);
     shared->result = std::move(result);
+    shared->display = std::move(display);
     shared->error = std::move(error);
     shared->running = false;
     shared->idle.notify_all();
@@ -100,6 +106,7 @@ void MapFollower::startBake(const glm::dvec3& reference) {
 
 void MapFollower::collectFinishedBake(FollowerFrame& frame) {
   std::shared_ptr<const RetargetMap> result;
+  std::shared_ptr<const DisplayConfig> display;
   std::optional<std::string> error;
   glm::dvec3 bakedAt;
   {
@@ -107,12 +114,14 @@ void MapFollower::collectFinishedBake(FollowerFrame& frame) {
     frame.baking = shared_->running;
     if (shared_->running || !worker_.joinable()) return;
     result = std::move(shared_->result);
+    display = std::move(shared_->display);
     error = std::move(shared_->error);
     bakedAt = shared_->reference;
   }
   worker_.join();  // the thread has finished its bake; it is only returning
   if (result) {
     current_ = std::move(result);
+    currentDisplay_ = std::move(display);
     reference_ = bakedAt;
     ++generation_;
     ++stats_.bakesSucceeded;
@@ -139,6 +148,7 @@ FollowerFrame MapFollower::beginFrame(const HeadPose& head) {
     frame.baking = true;
   }
   frame.map = current_;
+  frame.display = currentDisplay_;
   frame.generation = generation_;
   return frame;
 }

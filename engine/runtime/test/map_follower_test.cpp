@@ -94,6 +94,10 @@ void expectValidFrame(const FollowerFrame& frame, const glm::dvec3& reference) {
   EXPECT_EQ(frame.map->resolution(), kResolution);
   EXPECT_TRUE(vecNear({frame.map->reference.x, frame.map->reference.y, frame.map->reference.z},
                       reference));
+  // The frame's display is the one the map renders with: its reference is the map's.
+  ASSERT_TRUE(frame.display);
+  EXPECT_TRUE(vecNear(frame.display->reference, reference));
+  EXPECT_EQ(frame.display->walls.size(), shippedConfig("cave5.json").walls.size());
   const Vec3d d = normalized(Vec3d{0.3, -0.2, -1.0});
   const std::optional<Vec3d> v = frame.map->toVirtual(d);
   ASSERT_TRUE(v);
@@ -274,4 +278,14 @@ TEST(MapFollower, WithReferenceMovesTheReferenceAndRehashes) {
   EXPECT_EQ(moved.walls.size(), cave.walls.size());
   EXPECT_EQ(withReference(moved, cave.reference).hash, cave.hash);
   EXPECT_THROW((void)withReference(cave, {0, -1.6, 0}), Error);  // below the floor
+}
+
+TEST(MapFollower, AMapBakedElsewhereComesWithTheDisplayMovedToItsReference) {
+  FakeBaker baker;
+  const DisplayConfig cave = shippedConfig("cave5.json");
+  MapFollower follower(cave, identityAt({0.2, 0, -0.1}), baker.function(), radius(0.5));
+  const FollowerFrame frame = follower.beginFrame(at(0.2, 0, -0.1));
+  expectValidFrame(frame, {0.2, 0, -0.1});
+  EXPECT_NE(frame.display->hash, cave.hash);  // re-hashed: a different render config
+  EXPECT_TRUE(vecNear(follower.config().reference, cave.reference));  // the original stays
 }

@@ -24,7 +24,7 @@
 namespace confvis {
 
 struct BakeOptions {
-  Vec3d reference{};  // the reference point stored in the map (DisplayMap is relative to it)
+  glm::dvec3 reference{};  // the reference point stored in the map (DisplayMap is relative to it)
   int threads = 0;    // 0: one per hardware thread
   bool showProgress = false;
 };

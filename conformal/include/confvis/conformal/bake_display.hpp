@@ -28,7 +28,7 @@ namespace confvis {
 struct BakeDisplayOptions {
   std::optional<int> resolution;      // texels per face; default: config.cubeResolution
   std::optional<double> edgeLength;   // metres; default: config.edgeLength
-  std::optional<Vec3d> reference;     // default: config.reference
+  std::optional<glm::dvec3> reference;     // default: config.reference
   bool useCache = true;
   std::filesystem::path cacheDirectory;  // empty: defaultCacheDirectory()
   int threads = 0;                       // 0: one per hardware thread

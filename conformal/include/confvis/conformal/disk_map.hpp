@@ -70,13 +70,13 @@ DiskMap computeDiskMap(const TriMesh& mesh, const DiskMapOptions& options = {});
 // The same for points and counter-clockwise triangles, without building a half-edge mesh (the
 // display map's ~3k-vertex disks are mapped at every re-bake). Also throws Error(InvalidInput)
 // for an edge in more than two triangles or inconsistent orientations.
-DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+DiskMap computeDiskMap(const std::vector<glm::dvec3>& points,
                        const std::vector<std::array<int, 3>>& triangles,
                        const DiskMapOptions& options = {});
 
 // The same on `whole` = buildTriangulation(points.size(), triangles), for a caller that needs
 // the triangulation before the map (to choose the removed face on it).
-DiskMap computeDiskMap(const std::vector<Vec3d>& points,
+DiskMap computeDiskMap(const std::vector<glm::dvec3>& points,
                        const std::vector<std::array<int, 3>>& triangles,
                        const IntrinsicTriangulation& whole, const DiskMapOptions& options = {});
 

@@ -22,7 +22,7 @@ namespace confvis {
 
 // A triangulated topological disk on the unit sphere with a per-vertex disk coordinate.
 struct SphereDiskMesh {
-  std::vector<Vec3d> sphere;                  // unit directions from the reference point
+  std::vector<glm::dvec3> sphere;                  // unit directions from the reference point
   std::vector<std::complex<double>> disk;     // aligned disk coordinates, |z| <= 1, same size
   // Counter-clockwise as seen from the reference point (inside the sphere), like a viewer sees
   // the walls; both meshes use this orientation, so T_ray preserves orientation.

@@ -57,7 +57,7 @@ IntrinsicTriangulation withoutFace(const IntrinsicTriangulation& whole, int face
 // Euclidean edge lengths of `mesh` in the triangulation's edge order.
 std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri, const TriMesh& mesh);
 std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri,
-                                        const std::vector<Vec3d>& points);
+                                        const std::vector<glm::dvec3>& points);
 
 // requireDisk for a triangulation: one component, one boundary loop, Euler characteristic 1,
 // every vertex a single fan of triangles. Throws Error(InvalidInput) naming `what`.

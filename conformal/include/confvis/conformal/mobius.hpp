@@ -8,6 +8,7 @@ namespace confvis::conformal {
 
 using Complex = std::complex<double>;
 
+// Thread-safety: an immutable value; call it from any number of threads at once.
 class Mobius {
  public:
   Mobius() = default;  // identity

@@ -17,7 +17,7 @@ void writeObjWithDiskCoordinates(const std::filesystem::path& path, const TriMes
 
 // The same for an indexed triangle list (e.g. a SphereDiskMesh), faces as given.
 void writeObjWithDiskCoordinates(const std::filesystem::path& path,
-                                 const std::vector<Vec3d>& positions,
+                                 const std::vector<glm::dvec3>& positions,
                                  const std::vector<std::array<int, 3>>& triangles,
                                  const std::vector<std::complex<double>>& uv);
 

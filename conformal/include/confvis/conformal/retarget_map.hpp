@@ -16,23 +16,23 @@
 namespace confvis {
 
 struct RetargetMap {
-  Vec3d reference;  // c, metres, physical frame
+  glm::dvec3 reference{0.0};  // c, metres, physical frame
   CubeMap ray;
   CubeMap geom;
 
   // Bilinear lookup in `ray`, renormalised. nullopt where the interpolated alpha is below 0.5
   // (no display behind d). Throws Error(InvalidInput) for a zero or non-finite direction.
-  std::optional<Vec3d> toVirtual(const Vec3d& physicalDir) const;
+  std::optional<glm::dvec3> toVirtual(const glm::dvec3& physicalDir) const;
   // Lookup in `geom`, renormalised. nullopt where v is outside the source field. Bilinear, except
   // where the footprint straddles the source's cut (geom jumps there): the texels across the cut
   // are replaced by extrapolations of v's side, so v keeps its own side of the display.
-  std::optional<Vec3d> toPhysical(const Vec3d& virtualDir) const;
+  std::optional<glm::dvec3> toPhysical(const glm::dvec3& virtualDir) const;
 
   int resolution() const { return ray.faceSize; }
 
   // The identity map of a 6-sided CAVE (both maps store their own texel direction, alpha 1):
   // what a complete display bakes to, and a stand-in for tests of the renderers.
-  static RetargetMap identity(int resolution, const Vec3d& reference = {});
+  static RetargetMap identity(int resolution, const glm::dvec3& reference = {});
 };
 
 // Fills every texel of `map` with f(unit direction of the texel centre) -> (direction, valid).

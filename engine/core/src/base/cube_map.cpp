@@ -12,7 +12,7 @@ namespace {
 
 // A face's outward normal and the directions in which its texel x and y grow.
 struct FaceFrame {
-  Vec3d normal, right, down;
+  Vec3d normal{0.0}, right{0.0}, down{0.0};
 };
 using FrameTable = std::array<FaceFrame, 6>;
 

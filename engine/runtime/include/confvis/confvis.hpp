@@ -1,9 +1,18 @@
 #pragma once
-// The confvis public API in one include (link confvis::confvis). Conformal visualization for
+// The confvis public API in one include (link confvis::confvis): every public header of every
+// module (tests/examples/umbrella_header_test.cpp checks that none is left out). The headers of
+// the Embree scene internals and of the Vulkan warp interface come in where the application can
+// compile them (Embree's and Vulkan's headers installed). Conformal visualization for
 // partially-immersive displays: load a display (confvis JSON, SGCT, ParaView .pvx), track the
 // head, get per-wall per-eye off-axis views, keep a baked RetargetMap following the head, and
 // render through it with a RenderBackend or sample it in your own renderer.
 // Integration guide: README.md, "Using confvis in an application".
+//
+// Thread-safety: the value types (DisplayConfig, Wall, HeadPose, WallView, RetargetMap, CubeMap,
+// ImageRGBA, Scene, RenderSettings, RenderResult, ...) are safe to read from any number of threads
+// at once and need exclusive access to be changed; free functions share no state beyond their
+// arguments and the files they read or write (bakes and renders start worker threads of their
+// own). Every class states its own.
 
 // Errors, images, cube maps, EXR/PNG files.
 #include "confvis/base/atomic_file.hpp"
@@ -19,9 +28,11 @@
 #include "confvis/engine/builtin_scenes.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/display_import.hpp"
+#include "confvis/engine/number_text.hpp"
 #include "confvis/engine/scene.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "confvis/runtime/tracker.hpp"
+#include "confvis/runtime/tracker_factory.hpp"
 #include "confvis/engine/version.hpp"
 #include "confvis/engine/view.hpp"
 #include "confvis/engine/viewer.hpp"
@@ -35,13 +46,44 @@
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
+// The conformal machinery itself: meshes, circle-packing metrics, the Ricci flow, disk maps,
+// Mobius alignment, distortion measures, display templates.
+#include "confvis/conformal/circle_packing.hpp"
+#include "confvis/conformal/disk_map.hpp"
+#include "confvis/conformal/display_template.hpp"
+#include "confvis/conformal/distortion.hpp"
+#include "confvis/conformal/intrinsic_triangulation.hpp"
+#include "confvis/conformal/mesh.hpp"
+#include "confvis/conformal/mesh_generators.hpp"
+#include "confvis/conformal/mobius.hpp"
+#include "confvis/conformal/obj_output.hpp"
+#include "confvis/conformal/ricci_flow.hpp"
+
 // Keeping the map around the tracked head.
+#include "confvis/runtime/background_bake.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/runtime/tracker_factory.hpp"
 #include "confvis/runtime/udp_tracker.hpp"
 
-// Rendering through the map (backends: Embree, Vulkan).
+// Rendering through the map (backends: Embree, Vulkan): render plans and eyeName(), typed frame
+// statistics (frameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).
+#include "confvis/backends/analytic_maps.hpp"
+#include "confvis/backends/conformal_warp.hpp"
+#include "confvis/backends/frame_stats.hpp"
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/backends/render_output.hpp"
+#include "confvis/backends/render_plan.hpp"
+#include "confvis/backends/retarget_map_files.hpp"
+#include "confvis/backends/wall_map_grid.hpp"
 #include "confvis/backends/embree/embree_backend.hpp"
 #include "confvis/backends/vulkan_backend.hpp"
+#include "confvis/backends/vulkan/device_requirements.hpp"
+#if __has_include(<embree3/rtcore.h>)
+#include "confvis/backends/embree/embree_device.hpp"
+#include "confvis/backends/embree/embree_scene.hpp"
+#endif
+// An application's own Vulkan renderer: the warp's descriptor layout and upload data, with the
+// GLSL include confvis_warp.glsl (installed in ${confvis_SHADER_DIR}).
+#if __has_include(<vulkan/vulkan.h>)
+#include "confvis/backends/vulkan/warp_interface.hpp"
+#endif

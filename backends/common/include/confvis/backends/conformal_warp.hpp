@@ -22,6 +22,8 @@ std::uint64_t mixHash(std::uint64_t hash, double value);
 // caches of values derived from it (once per frame: about 1 ms for 256^2 texels a face).
 std::uint64_t fingerprintCubeMap(const CubeMap& map, const glm::dvec3& reference);
 
+// Thread-safety: immutable once built (the map it refers to must not change while it lives);
+// its const functions may be called from any number of threads at once.
 class ConformalWarp {
  public:
   // Checks the map once (well-formed faces, finite reference). Keeps a reference to `map`.

@@ -59,12 +59,21 @@ struct RenderResult {
   nlohmann::json stats = nlohmann::json::object();  // backend, seconds, rays per second, ...
 };
 
+// Thread-safety: not thread-safe; call a backend from one thread at a time (it keeps the scene,
+// the device and per-frame state). Separate backends may render on separate threads. The config,
+// map and scene handed in are only read, and may be shared with other readers meanwhile.
 class RenderBackend {
  public:
   virtual ~RenderBackend() = default;
   virtual std::string name() const = 0;
   // Builds acceleration structures / uploads buffers; call once per scene. Keeps no reference.
   virtual void setScene(const Scene& scene) = 0;
+  // Does now what the first frame of `settings` on `config` would do once (the Vulkan backend
+  // compiles its pipelines on first use: 12.8 s on lavapipe), so that a frame loop's first
+  // frame costs what the others do. Call after setScene, before the loop, with the loop's
+  // settings. This default renders one frame and drops it: conformal mode through the identity
+  // map around config.reference, so no bake is needed.
+  virtual void prepare(const DisplayConfig& config, const RenderSettings& settings);
   // `map` is required in conformal mode (Error(InvalidInput) otherwise) and ignored in plain mode.
   // Unknown wall names give Error(InvalidInput) naming the wall.
   virtual RenderResult render(const DisplayConfig& config, const RetargetMap* map,

@@ -14,6 +14,7 @@
 
 namespace confvis {
 
+// Thread-safety: immutable once built; at() may be called from any number of threads at once.
 class WallMapGrid {
  public:
   // Samples spaced about `spacing` wall pixels apart (exactly dividing the wall), corners

@@ -48,15 +48,15 @@ struct CubeMap {
 // --- OpenEXR convention (confvis's own layout) ---
 // Direction through the centre of texel (x, y) of `face`, as a point on the cube [-1, 1]^3
 // (not normalised: exact, and comparable with Imf::CubeMap::direction).
-Vec3d texelDirection(CubeFace face, int x, int y, int n);
+glm::dvec3 texelDirection(CubeFace face, int x, int y, int n);
 // Face and continuous texel coordinates (0..N) hit by direction d. Ties between axes go to x,
 // then y, as in Imf::CubeMap::faceAndPixelPosition. Throws Error(InvalidInput) for a zero or
 // non-finite direction.
-void directionToTexel(const Vec3d& d, int n, CubeFace& face, double& x, double& y);
+void directionToTexel(const glm::dvec3& d, int n, CubeFace& face, double& x, double& y);
 
 // --- Vulkan convention ("Cube Map Face Selection": s = (sc/|ma| + 1)/2, row 0 at t = 0) ---
-Vec3d vulkanTexelDirection(CubeFace face, int x, int y, int n);
-void vulkanDirectionToTexel(const Vec3d& d, int n, CubeFace& face, double& x, double& y);
+glm::dvec3 vulkanTexelDirection(CubeFace face, int x, int y, int n);
+void vulkanDirectionToTexel(const glm::dvec3& d, int n, CubeFace& face, double& x, double& y);
 // The texel of the Vulkan layout that holds texel (x, y) of the same face of the EXR layout.
 void exrToVulkanTexel(CubeFace face, int x, int y, int n, int& vulkanX, int& vulkanY);
 // Reorients every face so that a Vulkan samplerCube looking up d returns what the EXR-layout map
@@ -65,12 +65,12 @@ CubeMap toVulkanLayout(const CubeMap& exrLayout);
 
 // --- Sampling (EXR layout). Both throw Error(InvalidInput) for a zero or non-finite direction
 // or a malformed map. ---
-std::array<float, 4> sampleNearest(const CubeMap& map, const Vec3d& dir);
+std::array<float, 4> sampleNearest(const CubeMap& map, const glm::dvec3& dir);
 // Bilinear across face edges, second order everywhere: a footprint texel that falls off the face
 // stands for the direction of its centre on the face's plane extended past the edge, and takes
 // the value there interpolated on the neighbouring face(s) (texelAcrossFaceEdge). Seamless: the
 // error at edges and corners is no larger than inside a face.
-std::array<float, 4> sampleBilinear(const CubeMap& map, const Vec3d& dir);
+std::array<float, 4> sampleBilinear(const CubeMap& map, const glm::dvec3& dir);
 
 struct TexelRef {
   CubeFace face = CubeFace::PosX;

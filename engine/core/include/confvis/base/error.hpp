@@ -15,6 +15,7 @@ enum class ErrorCode {
   Internal,         // a broken invariant inside confvis: a bug
 };
 
+// Thread-safety: an immutable value; copy and read it from any thread.
 class Error : public std::runtime_error {
  public:
   Error(ErrorCode code, const std::string& message) : std::runtime_error(message), code_(code) {}

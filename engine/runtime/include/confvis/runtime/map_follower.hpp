@@ -5,18 +5,28 @@
 // the current map's reference, and swaps the new map in at a frame boundary: beginFrame() hands
 // out one map for the whole frame and never waits for a bake.
 //
-//   MapFollower follower(config, bake);                // first bake on this thread
-//   for (;;) {
-//     const HeadPose head = tracker.latest().value_or(TrackedPose{}).head;
-//     const FollowerFrame frame = follower.beginFrame(head);
-//     render(config, *frame.map, head);                 // same map for every wall and eye
-//     for (const std::string& e : follower.takeErrors()) log(e);
+// example: map_follower_loop (compiled and run by the test suite, tests/examples/)
+//   MapFollower follower(config, bake);  // the first bake runs on this thread
+//   while (running()) {
+//     const std::optional<TrackedPose> pose = tracker.latest();  // empty before the first pose
+//     const HeadPose head = pose ? pose->head : HeadPose{config.reference};
+//     const FollowerFrame frame = follower.beginFrame(head);  // never waits for a bake
+//     settings.head = head;
+//     settings.camera.position = frame.display->reference;  // the world stays put as c moves
+//     backend.renderInto(*frame.display, frame.map.get(), settings, images);
+//     for (const std::string& error : follower.takeErrors()) log(error);
 //   }
 //
-// The bake is injected: the real one is confvis::bakeDisplay (conformal/bake.hpp), wired as
-// [](const DisplayConfig& c, const glm::dvec3&) { return bakeDisplay(c); }, since the config
-// handed to it already has its reference moved to the head. Not thread-safe: call it from the
-// render thread; the bakes run on their own thread, one at a time.
+// frame.display is the follower's display with its reference moved to the map's: the pair a
+// RenderBackend accepts (it refuses a map baked around another point than the display's
+// reference). The bake is injected: the real one is confvis::bakeDisplay
+// (conformal/bake_display.hpp), wired as
+// [](const DisplayConfig& c, const glm::dvec3&) { return bakeDisplay(c, {.useCache = false}).map; },
+// since the config handed to it already has its reference moved to the head.
+//
+// Thread-safety: not thread-safe; call a MapFollower from one thread (the render thread). The
+// bakes run on their own thread, one at a time. A FollowerFrame's map and display are immutable
+// and may be shared with other threads for as long as they are held.
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -45,6 +55,9 @@ struct MapFollowerOptions {
 
 struct FollowerFrame {
   std::shared_ptr<const RetargetMap> map;  // never null; stays valid while the frame holds it
+  // The follower's display with its reference at map->reference (never null): render `map`
+  // with this display, not the one the follower was made with, once a re-bake has swapped in.
+  std::shared_ptr<const DisplayConfig> display;
   std::uint64_t generation = 0;            // 0: the initial map; +1 at every swap
   bool swapped = false;                    // this frame is the first to use `map`
   bool baking = false;                     // a re-bake is running in the background
@@ -98,6 +111,7 @@ class MapFollower {
   BakeFunction bake_;
   MapFollowerOptions options_;
   std::shared_ptr<const RetargetMap> current_;
+  std::shared_ptr<const DisplayConfig> currentDisplay_;  // config_ with current_'s reference
   glm::dvec3 reference_{0.0};
   std::uint64_t generation_ = 0;
   std::optional<glm::dvec3> failedReference_;

@@ -26,6 +26,8 @@ struct TrackerStatus {
   bool lost = false;                  // no pose for a while: latest() keeps the last one
 };
 
+// Thread-safety: latest() and status() never block; an implementation must allow them to be called
+// from the render thread while its own thread (a network listener) receives poses.
 class Tracker {
  public:
   virtual ~Tracker() = default;
@@ -50,6 +52,7 @@ struct PathKey {
 //   ...
 // Positions in metres in the display's physical frame; (qw,qx,qy,qz) a rotation quaternion
 // (normalised on reading; identity looks down -z with +y up). Sample: configs/paths/.
+// Thread-safety: immutable once made; at() may be called from any number of threads at once.
 class RecordedPath {
  public:
   // Throws Error(InvalidInput) naming `sourceName` and the key for an empty path, times that do
@@ -73,6 +76,7 @@ class RecordedPath {
 
 // Plays a RecordedPath against a clock. The default clock is real time since construction; tests
 // and offline renders pass their own (e.g. frame number / frame rate).
+// Thread-safety: latest() and status() may be called from any thread, if the clock may.
 class RecordedPathTracker : public Tracker {
  public:
   using Clock = std::function<double()>;  // seconds

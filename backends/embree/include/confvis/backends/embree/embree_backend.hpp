@@ -23,6 +23,8 @@ struct EmbreeOptions {
   bool baselineShading = false;
 };
 
+// Thread-safety: as RenderBackend (one thread at a time); each render runs on `threads` TBB
+// worker threads of its own.
 class EmbreeBackend final : public RenderBackend {
  public:
   explicit EmbreeBackend(const EmbreeOptions& options = {});

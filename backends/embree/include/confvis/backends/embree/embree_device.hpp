@@ -9,6 +9,8 @@
 
 namespace confvis {
 
+// Thread-safety: Embree calls onError from any thread (recorded under a mutex); check() from one
+// thread at a time, the thread that drives the device.
 class EmbreeDevice {
  public:
   // Throws Error(DeviceUnsupported) when Embree cannot create a device (e.g. unsupported CPU).

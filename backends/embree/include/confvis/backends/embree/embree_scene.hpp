@@ -14,6 +14,8 @@
 
 namespace confvis {
 
+// Thread-safety: immutable once built; rays may be traced through handle() from any number of
+// threads at once (Embree committed scenes are thread-safe to intersect).
 class EmbreeScene {
  public:
   // Validates the scene (validateScene) and builds the BVH; Embree errors become Error.
