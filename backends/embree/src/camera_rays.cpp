@@ -114,6 +114,43 @@ bool CameraRays::straightDirection(double px, double py, glm::vec3& direction) c
   return true;
 }
 
+bool CameraRays::gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const {
+  // Rows of the view matrix's rotation: the wall's right, up and normal (WallView::rayDirection).
+  const glm::dmat4& v = view_.view;
+  const glm::dvec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]),
+      normal(v[0][2], v[1][2], v[2][2]);
+  const glm::dvec3 fromEye = reference_ - view_.eye_position;
+  const double towardWall = glm::dot(fromC, normal);
+  if (!(towardWall < 0.0)) return false;
+  const double t = (-view_.nearDistance - glm::dot(fromEye, normal)) / towardWall;
+  if (!(t > 0.0)) return false;
+  const glm::dvec3 onWall = fromEye + t * fromC;  // relative to the eye
+  const Wall& wall = *view_.wall;
+  const double px = (glm::dot(onWall, right) - view_.left) / (view_.right - view_.left) * wall.width;
+  const double py = (view_.top - glm::dot(onWall, up)) / (view_.top - view_.bottom) * wall.height;
+  if (!(px >= 0.0 && py >= 0.0 && px <= wall.width && py <= wall.height)) return false;
+  direction = glm::normalize(
+      glm::dvec3(grid_->at(static_cast<float>(px), static_cast<float>(py)).direction));
+  return true;
+}
+
+bool CameraRays::tailOnly(const glm::dvec3& u, RayPath& path) const {
+  const glm::dvec3 a = view_.eye_position - reference_;
+  const double along = glm::dot(a, u);
+  const glm::dvec3 perpendicular = a - along * u;
+  const double h = glm::length(perpendicular);
+  // The curve's vertices lie between |e - c| and h / sin(kAsymptoteAngle) from c (curvedRay).
+  if (!(glm::length(a) < emptyRadius_ && h / std::sin(kAsymptoteAngle) < emptyRadius_)) return false;
+  if (!(std::atan2(h, along) > kAsymptoteAngle)) return false;  // on a line through c: curvedRay
+  const glm::dvec3 last = perpendicular + (h / std::tan(kAsymptoteAngle)) * u;  // relative to c
+  glm::dvec3 lastDirection, tail;
+  if (!gridDirection(last, lastDirection) || !gridDirection(u, tail)) return false;
+  path.vertexCount = 1;
+  path.vertices[0] = place(reference_ + glm::length(last) * lastDirection);
+  path.tail = turn(tail);
+  return true;
+}
+
 double CameraRays::curvedReach() const {
   return glm::length(view_.eye_position - reference_) / std::sin(kAsymptoteAngle);
 }
@@ -131,6 +168,7 @@ void CameraRays::make(double px, double py, RayPath& path) const {
   const glm::dvec3 eye = view_.eye_position;
   // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)
   const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
+  if (tailOnly(glm::normalize(toWall), path)) return;
   std::array<glm::dvec3, kMaxCurvedSegments + 2> vertices;
   glm::dvec3 tail;
   path.vertexCount =

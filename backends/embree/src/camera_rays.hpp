@@ -86,6 +86,14 @@ class CameraRays {
 
  private:
   glm::vec3 place(const glm::dvec3& physicalPoint) const;
+  // F(dir(fromC)) from this wall's map grid where the ray from c along fromC meets the wall
+  // (bilinear over samples half a map texel apart: within ~1e-5 rad of the cube map's lookup,
+  // at a fraction of its cost); false where it meets the wall's plane outside the wall.
+  bool gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const;
+  // Exact stereo rays whose whole bent part lies in the empty ball: the tail alone, from the
+  // curve's last vertex, both looked up in the grid (curvedRay's vertex and tail up to the
+  // grid's accuracy). False where the curve leaves the ball or a lookup misses the wall.
+  bool tailOnly(const glm::dvec3& unitDirection, RayPath& path) const;
   glm::vec3 turn(const glm::dvec3& physicalDirection) const;
 
   WallView view_;
