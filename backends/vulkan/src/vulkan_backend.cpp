@@ -50,6 +50,7 @@ class VulkanBackend final : public RenderBackend {
   void setScene(const Scene& scene) override {
     scene_.reset();  // free the old buffers first
     split_.reset();
+    checkedCentre_.reset();
     scene_.emplace(context_, pipelines_, scene);
     source_ = scene;
   }
@@ -125,6 +126,10 @@ class VulkanBackend final : public RenderBackend {
     const glm::dvec3 c(map.reference.x, map.reference.y, map.reference.z);
     const glm::dvec3 centre =
         settings.camera.position + settings.camera.rotation() * (c - config.reference);
+    // Frames from the same centre (a tracked head without navigation) decide as the last one
+    // did, without the pass over every triangle.
+    if (checkedCentre_ == centre) return split_ ? *split_->gpu : *scene_;
+    checkedCentre_ = centre;
     if (!options_.splitWideTriangles ||
         !vulkan::hasWideTriangles(source_, centre, kWidestTriangleDegrees)) {
       split_.reset();
@@ -150,6 +155,7 @@ class VulkanBackend final : public RenderBackend {
   std::optional<vulkan::GpuScene> scene_;
   Scene source_;                     // the scene as given, for splits
   std::optional<SplitScene> split_;  // the split the last conformal frame drew, if any
+  std::optional<glm::dvec3> checkedCentre_;  // the warp's centre split_ was decided for
 };
 
 }  // namespace
