@@ -88,6 +88,27 @@ void setUpStraightPacket(const CameraRays& rays, const TileJob& job, const Packe
   }
 }
 
+// Exact stereo rays: the packet's paths; where every lit one is a straight tail (its bent part
+// lies where no scene is, CameraRays::setEmptyRadius), they are written into hits as straight
+// rays and true is returned, so that they trace as plain rays do.
+bool setUpPaths(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
+                std::array<RayPath, kPacketSize>& paths, PacketHits& hits) {
+  bool straight = true;
+  for (int lane = 0; lane < samples.count; ++lane) {
+    const glm::dvec2 p = lanePosition(job, samples, lane);
+    RayPath& path = paths[static_cast<std::size_t>(lane)];
+    rays.make(p.x, p.y, path);
+    straight = straight && (!path.lit || path.vertexCount == 1);
+  }
+  if (!straight) return false;
+  hits.valid.fill(0);
+  for (int lane = 0; lane < samples.count; ++lane) {
+    const RayPath& path = paths[static_cast<std::size_t>(lane)];
+    if (path.lit) hits.setStraightRay(lane, path.vertices[0], path.tail);
+  }
+  return true;
+}
+
 }  // namespace
 
 std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays,
@@ -98,10 +119,8 @@ std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays
     return traceStraight(scene.handle(), samples.count, samples.columns, hits);
   }
   std::array<RayPath, kPacketSize> paths;
-  for (int lane = 0; lane < samples.count; ++lane) {
-    const glm::dvec2 p = lanePosition(job, samples, lane);
-    rays.make(p.x, p.y, paths[static_cast<std::size_t>(lane)]);
-  }
+  if (setUpPaths(rays, job, samples, paths, hits))
+    return traceStraight(scene.handle(), samples.count, samples.columns, hits);
   return tracePaths(scene.handle(), paths.data(), samples.count, samples.columns, hits);
 }
 
@@ -109,10 +128,22 @@ std::uint64_t traceCameraPacketPair(const EmbreeScene& scene, const CameraRays& 
                                     const TileJob& job, const std::array<PacketSamples, 2>& samples,
                                     std::array<PacketHits, 2>& hits) {
   if (samples[1].count == 0) return traceCameraPacket(scene, rays, job, samples[0], hits[0]);
-  if (!rays.straight())
-    return traceCameraPacket(scene, rays, job, samples[0], hits[0]) +
-           traceCameraPacket(scene, rays, job, samples[1], hits[1]);
-  for (int half = 0; half < 2; ++half) setUpStraightPacket(rays, job, samples[half], hits[half]);
+  if (!rays.straight()) {
+    std::array<std::array<RayPath, kPacketSize>, 2> paths;
+    const bool straight0 = setUpPaths(rays, job, samples[0], paths[0], hits[0]);
+    const bool straight1 = setUpPaths(rays, job, samples[1], paths[1], hits[1]);
+    if (!straight0 || !straight1) {
+      const auto trace = [&](int half, bool straight) {
+        return straight ? traceStraight(scene.handle(), samples[half].count,
+                                        samples[half].columns, hits[half])
+                        : tracePaths(scene.handle(), paths[half].data(), samples[half].count,
+                                     samples[half].columns, hits[half]);
+      };
+      return trace(0, straight0) + trace(1, straight1);
+    }
+  } else {
+    for (int half = 0; half < 2; ++half) setUpStraightPacket(rays, job, samples[half], hits[half]);
+  }
   return traceStraightPair(scene.handle(), {samples[0].count, samples[1].count},
                            {samples[0].columns, samples[1].columns}, hits, scene.nativeRay16());
 }

@@ -8,26 +8,22 @@ namespace confvis::embree {
 
 namespace {
 
-// The angle (seen from c) at which the curved ray hands over to its straight asymptote. The
-// curve's distance from its asymptote there is about h * angle * |F''| / 2, with h = |e - c|
-// perpendicular to the ray (at most half the eye separation): ~0.02 mm for a 64 mm baseline.
-constexpr double kAsymptoteAngle = 1e-3;
 // Eyes closer than this to c are the centre eye (metres).
 constexpr double kCentreEyeTolerance = 1e-9;
 
 }  // namespace
 
 int curvedRay(const ConformalWarp& warp, const glm::dvec3& eye, const glm::dvec3& u,
-              int segments, glm::dvec3* vertices, glm::dvec3& tail) {
+              int segments, glm::dvec3* vertices, glm::dvec3& tail, double emptyRadius) {
   const glm::dvec3 c = warp.reference();
   const glm::dvec3 a = eye - c;
   const double along = glm::dot(a, u);
   const glm::dvec3 perpendicular = a - along * u;
   const double h = glm::length(perpendicular);
   tail = warp.direction(u);
-  vertices[0] = warp.warpPoint(eye);
   const double eyeAngle = std::atan2(h, along);  // angle between u and dir(e - c), in [0, pi]
   if (h <= 1e-12 * (1.0 + glm::length(a)) || eyeAngle <= kAsymptoteAngle) {
+    vertices[0] = warp.warpPoint(eye);
     // The ray lies on a line through c: W maps each half-line from c to a straight half-line.
     if (along >= 0.0) return 1;
     vertices[1] = c;
@@ -38,12 +34,27 @@ int curvedRay(const ConformalWarp& warp, const glm::dvec3& eye, const glm::dvec3
   const glm::dvec3 foot = c + perpendicular;
   const double ratio = std::pow(kAsymptoteAngle / eyeAngle, 1.0 / segments);
   double angle = eyeAngle;
-  for (int i = 1; i <= segments; ++i) {
-    angle *= ratio;
-    const double s = h * std::cos(angle) / std::sin(angle);
-    vertices[i] = warp.warpPoint(foot + s * u);
+  // Vertex i lies h / sin(angle_i) from c: the leading vertices with angle_i above asin(h / R)
+  // lie inside the empty ball of radius R (the eye too, where |e - c| < R), and so do the
+  // segments between them (the ball is convex). The curve starts at the last of them.
+  int first = 0;
+  if (glm::length(a) < emptyRadius) {
+    const double insideAbove = std::asin(std::min(1.0, h / emptyRadius));
+    while (first < segments && angle * ratio > insideAbove) {
+      angle *= ratio;
+      ++first;
+    }
   }
-  return segments + 1;
+  const auto curvePoint = [&](double at) {
+    return warp.warpPoint(foot + (h * std::cos(at) / std::sin(at)) * u);
+  };
+  int count = 0;
+  vertices[count++] = first == 0 ? warp.warpPoint(eye) : curvePoint(angle);
+  for (int i = first + 1; i <= segments; ++i) {
+    angle *= ratio;
+    vertices[count++] = curvePoint(angle);
+  }
+  return count;
 }
 
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
@@ -103,6 +114,47 @@ bool CameraRays::straightDirection(double px, double py, glm::vec3& direction) c
   return true;
 }
 
+bool CameraRays::gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const {
+  // Rows of the view matrix's rotation: the wall's right, up and normal (WallView::rayDirection).
+  const glm::dmat4& v = view_.view;
+  const glm::dvec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]),
+      normal(v[0][2], v[1][2], v[2][2]);
+  const glm::dvec3 fromEye = reference_ - view_.eye_position;
+  const double towardWall = glm::dot(fromC, normal);
+  if (!(towardWall < 0.0)) return false;
+  const double t = (-view_.nearDistance - glm::dot(fromEye, normal)) / towardWall;
+  if (!(t > 0.0)) return false;
+  const glm::dvec3 onWall = fromEye + t * fromC;  // relative to the eye
+  const Wall& wall = *view_.wall;
+  const double px = (glm::dot(onWall, right) - view_.left) / (view_.right - view_.left) * wall.width;
+  const double py = (view_.top - glm::dot(onWall, up)) / (view_.top - view_.bottom) * wall.height;
+  if (!(px >= 0.0 && py >= 0.0 && px <= wall.width && py <= wall.height)) return false;
+  direction = glm::normalize(
+      glm::dvec3(grid_->at(static_cast<float>(px), static_cast<float>(py)).direction));
+  return true;
+}
+
+bool CameraRays::tailOnly(const glm::dvec3& u, RayPath& path) const {
+  const glm::dvec3 a = view_.eye_position - reference_;
+  const double along = glm::dot(a, u);
+  const glm::dvec3 perpendicular = a - along * u;
+  const double h = glm::length(perpendicular);
+  // The curve's vertices lie between |e - c| and h / sin(kAsymptoteAngle) from c (curvedRay).
+  if (!(glm::length(a) < emptyRadius_ && h / std::sin(kAsymptoteAngle) < emptyRadius_)) return false;
+  if (!(std::atan2(h, along) > kAsymptoteAngle)) return false;  // on a line through c: curvedRay
+  const glm::dvec3 last = perpendicular + (h / std::tan(kAsymptoteAngle)) * u;  // relative to c
+  glm::dvec3 lastDirection, tail;
+  if (!gridDirection(last, lastDirection) || !gridDirection(u, tail)) return false;
+  path.vertexCount = 1;
+  path.vertices[0] = place(reference_ + glm::length(last) * lastDirection);
+  path.tail = turn(tail);
+  return true;
+}
+
+double CameraRays::curvedReach() const {
+  return glm::length(view_.eye_position - reference_) / std::sin(kAsymptoteAngle);
+}
+
 void CameraRays::make(double px, double py, RayPath& path) const {
   path.vertexCount = 1;
   path.vertices[0] = placedEye_;
@@ -116,10 +168,12 @@ void CameraRays::make(double px, double py, RayPath& path) const {
   const glm::dvec3 eye = view_.eye_position;
   // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)
   const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
+  if (tailOnly(glm::normalize(toWall), path)) return;
   std::array<glm::dvec3, kMaxCurvedSegments + 2> vertices;
   glm::dvec3 tail;
   path.vertexCount =
-      curvedRay(*warp_, eye, glm::normalize(toWall), curvedSegments_, vertices.data(), tail);
+      curvedRay(*warp_, eye, glm::normalize(toWall), curvedSegments_, vertices.data(), tail,
+                emptyRadius_);
   for (int i = 0; i < path.vertexCount; ++i) path.vertices[i] = place(vertices[i]);
   path.tail = turn(tail);
 }

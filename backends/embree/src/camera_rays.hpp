@@ -20,6 +20,15 @@ namespace confvis::embree {
 
 inline constexpr int kMaxCurvedSegments = 32;
 
+// The angle (seen from c) at which the curved ray hands over to its straight tail along F(u).
+// The curve's distance from its asymptote there is about h * angle * |F''| / 2, with h = |e - c|
+// perpendicular to the ray (at most half the eye separation): ~0.1 mm for a 64 mm baseline, and
+// the tail starts within h / angle (8 m) of c, so that scenes keeping that far from the viewer
+// trace every exact stereo ray as one straight ray. Against a dense polyline of the curve on
+// the analytic dilation map (CurvedRayBound.*), 12 segments stay within 0.25 px of a 960-px
+// CAVE wall.
+inline constexpr double kAsymptoteAngle = 4e-3;
+
 // A polyline followed by an unbounded straight tail: what one camera sample traces.
 struct RayPath {
   int vertexCount = 1;  // segment k joins vertices[k] and vertices[k + 1]; then the tail
@@ -33,8 +42,12 @@ struct RayPath {
 // in the angle the physical ray subtends at c, from the eye down to 1e-3 rad, where W bends
 // most. Returns the number of vertices (1 when the ray points straight away from c, 2 when it
 // passes through c). `segments` in 1..kMaxCurvedSegments.
+// `emptyRadius`: no scene lies closer than this to c (W keeps distances to c, so in virtual space
+// too). The leading segments inside that ball cannot hit anything and are left out: the curve
+// starts at its last vertex inside the ball (and is then often just its straight tail), the hits
+// stay those of the whole curve.
 int curvedRay(const ConformalWarp& warp, const glm::dvec3& eye, const glm::dvec3& unitDirection,
-              int segments, glm::dvec3* vertices, glm::dvec3& tail);
+              int segments, glm::dvec3* vertices, glm::dvec3& tail, double emptyRadius = 0.0);
 
 class CameraRays {
  public:
@@ -47,6 +60,11 @@ class CameraRays {
 
   // The path through pixel-space point (px, py) of the wall (see WallView::rayDirection).
   void make(double px, double py, RayPath& path) const;
+  // Exact stereo rays: no scene lies within `radius` of the warp's centre (clearance.hpp); the
+  // curves' segments inside that ball are not traced.
+  void setEmptyRadius(double radius) { emptyRadius_ = radius; }
+  // The farthest any curve's vertex lies from the warp's centre (beyond, every ray is straight).
+  double curvedReach() const;
 
   // Straight cameras trace one unbounded ray per sample, from origin(): plain, conformal centre
   // eye and fast stereo rays (exact stereo rays bend).
@@ -68,6 +86,14 @@ class CameraRays {
 
  private:
   glm::vec3 place(const glm::dvec3& physicalPoint) const;
+  // F(dir(fromC)) from this wall's map grid where the ray from c along fromC meets the wall
+  // (bilinear over samples half a map texel apart: within ~1e-5 rad of the cube map's lookup,
+  // at a fraction of its cost); false where it meets the wall's plane outside the wall.
+  bool gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const;
+  // Exact stereo rays whose whole bent part lies in the empty ball: the tail alone, from the
+  // curve's last vertex, both looked up in the grid (curvedRay's vertex and tail up to the
+  // grid's accuracy). False where the curve leaves the ball or a lookup misses the wall.
+  bool tailOnly(const glm::dvec3& unitDirection, RayPath& path) const;
   glm::vec3 turn(const glm::dvec3& physicalDirection) const;
 
   WallView view_;
@@ -85,6 +111,7 @@ class CameraRays {
   StereoRays stereoRays_ = StereoRays::Exact;
   int curvedSegments_ = 0;
   bool eyeAtReference_ = false;
+  double emptyRadius_ = 0.0;
 };
 
 }  // namespace confvis::embree

@@ -10,6 +10,7 @@
 #include <tbb/task_arena.h>
 
 #include "camera_rays.hpp"
+#include "clearance.hpp"
 #include "direction_table.hpp"
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/embree/embree_device.hpp"
@@ -170,10 +171,18 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     const Wall& wall = *planned.view.wall;
     const WallMapGrid* grid =
         warp ? &impl_->wallGrid(*warp, mapFingerprint, wall, settings.resolutionScale) : nullptr;
-    const embree::CameraRays rays =
+    embree::CameraRays rays =
         warp ? embree::CameraRays(planned.view, settings.camera, *warp, *grid, settings.stereoRays,
                                   impl_->options.curvedRaySegments)
              : embree::CameraRays(planned.view, settings.camera, config.reference);
+    if (!rays.straight()) {
+      // Exact stereo: the curves bend within the ball around the warp's centre that the scene
+      // keeps out of (a margin for float rounding); only what leaves it is traced.
+      const double reach = rays.curvedReach();
+      const double empty = embree::clearance(scene, glm::vec3(settings.camera.position),
+                                             static_cast<float>(reach));
+      rays.setEmptyRadius((1.0 - 1e-4) * empty - 1e-6 * reach);
+    }
     job.width = planned.width;
     job.height = planned.height;
     job.pixelToWall = {static_cast<double>(wall.width) / planned.width,

@@ -104,8 +104,8 @@ glm::dvec3 virtualEyePosition(const glm::dvec3& eye, const DisplayConfig& config
 }
 
 FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
-                    const RenderSettings& settings, const Bounds& sceneBounds,
-                    const TessellationOptions& tessellation, std::uint32_t maxViews) {
+                    const RenderSettings& settings, const TessellationOptions& tessellation,
+                    std::uint32_t maxViews) {
   checkSettings(settings, map, maxViews);
   FramePlan plan;
   plan.splitAlongCut = tessellation.splitAlongCut;
@@ -123,26 +123,8 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   plan.frame.worldToPhysical = glm::mat4(worldToPhysical);
   plan.frame.warpCentre = glm::vec4(glm::vec3(warpCentre), 1.0f);
 
-  // Depth range: the warp keeps distances to c, so every drawn point lies within the scene's
-  // farthest distance from c plus the eye's offset from c.
-  double sceneRadius = 1.0;
-  if (!sceneBounds.empty())
-    for (int i = 0; i < 8; ++i) {
-      const glm::dvec3 corner((i & 1) ? sceneBounds.max.x : sceneBounds.min.x,
-                              (i & 2) ? sceneBounds.max.y : sceneBounds.min.y,
-                              (i & 4) ? sceneBounds.max.z : sceneBounds.min.z);
-      sceneRadius = std::max(
-          sceneRadius, glm::length(glm::dvec3(worldToPhysical * glm::dvec4(corner, 1.0)) -
-                                   warpCentre));
-    }
-
   std::vector<glm::dvec3> eyes;
-  double eyeOffset = 0.0;
-  for (Eye eye : plan.eyes) {
-    eyes.push_back(eyePosition(settings.head, eye, config.eyeSeparation));
-    eyeOffset = std::max(eyeOffset, glm::length(eyes.back() - warpCentre));
-  }
-  plan.far = 1.01 * (sceneRadius + eyeOffset) + 0.1;
+  for (Eye eye : plan.eyes) eyes.push_back(eyePosition(settings.head, eye, config.eyeSeparation));
 
   for (const Wall* wall : plan.walls) {
     const auto scaled = [&](int pixels) {
@@ -162,7 +144,12 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
     for (std::size_t e = 0; e < eyes.size(); ++e) {
       WallView view = makeWallView(*wall, eyes[e]);  // throws if the eye cannot see the wall
       ViewData data;
-      data.viewProj = glm::mat4(view.projectionVulkan(plan.near, plan.far) * view.view);
+      // Reverse-Z without a far plane, the near plane a tiny fraction of the wall's distance:
+      // float depth resolves the same relative distances in a scene of millimetres or of
+      // kilometres, and clips nothing that the ray tracer (rays from t = 0) would show.
+      data.viewProj = glm::mat4(
+          view.projectionVulkanReverseZ(kNearFractionOfWallDistance * view.nearDistance) *
+          view.view);
       data.eyeVirtual =
           glm::vec4(glm::vec3(virtualEyePosition(eyes[e], config, map, settings)), 1.0f);
       data.params = params;

@@ -27,7 +27,6 @@ struct FramePlan {
   FrameUniforms frame{};
   std::vector<ViewData> views;             // index wall * eyes.size() + eye
   std::vector<ErrorWall> errorWalls;       // conformal: per wall, its local bend error bound
-  double near = 0.01, far = 100.0;
   bool splitAlongCut = true;  // TessellationOptions::splitAlongCut
   bool snapCutToRim = true;   // TessellationOptions::snapCutToRim
   bool reusePrepass = true;   // TessellationOptions::reusePrepass
@@ -35,8 +34,12 @@ struct FramePlan {
 
 // `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.
 FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
-                    const RenderSettings& settings, const Bounds& sceneBounds,
-                    const TessellationOptions& tessellation, std::uint32_t maxViews);
+                    const RenderSettings& settings, const TessellationOptions& tessellation,
+                    std::uint32_t maxViews);
+
+// Each view's near plane, as a share of the eye's distance to the wall plane (reverse-Z keeps
+// the float depth's relative precision from it to infinity, so it may be this small).
+inline constexpr double kNearFractionOfWallDistance = 1e-5;
 
 // Where the headlight of `eye` sits in the virtual world: the eye itself in plain mode; in
 // conformal mode the start of its virtual rays, c + |e - c| T_ray(dir(e - c)) (the eye itself

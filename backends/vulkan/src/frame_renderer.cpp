@@ -136,7 +136,7 @@ void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
   const Pipelines::Pass& pass = pipelines_.pass(views);
   std::array<VkClearValue, 2> clear{};
   clear[0].color = {{0.0f, 0.0f, 0.0f, 0.0f}};  // alpha 0 where nothing is drawn
-  clear[1].depthStencil = {1.0f, 0};
+  clear[1].depthStencil = {0.0f, 0};  // reverse-Z: 0 is infinitely far
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   begin.renderPass = pass.renderPass.get();
   begin.framebuffer = t.framebuffer.get();

@@ -30,7 +30,7 @@ bool multiviewKeepsClippedPrimitivesInTheirView(VulkanContext& context, Pipeline
   RenderSettings settings;
   settings.mode = RenderMode::Plain;
   settings.eyes = {Eye::Left, Eye::Right};
-  const FramePlan plan = planFrame(config, nullptr, settings, gpuScene.bounds(), {},
+  const FramePlan plan = planFrame(config, nullptr, settings, {},
                                    kRequiredMultiviewViews);
   Progress silent("", 1, false);
   for (const WallImage& image : frames.render(plan, gpuScene, nullptr, true, silent))

@@ -12,6 +12,7 @@
 #include "gpu_scene.hpp"
 #include "multiview_probe.hpp"
 #include "pipelines.hpp"
+#include "wide_triangle_split.hpp"
 
 namespace confvis {
 namespace {
@@ -48,7 +49,10 @@ class VulkanBackend final : public RenderBackend {
 
   void setScene(const Scene& scene) override {
     scene_.reset();  // free the old buffers first
+    split_.reset();
+    checkedCentre_.reset();
     scene_.emplace(context_, pipelines_, scene);
+    source_ = scene;
   }
 
   RenderResult render(const DisplayConfig& config, const RetargetMap* map,
@@ -60,15 +64,15 @@ class VulkanBackend final : public RenderBackend {
                                                    options_.splitAlongCut, options_.reusePrepass,
                                                    options_.snapCutToRim};
     const vulkan::FramePlan plan =
-        vulkan::planFrame(config, map, settings, scene_->bounds(), tessellation,
+        vulkan::planFrame(config, map, settings, tessellation,
                           context_.capabilities().maxMultiviewViewCount);
     const bool conformal = settings.mode == RenderMode::Conformal;
     Progress progress("vulkan " + std::string(conformal ? "conformal" : "plain"),
                       plan.walls.size(), settings.showProgress);
     RenderResult result;
     const bool onePass = multiview_ || plan.eyes.size() == 1;
-    result.images =
-        frames_.render(plan, *scene_, conformal ? map : nullptr, multiview_, progress);
+    const vulkan::GpuScene& drawn = conformal ? sceneForWarp(config, *map, settings) : *scene_;
+    result.images = frames_.render(plan, drawn, conformal ? map : nullptr, multiview_, progress);
     progress.finish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -84,7 +88,8 @@ class VulkanBackend final : public RenderBackend {
     if (conformal) {
       result.stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
       result.stats["tessellation"] = options_.tessellate;
-      const auto counts = frames_.prepassCounts(*scene_);
+      result.stats["triangles_split_before_warp"] = split_ ? split_->trianglesSplit : 0;
+      const auto counts = frames_.prepassCounts(drawn);
       result.stats["triangles_drawn_flat"] = counts.flat;
       result.stats["triangles_tessellated"] = counts.tessellated + counts.dropping;
       result.stats["triangles_through_geometry_shader"] = counts.dropping;
@@ -103,12 +108,54 @@ class VulkanBackend final : public RenderBackend {
   }
 
  private:
+  // Triangles wider than this seen from the warp's centre are split before the warp; a split
+  // made for one centre serves the next frames while none of its pieces is (hysteresis: the
+  // pieces are made half as wide).
+  static constexpr double kWidestTriangleDegrees = 16.0;
+
+  struct SplitScene {
+    Scene scene;
+    std::optional<vulkan::GpuScene> gpu;
+    std::size_t trianglesSplit = 0;
+  };
+
+  // The scene as the conformal pre-pass takes it: the uploaded scene, or (where some triangle
+  // spans too wide an angle seen from the warp's centre) its split (wide_triangle_split.hpp).
+  const vulkan::GpuScene& sceneForWarp(const DisplayConfig& config, const RetargetMap& map,
+                                       const RenderSettings& settings) {
+    const glm::dvec3 c(map.reference.x, map.reference.y, map.reference.z);
+    const glm::dvec3 centre =
+        settings.camera.position + settings.camera.rotation() * (c - config.reference);
+    // Frames from the same centre (a tracked head without navigation) decide as the last one
+    // did, without the pass over every triangle.
+    if (checkedCentre_ == centre) return split_ ? *split_->gpu : *scene_;
+    checkedCentre_ = centre;
+    if (!options_.splitWideTriangles ||
+        !vulkan::hasWideTriangles(source_, centre, kWidestTriangleDegrees)) {
+      split_.reset();
+      return *scene_;
+    }
+    if (split_ && !vulkan::hasWideTriangles(split_->scene, centre, kWidestTriangleDegrees))
+      return *split_->gpu;
+    split_.reset();  // free the old buffers first
+    vulkan::WideTriangleSplit split =
+        vulkan::splitWideTriangles(source_, centre, 0.5 * kWidestTriangleDegrees);
+    split_.emplace();
+    split_->scene = std::move(split.scene);
+    split_->trianglesSplit = split.trianglesSplit;
+    split_->gpu.emplace(context_, pipelines_, split_->scene);
+    return *split_->gpu;
+  }
+
   VulkanOptions options_;
   vulkan::VulkanContext context_;
   vulkan::Pipelines pipelines_;
   vulkan::FrameRenderer frames_;
   bool multiview_;  // every eye of a wall in one pass
   std::optional<vulkan::GpuScene> scene_;
+  Scene source_;                     // the scene as given, for splits
+  std::optional<SplitScene> split_;  // the split the last conformal frame drew, if any
+  std::optional<glm::dvec3> checkedCentre_;  // the warp's centre split_ was decided for
 };
 
 }  // namespace

@@ -96,6 +96,7 @@ TEST(VulkanConformal, AzimuthSqueezeMatchesTheClosedFormAndSmearsNothingAcrossTh
   const auto render = [&](bool tessellate) {
     VulkanOptions options;
     options.tessellate = tessellate;
+    options.splitWideTriangles = tessellate;  // untessellated: the 90-degree triangles drawn whole
     test::ValidatedBackend vk(options);
     vk->setScene(checkerCube());
     RenderResult result = vk->render(config, &squeeze, settingsFor(config, RenderMode::Conformal));
@@ -139,6 +140,7 @@ TEST(VulkanConformal, ConformalZoomMatchesTheClosedForm) {
   for (bool tessellate : {true, false}) {
     VulkanOptions options;
     options.tessellate = tessellate;
+    options.splitWideTriangles = tessellate;  // untessellated: the 90-degree triangles drawn whole
     test::ValidatedBackend vk(options);
     vk->setScene(checkerCube());
     const RenderResult result =

@@ -27,7 +27,7 @@ TEST(VulkanFramePlan, ErrorWallsBoundTheErrorByThePixelsWhereItIsShown) {
   settings.resolutionScale = 0.125;
   TessellationOptions tessellation;
   tessellation.errorPixels = 0.5;
-  const FramePlan plan = planFrame(config, &map, settings, Bounds{}, tessellation, 2);
+  const FramePlan plan = planFrame(config, &map, settings, tessellation, 2);
   ASSERT_EQ(plan.errorWalls.size(), plan.walls.size());
   const glm::dvec3 c(map.reference.x, map.reference.y, map.reference.z);
   for (std::size_t w = 0; w < plan.walls.size(); ++w) {
@@ -75,7 +75,7 @@ TEST(VulkanFramePlan, PlainFramesHaveNoErrorWalls) {
   RenderSettings settings;
   settings.mode = RenderMode::Plain;
   settings.resolutionScale = 0.125;
-  const FramePlan plan = planFrame(config, nullptr, settings, Bounds{}, TessellationOptions{}, 2);
+  const FramePlan plan = planFrame(config, nullptr, settings, TessellationOptions{}, 2);
   EXPECT_TRUE(plan.errorWalls.empty());
 }
 

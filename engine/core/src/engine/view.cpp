@@ -32,6 +32,18 @@ glm::dmat4 WallView::projectionVulkan(double near, double far) const {
          glm::frustumRH_ZO(left * scale, right * scale, bottom * scale, top * scale, near, far);
 }
 
+glm::dmat4 WallView::projectionVulkanReverseZ(double near) const {
+  checkDepthRange(near, 2.0 * near);
+  glm::dmat4 p(0.0);  // column-major: p[column][row]
+  p[0][0] = 2.0 * nearDistance / (right - left);
+  p[2][0] = (right + left) / (right - left);
+  p[1][1] = -2.0 * nearDistance / (top - bottom);  // Vulkan clip space has y pointing down
+  p[2][1] = -(top + bottom) / (top - bottom);
+  p[3][2] = near;  // clip z = near, clip w = -z: depth near / -z
+  p[2][3] = -1.0;
+  return p;
+}
+
 glm::dvec3 WallView::rayDirection(double px, double py) const {
   const double x = left + px / wall->width * (right - left);
   const double y = top - py / wall->height * (top - bottom);

@@ -100,6 +100,32 @@ TEST(ViewProjection, WallCornersLandOnTheClipBorderInGLAndVulkan) {
   }
 }
 
+// Reverse-Z, far plane at infinity: the same x and y as projectionVulkan, depth 1 on the near
+// plane, near / distance beyond it, and still ordered a part in a million apart at 1 km and 1 mm.
+TEST(ViewProjection, ReverseZKeepsVulkansXYAndOrdersDepthAtAnyDistance) {
+  const DisplayConfig cave = shippedConfig("cave5.json");
+  for (const WallView& v : makeViews(cave, HeadPose{{0.3, -0.2, 0.4}}, Eye::Center)) {
+    SCOPED_TRACE(v.wall->name);
+    const Wall& w = *v.wall;
+    const double near = 1e-4;
+    const glm::dmat4 vk = v.projectionVulkan(0.1, 50.0), reverse = v.projectionVulkanReverseZ(near);
+    for (const glm::dvec3& corner : {w.lowerLeft, w.upperLeft, w.lowerRight, w.upperRight()})
+      EXPECT_TRUE(vecNear(clipXY(reverse, v, corner), clipXY(vk, v, corner), 1e-12));
+    const glm::dvec3 eye = v.eye_position;
+    const glm::dvec3 toCentre = w.pointAt(0.3, 0.6) - eye;
+    const auto at = [&](double distance) { return eye + toCentre * (distance / v.nearDistance); };
+    EXPECT_NEAR(ndc(reverse, v, at(near)).z, 1.0, 1e-9);
+    EXPECT_NEAR(ndc(reverse, v, at(2.0 * near)).z, 0.5, 1e-9);
+    for (double distance : {1e-3, 1.0, 1e3}) {
+      // As the D32 float depth buffer holds it.
+      const auto depth = [&](double d) { return static_cast<float>(ndc(reverse, v, at(d)).z); };
+      EXPECT_GT(depth(distance), depth(distance * (1.0 + 1e-5))) << distance;
+    }
+  }
+  EXPECT_THROW((void)makeViews(cave, HeadPose{}, Eye::Center)[0].projectionVulkanReverseZ(0.0),
+               Error);
+}
+
 TEST(ViewProjection, RejectsAnInvalidDepthRange) {
   const WallView v = makeWallView(shippedConfig("cave3.json").wall("front"), {0, 0, 0});
   EXPECT_THROW((void)v.projectionGL(0.0, 10.0), Error);

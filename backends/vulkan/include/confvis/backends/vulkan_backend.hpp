@@ -55,6 +55,10 @@ struct VulkanOptions {
   // like a square root next to the cut, leaving a band along the rim unshown. False: the
   // extrapolated limits (for tests and benchmarks).
   bool snapCutToRim = true;
+  // Conformal mode: triangles spanning more than 16 degrees seen from the warp's centre (a large
+  // quad next to the viewer, a ground plane under them) are split before the warp, so that the
+  // pre-pass bends pieces it can follow. False: drawn whole, as before issue 23 (for tests).
+  bool splitWideTriangles = true;
   // Conformal mode: a frame whose scene, map, navigation (RenderSettings::camera) and error
   // bounds equal the previous conformal frame's reuses its compute pre-pass (warps, edge levels,
   // draw lists); head tracking alone changes none of them. False: every frame runs it (the

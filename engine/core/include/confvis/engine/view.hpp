@@ -28,6 +28,10 @@ struct WallView {
   glm::dmat4 projectionGL(double near, double far) const;
   // Vulkan clip space: depth in [0,1], y down (the wall's upper edge at clip y = -1).
   glm::dmat4 projectionVulkan(double near, double far) const;
+  // Vulkan clip space with reverse-Z and no far plane: depth near / distance along the wall's
+  // normal, 1 on the near plane and falling towards 0 at infinity (clear depth 0, compare
+  // GREATER). Float depth then keeps ~7 significant digits of the distance at any scale.
+  glm::dmat4 projectionVulkanReverseZ(double near) const;
   // World-space direction (unnormalised, reaching the wall plane at t = 1) from the eye through
   // pixel-space point (px, py) of the lit area: px in [0, width], py in [0, height], py = 0 at
   // the top edge. Pixel (x, y) has its centre at (x + 0.5, y + 0.5).
