@@ -134,6 +134,11 @@ DisplayConfig finishImport(ImportedDisplay display, const std::string& sourceNam
   return result;
 }
 
+void setImportedNode(ImportedDisplay& display, std::size_t first, const std::string& host) {
+  if (host.empty() || host == "localhost" || host == "127.0.0.1" || host == "::1") return;
+  for (std::size_t i = first; i < display.walls.size(); ++i) display.walls[i].output["node"] = host;
+}
+
 json importedOutput(const ImportedWindow& window) {
   json output = json::object();
   json w = json::object();
