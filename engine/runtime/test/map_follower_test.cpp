@@ -10,7 +10,7 @@
 #include <mutex>
 #include <stdexcept>
 
-#include "../engine/display_test_support.hpp"
+#include "../../core/test/engine/display_test_support.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/base/error.hpp"
 

@@ -8,7 +8,7 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/runtime/tracker.hpp"
-#include "display_test_support.hpp"
+#include "../../core/test/engine/display_test_support.hpp"
 
 using namespace confvis;
 using confvis::testing::configDir;
