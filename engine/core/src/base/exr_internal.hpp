@@ -19,6 +19,10 @@ namespace confvis::detail {
 // so the cube reader's own limit (8192 per face) is checked by the shape first.
 inline constexpr long long kMaxExrSide = 65536;
 inline constexpr long long kMaxExrPixels = 8192LL * 6 * 8192;
+// An image needing more than 1 GiB in memory is read only from a file at least 1/2000 of that
+// size (ZIP, the writers' compression, stays far below 2000:1 on real images).
+inline constexpr long long kMaxExrBytesUnchecked = 1LL << 30;
+inline constexpr long long kMaxExrExpansion = 2000;
 
 // Throws Error(InvalidInput) naming `path` if the image is empty or has NaN/infinite values.
 void requireWritableImage(const std::filesystem::path& path, const ImageRGBA& image,

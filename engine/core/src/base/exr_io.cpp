@@ -120,6 +120,15 @@ ImageRGBA readExrLayer(Imf::InputFile& file, const fs::path& path, const std::st
                                           " pixels (at most " + std::to_string(kMaxExrSide) +
                                           " per side and " + std::to_string(kMaxExrPixels) +
                                           " in all)");
+  // Beyond 1 GiB in memory, the file must be large enough to hold it at a plausible compression
+  // ratio: a few kilobytes of header must not make confvis fill gigabytes.
+  std::error_code ec;
+  const auto fileBytes = static_cast<long long>(fs::file_size(path, ec));
+  const long long memoryBytes = width * height * 16;
+  if (memoryBytes > kMaxExrBytesUnchecked && (ec || memoryBytes / kMaxExrExpansion > fileBytes))
+    throw Error(ErrorCode::IoFailure, "EXR file " + quoted(path) + " claims " +
+                                          std::to_string(width) + "x" + std::to_string(height) +
+                                          " pixels in " + std::to_string(fileBytes) + " bytes");
   ImageRGBA image(static_cast<int>(width), static_cast<int>(height));
   Imf::FrameBuffer frameBuffer;
   for (std::size_t c = 0; c < kChannels.size(); ++c) {

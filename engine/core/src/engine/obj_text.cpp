@@ -51,7 +51,7 @@ std::string forwardSlashes(std::string s) {
 
 void checkNumbers(const std::string& keyword, const std::string& rest, std::size_t lineNumber,
                   const std::filesystem::path& path) {
-  std::istringstream words(rest);
+  std::istringstream words(rest.substr(0, rest.find('#')));  // a trailing comment is no number
   std::vector<std::string> items;
   for (std::string w; words >> w;) items.push_back(w);
   const std::size_t n = items.size();

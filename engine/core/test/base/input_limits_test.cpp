@@ -6,11 +6,14 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <string>
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/checksum.hpp"
+#include "confvis/base/cube_map.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/json_text.hpp"
 #include "confvis/base/text_encoding.hpp"
@@ -59,6 +62,17 @@ TEST(FileNameSafety, NulAndControlCharactersAreRefusedAndShownEscaped) {
   EXPECT_NE(nul.find("screen\\x00.exr"), std::string::npos) << nul;  // not cut at the NUL
   EXPECT_NE(errorOf([] { requireFileNameSafe("a\nb", "f"); }).find("control character"), std::string::npos);
   EXPECT_NE(errorOf([] { requireFileNameSafe("a\x7f", "f"); }).find("control character"), std::string::npos);
+}
+
+// Found by fuzz_sgct_xml / fuzz_pvx: a name from XML with invalid UTF-8 made the config hash's
+// JSON dump throw an uncaught type_error (std::terminate in the harness, exit 3 in the CLI).
+TEST(FileNameSafety, InvalidUtf8IsRefused) {
+  for (const char* bad : {"wall\xff", "\xc3", "\xc0\xaf", "\xed\xa0\x80", "\xf4\x90\x80\x80"})
+    EXPECT_NE(errorOf([&] { requireFileNameSafe(bad, "wall name"); }).find("not valid UTF-8"),
+              std::string::npos)
+        << bad;
+  for (const char* good : {"caf\xc3\xa9", "\xe2\x82\xac", "\xf0\x9f\x98\x80"})
+    EXPECT_NO_THROW(requireFileNameSafe(good, "wall name")) << good;
 }
 
 TEST(JsonDepth, HundredThousandNestedBracketsAreRefusedWithoutRecursion) {
@@ -125,4 +139,28 @@ TEST(Checksum, FileChecksumIsFnv1aOfTheBytesAndSeesOneBit) {
   EXPECT_NE(fileChecksum(file), fnv1a64Hex(std::string(200000, 'x')));
   fs::remove(file);
   EXPECT_THROW(fileChecksum(file), Error);
+}
+
+// A 35 KB EXR whose header claims an 8192 x 49152 data window (a cube of 8192 per face, 6 GiB as
+// floats): refused before anything of that size is allocated, naming the file.
+TEST(ExrLimits, SmallFileClaimingAHugeWindowIsRefusedQuickly) {
+  const fs::path file = fs::temp_directory_path() / ("confvis_exr_window_" + std::to_string(getpid()) + ".exr");
+  writeCubeExr(file, CubeMap(8));
+  std::string bytes = readTextFile(file);
+  const std::size_t window = bytes.find(std::string("dataWindow\0box2i\0", 17));
+  ASSERT_NE(window, std::string::npos);
+  const std::int32_t box[4] = {0, 0, 8191, 49151};
+  std::memcpy(bytes.data() + window + 17 + 4, box, sizeof box);  // after the attribute's size
+  bytes += std::string(30000, '\0');  // room for the line offset table OpenEXR reads first
+  writeTextAtomically(file, bytes);
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    (void)readCubeExr(file);
+    ADD_FAILURE() << "read";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("claims 8192x49152 pixels in"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+  fs::remove(file);
 }

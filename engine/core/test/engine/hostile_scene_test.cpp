@@ -13,6 +13,7 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/engine/display_config.hpp"
+#include "confvis/engine/display_import.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "confvis/engine/scene_units.hpp"
 
@@ -139,6 +140,15 @@ TEST(HostileObj, UnparsableVertexLineIsRefusedNamingTheLine) {
   EXPECT_NE(message.find("1,5"), std::string::npos) << message;
 }
 
+TEST(HostileObj, TrailingCommentsAndColoursOnVertexLinesAreFine) {
+  const fs::path dir = fs::temp_directory_path() / ("confvis_obj_comment_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "c.obj") << "v 0 0 -2 # origin\nv 1 0 -2 1 0 0\nv 0 1 -2 0.5 0.5 0.5 1\n"
+                                  "vt 0.5 # u only\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n";
+  EXPECT_EQ(loadScene(dir / "c.obj").triangleCount(), 1u);
+  fs::remove_all(dir);
+}
+
 // Saved as UTF-16 by a Windows editor: "contains no triangles".
 TEST(HostileObj, Utf16FileIsRead) {
   const Scene scene = loadScene(hostile("utf16.obj"));
@@ -160,6 +170,21 @@ TEST(HostileObj, WindowsExportKeepsMaterialWithSpacesAndFindsBackslashTexture) {
   EXPECT_EQ(scene.textures[0].width, 2);
   EXPECT_NEAR(scene.textures[0].rgba[0], 1.0f, 1e-6f);  // red, linear
   EXPECT_NEAR(scene.textures[0].rgba[1], 0.0f, 1e-6f);
+}
+
+// Found by fuzz_pvx and fuzz_sgct_xml (their crash inputs, kept as they were found): a machine
+// or window name with invalid UTF-8 from XML made the config hash's JSON dump throw an uncaught
+// nlohmann type_error ("unexpected error", exit 3).
+TEST(HostileImport, InvalidUtf8NamesFromXmlAreRefusedNamingTheFile) {
+  for (const char* name : {"invalid-utf8-name.pvx", "invalid-utf8-name.xml"}) {
+    try {
+      (void)importDisplayConfig(hostile(name));
+      ADD_FAILURE() << name << " was imported";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("not valid UTF-8"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // A scene in millimetres on a 3 m display: a hint naming both sizes and the factor; none for a

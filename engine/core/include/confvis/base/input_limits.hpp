@@ -19,7 +19,7 @@ inline constexpr int kMaxJsonDepth = 64;
 
 // Throws Error(InvalidInput) "<field> '<name>' cannot be used as a file name: <reason>" unless
 // `name` is one plain path component: not empty, not "." or "..", no '/' or '\\', no NUL or other
-// control character, at most kMaxFileNameLength bytes. `field` names the culprit for the user
+// control character, valid UTF-8, at most kMaxFileNameLength bytes. `field` names the culprit for the user
 // ("cave5.json: wall name", "display name").
 void requireFileNameSafe(std::string_view name, const std::string& field);
 
