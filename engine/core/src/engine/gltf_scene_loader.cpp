@@ -236,6 +236,14 @@ class GltfReader {
     mesh.positions = readVectors<3>(attribute("POSITION"), name + " POSITION");
     if (attribute("NORMAL") >= 0) mesh.normals = readVectors<3>(attribute("NORMAL"), name + " NORMAL");
     if (attribute("TEXCOORD_0") >= 0) mesh.uvs = readVectors<2>(attribute("TEXCOORD_0"), name + " TEXCOORD_0");
+    // Every attribute has one value per vertex (found by fuzz_gltf: a short TEXCOORD_0 was read
+    // past its end when flat normals were made).
+    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
+      fail(name + ": NORMAL has " + std::to_string(mesh.normals.size()) + " values for " +
+           std::to_string(mesh.positions.size()) + " positions");
+    if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size())
+      fail(name + ": TEXCOORD_0 has " + std::to_string(mesh.uvs.size()) + " values for " +
+           std::to_string(mesh.positions.size()) + " positions");
     if (mesh.material >= 0)
       for (glm::vec2& uv : mesh.uvs)
         uv = glm::vec2(uvTransforms_[static_cast<std::size_t>(mesh.material)] * glm::vec3(uv, 1.0f));

@@ -133,6 +133,13 @@ TEST(HostileGltf, TextureTransformIsApplied) {
   }
 }
 
+// Found by fuzz_gltf (heap-buffer-overflow): one TEXCOORD_0 value for three positions was read
+// past its end while flat normals were made.
+TEST(HostileGltf, AttributeWithFewerValuesThanPositionsIsRefused) {
+  EXPECT_NE(loadError("short-texcoord.gltf").find("TEXCOORD_0 has 1 values for 3 positions"),
+            std::string::npos);
+}
+
 // "v 0 1,5 -2" was read by tinyobjloader as a vertex somewhere and rendered with exit 0.
 TEST(HostileObj, UnparsableVertexLineIsRefusedNamingTheLine) {
   const std::string message = loadError("bad-vertex.obj");
