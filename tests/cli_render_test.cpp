@@ -12,6 +12,7 @@
 #include "confvis/base/cube_map.hpp"
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/png_io.hpp"
+#include "confvis/conformal/bake_files.hpp"
 #include "cli_test_support.hpp"
 
 namespace fs = std::filesystem;
@@ -153,8 +154,7 @@ TEST(CliRender, StereoWritesMultiViewExrAndSideBySidePreview) {
 TEST(CliRender, ConformalModeReadsABakedMapDirectory) {
   const fs::path mapDir = scratch("map5"), out = scratch("c5");
   const confvis::RetargetMap map = confvis::ceilinglessDilationMap(1.5, 64);
-  confvis::writeCubeExr(mapDir / "ray.exr", map.ray);
-  confvis::writeCubeExr(mapDir / "geom.exr", map.geom);
+  confvis::writeRetargetMapDirectory(mapDir, map);  // ray.exr, geom.exr, bake.json
   const CliRun run = runCli("render " + config("cave5") + " --map " + mapDir.string() +
                             " --wall front -o " + out.string() + kSmall);
   ASSERT_EQ(run.exitCode, 0) << run.output;
@@ -192,8 +192,7 @@ TEST(CliRender, WithoutConfigRendersTheFiveSidedCaveConformally) {
 TEST(CliRender, VulkanTessellationErrorIsTheBackendsThreshold) {
   const fs::path mapDir = scratch("map-tess");
   const confvis::RetargetMap map = confvis::ceilinglessDilationMap(1.5, 64);
-  confvis::writeCubeExr(mapDir / "ray.exr", map.ray);
-  confvis::writeCubeExr(mapDir / "geom.exr", map.geom);
+  confvis::writeRetargetMapDirectory(mapDir, map);  // ray.exr, geom.exr, bake.json
   const auto tessellated = [&](const std::string& error) {
     const fs::path out = scratch("tess-" + error);
     const CliRun run = runCli("render " + config("cave5") + " --backend vulkan --map " +

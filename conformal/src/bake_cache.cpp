@@ -47,16 +47,26 @@ std::optional<LoadedBake> loadCacheEntry(const fs::path& entry, const DisplayCon
     return std::nullopt;
   }
   try {
-    LoadedBake loaded = loadBakeDirectory(entry);
-    const std::string hash = loaded.sidecar.value("config_hash", "");
-    if (hash != config.hash)
+    LoadedBake loaded = loadBakeDirectory(entry);  // every file's size and checksum
+    const nlohmann::json& hash = loaded.sidecar.contains("config_hash")
+                                     ? loaded.sidecar.at("config_hash")
+                                     : nlohmann::json();
+    if (!hash.is_string() || hash.get<std::string>() != config.hash)
       throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() +
-                                            "': bake.json is for config hash '" + hash + "'");
+                                            "': bake.json is for config hash " + hash.dump());
     if (loaded.map.resolution() != config.cubeResolution)
       throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() + "' has resolution " +
                                             std::to_string(loaded.map.resolution()));
+    // The key covers the reference point, so a mismatch is a hand-edited or damaged entry:
+    // used, it would fail every render (render_plan checks the map's reference).
+    const glm::dvec3 reference(loaded.map.reference.x, loaded.map.reference.y,
+                               loaded.map.reference.z);
+    if (!(glm::length(reference - config.reference) <= 1e-9))
+      throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() +
+                                            "': bake.json's reference point differs from the "
+                                            "config's");
     return loaded;
-  } catch (const Error& e) {
+  } catch (const std::exception& e) {  // Error, and anything a damaged entry may raise
     note = e.what();
     fs::remove_all(entry, ec);
     return std::nullopt;

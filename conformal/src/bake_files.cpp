@@ -8,7 +8,10 @@
 
 #include "bake_previews.hpp"
 #include "confvis/base/atomic_file.hpp"
+#include "confvis/base/checksum.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/input_limits.hpp"
+#include "confvis/base/json_text.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/base/progress.hpp"
 #include "confvis/conformal/baked_map_quality.hpp"
@@ -48,11 +51,50 @@ json meshJson(const SphereDiskMesh& mesh, const std::array<int, 3>& markers) {
 std::vector<std::string> listedFiles(const fs::path& directory, const json& sidecar) {
   std::vector<std::string> names;
   for (const auto& [name, size] : sidecar.at("files").items()) {
-    if (name.empty() || name[0] == '.' || fs::path(name).filename().string() != name)
-      corrupt(directory, "bake.json lists a file outside the directory: '" + name + "'");
+    try {
+      requireFileNameSafe(name, "listed file");
+    } catch (const Error& e) {
+      corrupt(directory, std::string("bake.json lists a file outside the directory: ") + e.what());
+    }
     names.push_back(name);
   }
   return names;
+}
+
+// Each file's size and checksum under "files", then bake.json itself, last and atomically.
+json finishDirectory(const fs::path& directory, const std::vector<std::string>& names, json sidecar) {
+  json files = json::object();
+  for (const std::string& name : names)
+    files[name] = {{"bytes", fs::file_size(directory / name)},
+                   {"fnv1a64", fileChecksum(directory / name)}};
+  sidecar["files"] = files;
+  writeTextAtomically(directory / "bake.json", sidecar.dump(2) + "\n");
+  return sidecar;
+}
+
+void createDirectory(const fs::path& directory) {
+  std::error_code ec;
+  fs::create_directories(directory, ec);
+  if (ec)
+    throw Error(ErrorCode::IoFailure,
+                "cannot create bake directory '" + directory.string() + "': " + ec.message());
+}
+
+// Every listed file is there, of the recorded size and checksum: a flipped bit, a truncated
+// file or two swapped files are all caught before any of them is decoded.
+void verifyListedFiles(const fs::path& directory, const json& sidecar) {
+  for (const std::string& name : listedFiles(directory, sidecar)) {
+    std::error_code ec;
+    const auto actual = fs::file_size(directory / name, ec);
+    if (ec) corrupt(directory, name + " is missing");
+    const json& entry = sidecar.at("files").at(name);
+    if (actual != entry.at("bytes").get<std::uintmax_t>())
+      corrupt(directory, name + " has " + std::to_string(actual) + " bytes, bake.json says " +
+                             entry.at("bytes").dump());
+    if (fileChecksum(directory / name) != entry.at("fnv1a64").get<std::string>())
+      corrupt(directory, name + " does not match its checksum in bake.json (changed or swapped "
+                                "since the bake)");
+  }
 }
 
 }  // namespace
@@ -111,11 +153,7 @@ json makeBakeSidecar(const DisplayConfig& config, const DisplayMap& displayMap,
 
 json writeBakeDirectory(const fs::path& directory, const DisplayMap& displayMap,
                         const RetargetMap& map, json sidecar, int threads, bool showProgress) {
-  std::error_code ec;
-  fs::create_directories(directory, ec);
-  if (ec)
-    throw Error(ErrorCode::IoFailure,
-                "cannot create bake directory '" + directory.string() + "': " + ec.message());
+  createDirectory(directory);
   const PngOptions data{.exposure = 1.0f, .srgb = false, .alpha = false};
   const std::vector<std::pair<std::string, std::function<void(const fs::path&)>>> files = {
       {"ray.exr", [&](const fs::path& p) { writeCubeExr(p, map.ray); }},
@@ -150,20 +188,30 @@ json writeBakeDirectory(const fs::path& directory, const DisplayMap& displayMap,
     progress.advance();
   });
   progress.finish();
-  json sizes = json::object();
-  for (const auto& [name, write] : files) sizes[name] = fs::file_size(directory / name);
-  sidecar["files"] = sizes;
   sidecar["timings"]["files"] = secondsSince(start);
-  writeTextAtomically(directory / "bake.json", sidecar.dump(2) + "\n");
-  return sidecar;
+  std::vector<std::string> names;
+  for (const auto& [name, write] : files) names.push_back(name);
+  return finishDirectory(directory, names, std::move(sidecar));
+}
+
+json writeRetargetMapDirectory(const fs::path& directory, const RetargetMap& map) {
+  createDirectory(directory);
+  writeCubeExr(directory / "ray.exr", map.ray);
+  writeCubeExr(directory / "geom.exr", map.geom);
+  const json sidecar = {{"format", kBakeFormat},
+                        {"format_version", kBakeFormatVersion},
+                        {"confvis_version", versionString()},
+                        {"reference", {map.reference.x, map.reference.y, map.reference.z}},
+                        {"resolution", map.resolution()}};
+  return finishDirectory(directory, {"ray.exr", "geom.exr"}, sidecar);
 }
 
 LoadedBake loadBakeDirectory(const fs::path& directory) {
   LoadedBake loaded;
   const std::string text = readTextFile(directory / "bake.json");  // FileNotFound if missing
   try {
-    loaded.sidecar = json::parse(text);
-  } catch (const json::exception& e) {
+    loaded.sidecar = parseJsonText(text, "bake.json");
+  } catch (const Error& e) {
     corrupt(directory, std::string("bake.json is not valid JSON (") + e.what() + ")");
   }
   const json& s = loaded.sidecar;
@@ -176,15 +224,7 @@ LoadedBake loadBakeDirectory(const fs::path& directory) {
     resolution = s.at("resolution").get<int>();
     const auto reference = s.at("reference").get<std::array<double, 3>>();
     loaded.map.reference = {reference[0], reference[1], reference[2]};
-    for (const std::string& name : listedFiles(directory, s)) {
-      std::error_code ec;
-      const auto actual = fs::file_size(directory / name, ec);
-      if (ec) corrupt(directory, name + " is missing");
-      const json& size = s.at("files").at(name);
-      if (actual != size.get<std::uintmax_t>())
-        corrupt(directory, name + " has " + std::to_string(actual) + " bytes, bake.json says " +
-                               size.dump());
-    }
+    verifyListedFiles(directory, s);
   } catch (const json::exception& e) {
     corrupt(directory, std::string("bake.json lacks a field or has a wrong type (") + e.what() + ")");
   }
@@ -207,7 +247,13 @@ LoadedBake loadBakeDirectory(const fs::path& directory) {
 }
 
 void copyBakeDirectory(const fs::path& from, const fs::path& to) {
-  const json sidecar = json::parse(readTextFile(from / "bake.json"));
+  json sidecar;
+  try {  // a verified source only: sizes and checksums as recorded
+    sidecar = parseJsonText(readTextFile(from / "bake.json"), (from / "bake.json").string());
+    verifyListedFiles(from, sidecar);
+  } catch (const json::exception& e) {
+    corrupt(from, std::string("bake.json lacks a field or has a wrong type (") + e.what() + ")");
+  }
   std::vector<std::string> names = listedFiles(from, sidecar);
   names.push_back("bake.json");  // last: a complete copy is one with its sidecar
   for (const std::string& name : names)

@@ -48,10 +48,11 @@ double wallArea(const DisplayConfig& config) {
 // edge lengths that would need more than 20 million of them.
 void guardSize(const DisplayConfig& config, double area, double h) {
   const double triangles = area / (h * h / 16);
-  if (triangles > 2e7)
+  if (!(triangles <= 2e7))
     throw Error(ErrorCode::InvalidInput, config.name + ": edge length " + std::to_string(h) +
                                              " m is too small for this display (about " +
-                                             std::to_string(static_cast<long long>(triangles)) +
+                                             (triangles < 1e15 ? std::to_string(static_cast<long long>(triangles))
+                                                                 : std::to_string(triangles)) +
                                              " triangles)");
 }
 
@@ -282,9 +283,10 @@ bool displayMapIsIdentity(const DisplayConfig& config) {
 
 DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength) {
   const double h = resolveEdgeLength(config, edgeLength);
-  const CoarseDisplay display = assembleDisplay(config, h);
   // The source of a sphere field is about as large as the display again (more for small ones).
+  // Checked before anything is built: assembling a huge display at edge length h is itself slow.
   guardSize(config, wallArea(config) * (config.source == SourceField::Hemisphere ? 2 : 4), h);
+  const CoarseDisplay display = assembleDisplay(config, h);
   if (config.source == SourceField::Hemisphere) return hemisphereTemplates(config, display, h);
   if (display.closed()) return closedTemplates(config, display, h);
   if (const auto cap = boxCap(config, display)) return closureTemplates(config, display, *cap, h);

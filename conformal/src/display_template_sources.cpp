@@ -205,7 +205,10 @@ SourceCap coneCap(const DisplayConfig& config, const CoarseDisplay& display, dou
     normals.push_back(glm::normalize(glm::cross(a - c, b - c)));  // points away from the display
     radius += glm::length(a - c) / double(loop.size());
   }
-  const auto [q, margin] = kernelCentre(normals, 4000);
+  // Not a structured binding: lambdas below capture q, which clang 14 (the fuzz build) rejects.
+  const std::pair<glm::dvec3, double> kernel = kernelCentre(normals, 4000);
+  const glm::dvec3 q = kernel.first;
+  const double margin = kernel.second;
   // sin(1°): below it the cap's triangles next to some boundary edge degenerate.
   if (margin < 0.0175)
     throw Error(ErrorCode::InvalidInput,

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <set>
 
@@ -143,9 +144,9 @@ TEST(BakeFiles, CorruptOrPartialDirectoriesAreRejectedNamingTheCulprit) {
   fs::resize_file(truncated / "geom.exr", fs::file_size(truncated / "geom.exr") / 2);
   expectCorrupt(truncated, "geom.exr has");
   nlohmann::json sidecar = nlohmann::json::parse(readTextFile(truncated / "bake.json"));
-  sidecar["files"]["geom.exr"] = fs::file_size(truncated / "geom.exr");
+  sidecar["files"]["geom.exr"]["bytes"] = fs::file_size(truncated / "geom.exr");
   writeTextAtomically(truncated / "bake.json", sidecar.dump());
-  expectCorrupt(truncated, "geom.exr");
+  expectCorrupt(truncated, "geom.exr does not match its checksum");
   // Sidecar that does not match the maps.
   const fs::path mismatched = scratchDirectory("mismatched");
   copyBakeDirectory(dir, mismatched);
@@ -158,7 +159,7 @@ TEST(BakeFiles, CorruptOrPartialDirectoriesAreRejectedNamingTheCulprit) {
   writeTextAtomically(mismatched / "bake.json", sidecar.dump());
   expectCorrupt(mismatched, "format version 99");
   sidecar["format_version"] = kBakeFormatVersion;
-  sidecar["files"]["../../etc/passwd"] = 1;
+  sidecar["files"]["../../etc/passwd"] = {{"bytes", 1}, {"fnv1a64", "0"}};
   writeTextAtomically(mismatched / "bake.json", sidecar.dump());
   expectCorrupt(mismatched, "outside the directory");
   writeTextAtomically(mismatched / "bake.json", "{\"format\": ");
@@ -258,6 +259,49 @@ TEST(BakeCache, CorruptOrPartialEntriesAreRebuilt) {
   // No temporary folders are left behind.
   for (const auto& item : fs::directory_iterator(entry.parent_path()))
     EXPECT_EQ(item.path().filename().string().rfind(".tmp", 0), std::string::npos) << item.path();
+}
+
+// A wrongly typed config_hash raised an uncaught JSON type error (exit 3) and stayed, failing
+// every later run; a changed reference point was accepted and then failed every render. Both
+// are now removed and rebuilt; a flipped bit in an EXR is caught by its checksum.
+TEST(BakeCache, WronglyTypedMovedOrBitFlippedEntriesAreRebuilt) {
+  CountingSource source;
+  const fs::path cache = scratchDirectory("cache-hostile");
+  const BakedDisplay first = bakeDisplayWith(cave5(), smallBake(cache), std::ref(source));
+  const fs::path entry = first.cacheEntry;
+  auto bakeAgain = [&] { return bakeDisplayWith(cave5(), smallBake(cache), std::ref(source)); };
+  const auto edited = [&](const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json sidecar = nlohmann::json::parse(readTextFile(entry / "bake.json"));
+    edit(sidecar);
+    writeTextAtomically(entry / "bake.json", sidecar.dump());
+  };
+
+  edited([](nlohmann::json& s) { s["config_hash"] = 12345; });
+  BakedDisplay again = bakeAgain();
+  EXPECT_FALSE(again.fromCache);
+  EXPECT_NE(again.cacheNote.find("config hash 12345"), std::string::npos) << again.cacheNote;
+  EXPECT_TRUE(bakeAgain().fromCache);  // rebuilt, so later runs hit
+
+  edited([](nlohmann::json& s) { s["reference"] = {0.5, 0.0, 0.0}; });
+  again = bakeAgain();
+  EXPECT_FALSE(again.fromCache);
+  EXPECT_NE(again.cacheNote.find("reference point differs"), std::string::npos) << again.cacheNote;
+  EXPECT_TRUE(sameMaps(first.map, again.map));
+
+  edited([](nlohmann::json& s) { s["files"] = "not an object"; });
+  again = bakeAgain();
+  EXPECT_FALSE(again.fromCache);
+  EXPECT_FALSE(again.cacheNote.empty());
+
+  std::string bytes = readTextFile(entry / "geom.exr");
+  bytes[bytes.size() / 2] ^= 1;
+  writeTextAtomically(entry / "geom.exr", bytes);
+  again = bakeAgain();
+  EXPECT_FALSE(again.fromCache);
+  EXPECT_NE(again.cacheNote.find("geom.exr does not match its checksum"), std::string::npos)
+      << again.cacheNote;
+  EXPECT_EQ(source.calls, 5);
+  EXPECT_TRUE(bakeAgain().fromCache);
 }
 
 TEST(BakeCache, UnwritableCacheStillBakes) {

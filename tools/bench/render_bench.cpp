@@ -135,7 +135,7 @@ int main(int argc, char** argv) {
     RetargetMap map;
     std::string mapName;
     if (!mapDirectory.empty()) {
-      map = readRetargetMapDirectory(mapDirectory, config.reference);
+      map = readRetargetMapDirectory(mapDirectory);
       mapName = mapDirectory;
     } else if (displayMapIsIdentity(config)) {
       map = RetargetMap::identity(config.cubeResolution, {config.reference.x, config.reference.y,

@@ -9,6 +9,7 @@
 
 #include "command.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/input_limits.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/conformal/bake_verdict.hpp"
 #include "confvis/conformal/bake_files.hpp"
@@ -75,7 +76,9 @@ int runBake(const BakeArgs& args) {
   if (!baked.cacheNote.empty()) std::fprintf(stderr, "confvis bake: note: %s\n", baked.cacheNote.c_str());
   if (const std::string repair = repairNote(baked.sidecar); !repair.empty())
     std::fprintf(stderr, "confvis bake: note: %s\n", repair.c_str());
-  const fs::path output = args.output.empty() ? fs::path(baked.config.name + "-bake") : fs::path(args.output);
+  const fs::path output = args.output.empty()
+                              ? childPath({}, baked.config.name + "-bake", "display name")
+                              : fs::path(args.output);
   std::error_code ec;
   if (!baked.cacheEntry.empty() && fs::exists(baked.cacheEntry / "bake.json", ec))
     copyBakeDirectory(baked.cacheEntry, output);

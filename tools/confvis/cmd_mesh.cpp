@@ -2,7 +2,10 @@
 // trying `confvis flow` and for the benchmarks.
 #include <OpenMesh/Core/IO/MeshIO.hh>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
 
 #include "command.hpp"
 #include "confvis/base/atomic_file.hpp"
@@ -30,12 +33,19 @@ int runMesh(const MeshArgs& a) {
   else if (a.kind == "pants") mesh = makeDiskWithTwoHoles(a.resolution);
   const std::string output = a.output.empty() ? a.kind + ".obj" : a.output;
   writeFileAtomically(output, [&](const std::filesystem::path& temp) {
-    // OpenMesh picks the format by extension: keep the destination's on the temporary.
-    const std::filesystem::path named = temp.string() + std::filesystem::path(output).extension().string();
+    // Through our own stream, so a short write (a full disk) is seen: OpenMesh's file writer
+    // reports success whatever the stream's state. The format comes from the extension.
+    std::ofstream out(temp, std::ios::binary);
+    if (!out) throw Error(ErrorCode::IoFailure, "cannot open '" + output + "' for writing");
     OpenMesh::IO::Options options;
-    if (!OpenMesh::IO::write_mesh(mesh, named.string(), options, 17))
-      throw Error(ErrorCode::IoFailure, "cannot write mesh '" + output + "'");
-    std::filesystem::rename(named, temp);
+    const std::string extension = std::filesystem::path(output).extension().string();
+    if (!OpenMesh::IO::write_mesh(mesh, out, extension, options, 17))
+      throw Error(ErrorCode::IoFailure, "cannot write mesh '" + output +
+                                            "' (OBJ, OFF, PLY and STL are supported)");
+    out.close();
+    if (!out)
+      throw Error(ErrorCode::IoFailure,
+                  "writing mesh '" + output + "' failed (" + std::strerror(errno) + ")");
   });
   std::printf("%s: %zu vertices, %zu faces\n", output.c_str(), mesh.n_vertices(), mesh.n_faces());
   return 0;

@@ -15,8 +15,10 @@
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/input_limits.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "retarget_map_source.hpp"
+#include "scene_option.hpp"
 #include "shipped_files.hpp"
 
 namespace confvis::cli {
@@ -31,7 +33,7 @@ struct RenderArgs {
   std::string eyes = "mono", stereoRays = "exact", camera, mapDirectory, output;
   std::vector<std::string> walls;
   int spp = 1;
-  double scale = 1.0;
+  double scale = 1.0, sceneScale = 1.0;
   bool ambientOcclusion = false, quiet = false;
   ClusterCliOptions cluster;
 };
@@ -107,7 +109,7 @@ int runRender(const RenderArgs& args) {
   const double setupSeconds = secondsSince(start);
 
   auto stage = std::chrono::steady_clock::now();
-  const Scene scene = sceneByNameOrFile(args.scene);
+  const Scene scene = loadSceneInUnits(args.scene, args.sceneScale, config);
   const double loadSeconds = secondsSince(stage);
   stage = std::chrono::steady_clock::now();
   backend->setScene(scene);
@@ -120,8 +122,9 @@ int runRender(const RenderArgs& args) {
   const RenderResult& result = *rendered;
   const double renderSeconds = secondsSince(stage);
 
-  const fs::path output = args.output.empty() ? fs::path("out") / ("render-" + config.name)
-                                              : fs::path(args.output);
+  const fs::path output = args.output.empty()
+                              ? childPath("out", "render-" + config.name, "display name")
+                              : fs::path(args.output);
   nlohmann::json extra = {
       {"display", {{"config", configPath.string()}}},
       {"scene", {{"source", args.scene},
@@ -190,6 +193,7 @@ const RegisterCommand registration{Command{
       sub.add_option("--scale", args->scale, "Output resolution as a fraction of each wall's")
           ->check(kPositiveNumber)
           ->capture_default_str();
+      addSceneScaleOption(sub, args->sceneScale);
       sub.add_option("--map", args->mapDirectory,
                      "Baked map directory (ray.exr, geom.exr) for conformal mode");
       sub.add_flag("--ao", args->ambientOcclusion, "Ambient occlusion");

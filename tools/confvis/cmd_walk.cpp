@@ -26,6 +26,7 @@
 #include "confvis/engine/scene_loader.hpp"
 #include "confvis/runtime/tracker.hpp"
 #include "retarget_map_source.hpp"
+#include "scene_option.hpp"
 #include "shipped_files.hpp"
 
 namespace confvis::cli {
@@ -38,7 +39,7 @@ struct WalkArgs {
   std::string config, path, scene = "checker-tunnel", backend = "embree", output = "out/walk";
   int frames = 0;  // 0: one pass of the path
   int bakeResolution = 0;
-  double fps = 30.0, scale = 0.1, radius = 0.10, bakeEdgeLength = 0.0;
+  double fps = 30.0, scale = 0.1, radius = 0.10, bakeEdgeLength = 0.0, sceneScale = 1.0;
   bool noPacing = false, quiet = false, waitForBakes = false;
   ClusterCliOptions cluster;
 };
@@ -85,7 +86,7 @@ int runWalk(const WalkArgs& args) {
   if (args.cluster.enabled) cluster.emplace(config, args.cluster);
   const bool root = !cluster || cluster->isRoot();
   std::unique_ptr<RenderBackend> backend = makeBackend(args.backend);
-  const Scene scene = sceneByNameOrFile(args.scene);
+  const Scene scene = loadSceneInUnits(args.scene, args.sceneScale, config);
   backend->setScene(scene);
   if (!args.quiet && root)
     std::fprintf(stderr, "walk: baking the first map of '%s'...\n", config.name.c_str());
@@ -245,6 +246,7 @@ const RegisterCommand registration{Command{
       sub.add_option("--scene", args->scene,
                      "Built-in scene (checker-sphere, checker-tunnel, graph) or an OBJ/glTF file")
           ->capture_default_str();
+      addSceneScaleOption(sub, args->sceneScale);
       sub.add_option("--frames", args->frames, "Frames to render; default: one pass of the path")
           ->check(CLI::Range(1, 1000000));
       sub.add_option("--fps", args->fps, "Frames per second of path time")

@@ -46,8 +46,13 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "confvis %s: error: %s\n", sub->get_name().c_str(), e.what());
       return 2;
     } catch (const std::exception& e) {
+      // Every reader turns bad input into confvis::Error naming the file; reaching this is a bug.
       std::fprintf(stderr, "confvis %s: unexpected error: %s\n", sub->get_name().c_str(),
                    e.what());
+      return 3;
+    } catch (...) {
+      std::fprintf(stderr, "confvis %s: unexpected error (not a std::exception)\n",
+                   sub->get_name().c_str());
       return 3;
     }
   }

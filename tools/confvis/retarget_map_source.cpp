@@ -11,7 +11,7 @@ namespace confvis::cli {
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
                          bool showProgress) {
   if (!mapDirectory.empty())
-    return {readRetargetMapDirectory(mapDirectory, config.reference), mapDirectory};
+    return {readRetargetMapDirectory(mapDirectory), mapDirectory};
   if (displayMapIsIdentity(config)) {
     const Vec3d c{config.reference.x, config.reference.y, config.reference.z};
     return {RetargetMap::identity(config.cubeResolution, c),

@@ -14,7 +14,7 @@ struct MapSource {
   std::string origin;  // for the report: "identity (closed display without bezels)" or a path
 };
 
-// In order: --map DIR (a baked directory with ray.exr and geom.exr); the identity for a display
+// In order: --map DIR (a baked directory: bake.json, ray.exr, geom.exr); the identity for a display
 // whose map is the identity (displayMapIsIdentity); otherwise bakeDisplay (through the on-disk cache, so only the
 // first render of a display pays for the bake).
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,

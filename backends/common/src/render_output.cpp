@@ -7,6 +7,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/exr_io.hpp"
+#include "confvis/base/input_limits.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/engine/version.hpp"
 
@@ -66,6 +67,8 @@ nlohmann::json writeRenderOutput(const std::filesystem::path& directory,
     if (std::find(walls.begin(), walls.end(), image.wall) == walls.end())
       walls.push_back(image.wall);
   for (const std::string& wall : walls) {
+    // Wall names come from the display config: each must stay one file name inside `directory`.
+    requireFileNameSafe(wall, "display '" + config.name + "': wall name");
     const WallImage* left = find(result, wall, Eye::Left);
     const WallImage* right = find(result, wall, Eye::Right);
     const WallImage* centre = find(result, wall, Eye::Center);

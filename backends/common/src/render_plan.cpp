@@ -10,6 +10,29 @@ namespace confvis {
 
 namespace {
 
+// Beyond these a number is a typo, not a setting: the ray tracer works in float, and a camera at
+// 1e18 m breaks its assumptions (Embree asserts) instead of rendering.
+constexpr double kMaxCoordinateMetres = 1e6;
+constexpr double kMaxAngleDegrees = 36000.0;
+constexpr double kMaxOutputPixels = 65536.0;  // per side, as for a wall's own resolution
+
+void checkPosition(const char* what, const glm::dvec3& p) {
+  for (int i = 0; i < 3; ++i)
+    if (!(std::abs(p[i]) <= kMaxCoordinateMetres))
+      throw Error(ErrorCode::InvalidInput,
+                  std::string(what) + " (" + std::to_string(p.x) + ", " + std::to_string(p.y) +
+                      ", " + std::to_string(p.z) + ") must lie within " +
+                      std::to_string(static_cast<long long>(kMaxCoordinateMetres)) +
+                      " m of the origin on every axis");
+}
+
+void checkAngle(const char* what, double degrees) {
+  if (!(std::abs(degrees) <= kMaxAngleDegrees))
+    throw Error(ErrorCode::InvalidInput, std::string(what) + " must be within +-" +
+                                             std::to_string(static_cast<int>(kMaxAngleDegrees)) +
+                                             " degrees, got " + std::to_string(degrees));
+}
+
 int outputPixels(int wallPixels, double scale) {
   return std::max(1, static_cast<int>(std::lround(wallPixels * scale)));
 }
@@ -63,6 +86,10 @@ RenderPlan planRender(const DisplayConfig& config, const RetargetMap* map,
   if (!(settings.resolutionScale > 0.0) || !std::isfinite(settings.resolutionScale))
     throw Error(ErrorCode::InvalidInput, "resolution scale must be a positive number, got " +
                                              std::to_string(settings.resolutionScale));
+  checkPosition("the virtual camera position", settings.camera.position);
+  checkAngle("the virtual camera yaw", settings.camera.yawDegrees);
+  checkAngle("the virtual camera pitch", settings.camera.pitchDegrees);
+  checkPosition("the head position", settings.head.position);
   if (settings.mode == RenderMode::Conformal) checkMap(config, map);
 
   std::vector<int> wallIndices;
@@ -82,6 +109,11 @@ RenderPlan planRender(const DisplayConfig& config, const RetargetMap* map,
   RenderPlan plan;
   for (int wallIndex : wallIndices) {
     const Wall& wall = config.walls[static_cast<std::size_t>(wallIndex)];
+    if (!(std::max(wall.width, wall.height) * settings.resolutionScale <= kMaxOutputPixels))
+      throw Error(ErrorCode::InvalidInput,
+                  "resolution scale " + std::to_string(settings.resolutionScale) + " makes wall '" +
+                      wall.name + "' more than " +
+                      std::to_string(static_cast<int>(kMaxOutputPixels)) + " pixels wide or high");
     for (Eye eye : settings.eyes) {
       PlannedImage image;
       image.wallIndex = wallIndex;

@@ -11,7 +11,7 @@
 //   ray-checker.png, geom-checker.png   a checkerboard cube seen through each map
 //   source-disk.png, target-disk.png    the aligned disks with the checkerboard (Fig. 8.2)
 // Every file is written atomically, bake.json last: a directory whose bake.json lists files of
-// other sizes, or whose EXRs do not read back at the recorded resolution, is corrupt.
+// other sizes or checksums, or whose EXRs do not read back at the recorded resolution, is corrupt.
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -25,8 +25,10 @@ namespace confvis {
 struct DisplayConfig;
 
 inline constexpr const char* kBakeFormat = "confvis-bake";
-inline constexpr int kBakeFormatVersion = 4;  // 2: round trips split at the cut; 3: measured
-// across it; 4: aligned at the forward direction, checked (older cache entries are stale)
+// 2: round trips split at the cut; 3: measured across it; 4: aligned at the forward direction,
+// checked; 5: "files" holds each file's bytes and FNV-1a 64 checksum
+// ({"ray.exr": {"bytes": N, "fnv1a64": "..."}}). Older cache entries are stale.
+inline constexpr int kBakeFormatVersion = 5;
 
 // The sidecar for a fresh bake of `config` (the effective config, overrides applied). Measures
 // the baked map's quality (baked_map_quality.hpp) on every `qualityStride`-th texel; 0 picks a
@@ -42,6 +44,13 @@ nlohmann::json writeBakeDirectory(const std::filesystem::path& directory, const 
                         const RetargetMap& map, nlohmann::json sidecar, int threads = 0,
                         bool showProgress = false);
 
+// A map directory without the meshes and previews: ray.exr, geom.exr and a bake.json with the
+// map's reference point, resolution and the two files' sizes and checksums (no config, quality
+// or timings). For maps made otherwise than by a bake (tests, analytic maps); `confvis render
+// --map` reads it like a bake directory. Returns what it wrote to bake.json.
+nlohmann::json writeRetargetMapDirectory(const std::filesystem::path& directory,
+                                         const RetargetMap& map);
+
 struct LoadedBake {
   RetargetMap map;
   nlohmann::json sidecar;
@@ -49,7 +58,7 @@ struct LoadedBake {
 
 // Reads a bake directory back. Throws Error(FileNotFound) if bake.json is missing and
 // Error(IoFailure) naming the directory and the culprit if it is corrupt or partial: unreadable
-// sidecar, other format version, a listed file missing or of another size, an EXR that does not
+// sidecar, other format version, a listed file missing or of another size or checksum, an EXR that does not
 // read back at the recorded resolution or holds non-finite texels.
 LoadedBake loadBakeDirectory(const std::filesystem::path& directory);
 

@@ -31,8 +31,10 @@ MeshTopology analyzeTopology(const TriMesh& mesh);
 // Throws Error(InvalidInput) naming `what` unless the mesh is a single topological disk.
 void requireDisk(const TriMesh& mesh, const std::string& what);
 
-// Reads any format OpenMesh reads (OBJ, OFF, PLY, STL). Throws FileNotFound / InvalidInput with
-// the path; rejects meshes with no faces, non-finite coordinates or zero-length edges.
+// Reads OBJ, OFF, PLY (ascii, binary) and STL (ascii, binary) with confvis's own bounded readers
+// (limits in the README). Throws FileNotFound / InvalidInput with the path (and line); rejects
+// malformed files, meshes with no faces, non-manifold faces, non-finite coordinates or
+// zero-length edges.
 TriMesh readMesh(const std::filesystem::path& path);
 
 // Boundary loops as vertex index lists, each following the boundary half-edges.

@@ -1,5 +1,7 @@
 #include "confvis/base/atomic_file.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -12,6 +14,18 @@ namespace fs = std::filesystem;
 
 void writeFileAtomically(const fs::path& path, const std::function<void(const fs::path&)>& write) {
   std::error_code ec;
+  // A device or pipe (/dev/stdout, /dev/full) cannot be replaced by a rename: it is written in
+  // place, and its failures are the writer's to report like any other.
+  if (fs::exists(path, ec) && !fs::is_regular_file(path, ec) && !fs::is_directory(path, ec)) {
+    try {
+      write(path);
+    } catch (const Error&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw Error(ErrorCode::IoFailure, "writing '" + path.string() + "' failed: " + e.what());
+    }
+    return;
+  }
   if (path.has_parent_path()) {
     fs::create_directories(path.parent_path(), ec);
     if (ec)
@@ -46,7 +60,9 @@ void writeTextAtomically(const fs::path& path, const std::string& contents) {
     std::ofstream out(temp, std::ios::binary);
     out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
     out.close();
-    if (!out) throw Error(ErrorCode::IoFailure, "cannot write '" + path.string() + "'");
+    if (!out)
+      throw Error(ErrorCode::IoFailure, "cannot write '" + path.string() + "' (" +
+                                            std::strerror(errno) + ")");
   });
 }
 

@@ -1,4 +1,5 @@
 // Cube maps as OpenEXR environment maps and as cross-shaped PNG previews.
+#include <ImfChannelList.h>
 #include <ImfStandardAttributes.h>
 
 #include <algorithm>
@@ -51,6 +52,14 @@ CubeMap readCubeExr(const fs::path& path) {
     if (!Imf::hasEnvmap(file.header()) || Imf::envmap(file.header()) != Imf::ENVMAP_CUBE)
       throw Error(ErrorCode::IoFailure,
                   "EXR file '" + path.string() + "' is not a cube environment map (envmap = cube)");
+    // Cube maps hold directions in float32 (writeCubeExr): any other pixel type is a damaged
+    // or foreign file whose texels would be converted into wrong directions.
+    for (auto channel = file.header().channels().begin(); channel != file.header().channels().end();
+         ++channel)
+      if (channel.channel().type != Imf::FLOAT)
+        throw Error(ErrorCode::IoFailure, "cube map '" + path.string() + "': channel '" +
+                                              channel.name() +
+                                              "' is not float32 (a damaged or foreign file)");
     stacked = detail::readExrLayer(file, path, "");
   });
   if (stacked.width <= 0 || stacked.height != 6 * stacked.width)

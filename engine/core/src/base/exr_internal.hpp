@@ -14,6 +14,16 @@
 
 namespace confvis::detail {
 
+// Largest image the EXR readers allocate (16 bytes per pixel in memory): a wall's 65536-pixel
+// side, and 2^28 pixels (4 GiB) in all; a cube map of 8192 per face is 8192 x 49152 = 2^28.4,
+// so the cube reader's own limit (8192 per face) is checked by the shape first.
+inline constexpr long long kMaxExrSide = 65536;
+inline constexpr long long kMaxExrPixels = 8192LL * 6 * 8192;
+// An image needing more than 1 GiB in memory is read only from a file at least 1/2000 of that
+// size (ZIP, the writers' compression, stays far below 2000:1 on real images).
+inline constexpr long long kMaxExrBytesUnchecked = 1LL << 30;
+inline constexpr long long kMaxExrExpansion = 2000;
+
 // Throws Error(InvalidInput) naming `path` if the image is empty or has NaN/infinite values.
 void requireWritableImage(const std::filesystem::path& path, const ImageRGBA& image,
                           const char* what = "image");
@@ -34,7 +44,8 @@ void writeExrLayers(const std::filesystem::path& path, const std::vector<ExrLaye
 void withExrInput(const std::filesystem::path& path,
                   const std::function<void(Imf::InputFile&)>& use);
 
-// Reads channels <prefix>R, G, B (required) and A (optional, default 1) of the whole data window.
+// Reads channels <prefix>R, G, B (required) and A (optional, default 1) of the whole data window;
+// Error(IoFailure) for a window beyond kMaxExrSide / kMaxExrPixels.
 ImageRGBA readExrLayer(Imf::InputFile& file, const std::filesystem::path& path,
                        const std::string& prefix);
 

@@ -110,7 +110,26 @@ ImageRGBA readExrLayer(Imf::InputFile& file, const fs::path& path, const std::st
     if (!channels.findChannel(prefix + kChannels[c]))
       throw Error(ErrorCode::IoFailure,
                   "EXR file " + quoted(path) + " has no channel '" + prefix + kChannels[c] + "'");
-  ImageRGBA image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+  // The window comes from the file: bounded before anything of its size is allocated.
+  const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
+  const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
+  if (width <= 0 || height <= 0 || width > kMaxExrSide || height > kMaxExrSide ||
+      width * height > kMaxExrPixels)
+    throw Error(ErrorCode::IoFailure, "EXR file " + quoted(path) + " claims " +
+                                          std::to_string(width) + "x" + std::to_string(height) +
+                                          " pixels (at most " + std::to_string(kMaxExrSide) +
+                                          " per side and " + std::to_string(kMaxExrPixels) +
+                                          " in all)");
+  // Beyond 1 GiB in memory, the file must be large enough to hold it at a plausible compression
+  // ratio: a few kilobytes of header must not make confvis fill gigabytes.
+  std::error_code ec;
+  const auto fileBytes = static_cast<long long>(fs::file_size(path, ec));
+  const long long memoryBytes = width * height * 16;
+  if (memoryBytes > kMaxExrBytesUnchecked && (ec || memoryBytes / kMaxExrExpansion > fileBytes))
+    throw Error(ErrorCode::IoFailure, "EXR file " + quoted(path) + " claims " +
+                                          std::to_string(width) + "x" + std::to_string(height) +
+                                          " pixels in " + std::to_string(fileBytes) + " bytes");
+  ImageRGBA image(static_cast<int>(width), static_cast<int>(height));
   Imf::FrameBuffer frameBuffer;
   for (std::size_t c = 0; c < kChannels.size(); ++c) {
     const double fill = c == 3 ? 1.0 : 0.0;  // opaque when the file has no alpha

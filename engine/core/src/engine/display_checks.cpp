@@ -71,6 +71,12 @@ bool coplanarInteriorsIntersect(const Wall& a, const Wall& b) {
 }  // namespace
 
 void checkWallShape(const Wall& wall, const std::string& sourceName) {
+  for (const glm::dvec3& corner : {wall.lowerLeft, wall.lowerRight, wall.upperLeft})
+    for (int i = 0; i < 3; ++i)
+      if (!(std::abs(corner[i]) <= kMaxCoordinateMetres))
+        failWall(sourceName, wall, "has a corner coordinate of " + metres(corner[i]) +
+                                       " (at most " + metres(kMaxCoordinateMetres) +
+                                       " from the origin: a typo, not a display)");
   const double width = wall.widthMetres(), height = wall.heightMetres();
   if (width < kLengthTolerance)
     failWall(sourceName, wall, "is degenerate: lower_left and lower_right coincide (width " +

@@ -11,6 +11,9 @@ namespace confvis::detail {
 inline constexpr double kLengthTolerance = 1e-6;
 // Relative tolerance of the right angle between a wall's sides (|cos| of the corner angle).
 inline constexpr double kRightAngleTolerance = 1e-6;
+// Corners and the reference point lie within this many metres of the origin on every axis: a
+// display larger than 10 km is a typo (or millimetres), and would hang the mesh builders.
+inline constexpr double kMaxCoordinateMetres = 1e4;
 
 // Side lengths, right angle, bezels leaving a lit area.
 void checkWallShape(const Wall& wall, const std::string& sourceName);

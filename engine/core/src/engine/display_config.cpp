@@ -10,7 +10,10 @@
 #include <utility>
 
 #include "confvis/base/atomic_file.hpp"
+#include "confvis/base/checksum.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/input_limits.hpp"
+#include "confvis/base/json_text.hpp"
 #include "confvis/engine/display_import.hpp"
 #include "display_checks.hpp"
 
@@ -173,6 +176,7 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
   Wall wall;
   wall.name = byIndex.string("name");
   if (wall.name.empty()) byIndex.failKey("name", "must not be empty");
+  requireFileNameSafe(wall.name, byIndex.where() + ": wall name");  // it names output files
   const ObjectReader r(wallJson, sourceName + ": wall '" + wall.name + "'");
   r.rejectUnknownKeys({"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel",
                        "window", "stereo_output", "node"});
@@ -211,17 +215,6 @@ void readSource(const ObjectReader& top, const json& root, DisplayConfig& config
   config.hemisphereAxis = glm::normalize(axis);
 }
 
-std::string fnv1a64Hex(const std::string& text) {
-  std::uint64_t h = 14695981039346656037ULL;
-  for (const unsigned char ch : text) {
-    h ^= ch;
-    h *= 1099511628211ULL;
-  }
-  char buffer[17];
-  std::snprintf(buffer, sizeof buffer, "%016llx", static_cast<unsigned long long>(h));
-  return buffer;
-}
-
 json vecJson(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
 }  // namespace
@@ -233,7 +226,14 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
   DisplayConfig config;
   config.name = top.string("name");
   if (config.name.empty()) top.failKey("name", "must not be empty");
+  requireFileNameSafe(config.name, sourceName + ": display name");  // it names output folders
   config.reference = top.vec3("reference", config.reference);
+  for (int i = 0; i < 3; ++i)
+    if (!(std::abs(config.reference[i]) <= detail::kMaxCoordinateMetres))
+      top.failKey("reference", "must lie within " +
+                                   std::to_string(static_cast<int>(detail::kMaxCoordinateMetres)) +
+                                   " m of the origin on every axis, got " +
+                                   std::to_string(config.reference[i]));
   readSource(top, root, config);
   config.edgeLength = top.number("edge_length", config.edgeLength);
   if (config.edgeLength <= 0.0)
@@ -274,14 +274,7 @@ DisplayConfig loadDisplayConfig(const std::filesystem::path& path) {
   // SGCT and ParaView descriptions load directly, with default import options.
   if (detectDisplayFormat(path) != DisplayFormat::Confvis) return importDisplayConfig(path);
   const std::string text = readTextFile(path);  // Error(FileNotFound) naming the path
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::exception& e) {
-    // parse_error for syntax, out_of_range for numbers such as 1e999.
-    throw Error(ErrorCode::InvalidInput, path.string() + ": invalid JSON: " + e.what());
-  }
-  return parseDisplayConfig(root, path.string());
+  return parseDisplayConfig(parseJsonText(text, path.string()), path.string());
 }
 
 json toJson(const DisplayConfig& config) {

@@ -6,6 +6,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/json_text.hpp"
 
 namespace confvis {
 
@@ -21,7 +22,12 @@ std::string lowerExtension(const std::filesystem::path& path) {
 // SGCT's JSON has "nodes" (and no confvis "walls"); anything else, including unparsable text,
 // is left to the confvis reader, whose errors are the ones a confvis user expects.
 bool looksLikeSgctJson(const std::string& text) {
-  const nlohmann::json parsed = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+  nlohmann::json parsed;
+  try {
+    parsed = parseJsonText(text, "");
+  } catch (const Error&) {
+    return false;
+  }
   return parsed.is_object() && parsed.contains("nodes") && !parsed.contains("walls");
 }
 

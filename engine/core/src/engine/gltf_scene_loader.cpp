@@ -7,11 +7,16 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <map>
 
+#include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/input_limits.hpp"
+#include "gltf_file_checks.hpp"
 #include "scene_file_parts.hpp"
 
 namespace confvis::scene_files {
@@ -19,6 +24,8 @@ namespace confvis::scene_files {
 namespace {
 
 constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
+constexpr const char* kDraco = "KHR_draco_mesh_compression";
+constexpr const char* kTextureTransform = "KHR_texture_transform";
 
 class GltfReader {
  public:
@@ -27,6 +34,7 @@ class GltfReader {
 
   Scene read() {
     scene_.name = path_.filename().string();
+    for (const std::string& extension : model_.extensionsRequired) requireSupported(extension);
     for (const tinygltf::Material& material : model_.materials) readMaterial(material);
     for (int root : rootNodes()) visitNode(root, glm::dmat4(1.0), 0);
     return std::move(scene_);
@@ -35,6 +43,16 @@ class GltfReader {
  private:
   [[noreturn]] void fail(const std::string& message) const {
     throw Error(ErrorCode::InvalidInput, "glTF file '" + path_.string() + "': " + message);
+  }
+
+  // Extensions a file may require that this reader honours; any other required one changes the
+  // meaning of the data (compression, quantisation), so the file is refused rather than misread.
+  void requireSupported(const std::string& extension) const {
+    if (extension == kDraco)
+      fail("Draco-compressed meshes (KHR_draco_mesh_compression) are not supported; export the "
+           "model without Draco compression");
+    if (extension != kTextureTransform)
+      fail("requires the extension '" + extension + "', which confvis does not support");
   }
 
   std::vector<int> rootNodes() const {
@@ -72,6 +90,11 @@ class GltfReader {
     if (index < 0 || index >= static_cast<int>(model_.nodes.size()))
       fail("node index " + std::to_string(index) + " out of range");
     if (depth > 256) fail("node hierarchy deeper than 256 (a cycle?)");
+    // A node may be listed as a child many times (instancing): a small file could otherwise
+    // make exponentially many copies.
+    if (++nodeInstances_ > kMaxNodeInstances)
+      fail("more than " + std::to_string(kMaxNodeInstances) +
+           " node instances (nodes listed as children of several parents multiply)");
     const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(index)];
     const glm::dmat4 world = parent * localTransform(node);
     if (node.mesh >= 0) {
@@ -104,10 +127,17 @@ class GltfReader {
     const int elementSize = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType)) *
                             tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type));
     if (stride <= 0 || elementSize <= 0) fail(what + ": invalid accessor layout");
+    // Offsets and counts come from the file: every sum and product is checked before it could
+    // wrap (a byteOffset near 2^64 must not pass as a small one).
+    if (!byteRangeFits(view.byteOffset, view.byteLength, data.size()))
+      fail(what + ": buffer view " + std::to_string(a.bufferView) +
+           " reaches past the end of its buffer");
+    std::size_t span = 0;
+    if (!stridedSpan(a.count, static_cast<std::size_t>(stride),
+                     static_cast<std::size_t>(elementSize), span) ||
+        !byteRangeFits(a.byteOffset, span, view.byteLength))
+      fail(what + ": accessor reaches past the end of its buffer view");
     const std::size_t start = view.byteOffset + a.byteOffset;
-    if (a.count > 0 && start + (a.count - 1) * static_cast<std::size_t>(stride) +
-                               static_cast<std::size_t>(elementSize) > data.size())
-      fail(what + ": accessor reaches past the end of its buffer");
     std::vector<const unsigned char*> result(a.count);
     for (std::size_t i = 0; i < a.count; ++i)
       result[i] = data.data() + start + i * static_cast<std::size_t>(stride);
@@ -192,7 +222,13 @@ class GltfReader {
       const auto it = primitive.attributes.find(key);
       return it == primitive.attributes.end() ? -1 : it->second;
     };
+    if (primitive.extensions.count(kDraco))
+      fail("'" + name + "' is Draco-compressed (KHR_draco_mesh_compression), which is not "
+           "supported; export the model without Draco compression");
     if (attribute("POSITION") < 0) fail("'" + name + "' has no POSITION attribute");
+    reserveSceneSize(name, accessor(attribute("POSITION"), name + " POSITION").count,
+                     primitive.indices >= 0 ? accessor(primitive.indices, name + " indices").count
+                                            : accessor(attribute("POSITION"), name).count);
     Mesh mesh;
     mesh.name = name;
     mesh.material = primitive.material;
@@ -200,6 +236,17 @@ class GltfReader {
     mesh.positions = readVectors<3>(attribute("POSITION"), name + " POSITION");
     if (attribute("NORMAL") >= 0) mesh.normals = readVectors<3>(attribute("NORMAL"), name + " NORMAL");
     if (attribute("TEXCOORD_0") >= 0) mesh.uvs = readVectors<2>(attribute("TEXCOORD_0"), name + " TEXCOORD_0");
+    // Every attribute has one value per vertex (found by fuzz_gltf: a short TEXCOORD_0 was read
+    // past its end when flat normals were made).
+    if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
+      fail(name + ": NORMAL has " + std::to_string(mesh.normals.size()) + " values for " +
+           std::to_string(mesh.positions.size()) + " positions");
+    if (!mesh.uvs.empty() && mesh.uvs.size() != mesh.positions.size())
+      fail(name + ": TEXCOORD_0 has " + std::to_string(mesh.uvs.size()) + " values for " +
+           std::to_string(mesh.positions.size()) + " positions");
+    if (mesh.material >= 0)
+      for (glm::vec2& uv : mesh.uvs)
+        uv = glm::vec2(uvTransforms_[static_cast<std::size_t>(mesh.material)] * glm::vec3(uv, 1.0f));
     std::vector<unsigned> indices;
     if (primitive.indices >= 0) {
       indices = readIndices(primitive.indices, name + " indices");
@@ -219,6 +266,45 @@ class GltfReader {
     scene_.meshes.push_back(std::move(mesh));
   }
 
+  // Counts come from the file's accessors; the sum over every instance is bounded before any of
+  // it is read (corners: each index may become a vertex of its own).
+  void reserveSceneSize(const std::string& name, std::size_t vertices, std::size_t corners) {
+    vertexTotal_ += vertices;
+    cornerTotal_ += corners;
+    if (vertexTotal_ > kMaxSceneVertices || cornerTotal_ / 3 > kMaxSceneTriangles)
+      fail("'" + name + "' takes the scene past " + std::to_string(kMaxSceneVertices) +
+           " vertices or " + std::to_string(kMaxSceneTriangles) + " triangles");
+  }
+
+  // KHR_texture_transform of a texture reference as the 3x3 matrix its README gives,
+  // offset * rotation * scale, applied to TEXCOORD_0 at load.
+  glm::mat3 uvTransform(const tinygltf::TextureInfo& info, const std::string& materialName) const {
+    const auto found = info.extensions.find(kTextureTransform);
+    if (found == info.extensions.end() || !found->second.IsObject()) return glm::mat3(1.0f);
+    const tinygltf::Value& t = found->second;
+    const auto pair = [&](const char* key, glm::vec2 fallback) {
+      if (!t.Has(key)) return fallback;
+      const tinygltf::Value& v = t.Get(key);
+      if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+        fail("material '" + materialName + "': KHR_texture_transform '" + key +
+             "' must be 2 numbers");
+      return glm::vec2(static_cast<float>(v.Get(0).GetNumberAsDouble()),
+                       static_cast<float>(v.Get(1).GetNumberAsDouble()));
+    };
+    const glm::vec2 offset = pair("offset", glm::vec2(0.0f)), scale = pair("scale", glm::vec2(1.0f));
+    const float rotation = t.Has("rotation") && t.Get("rotation").IsNumber()
+                               ? static_cast<float>(t.Get("rotation").GetNumberAsDouble())
+                               : 0.0f;
+    if (t.Has("texCoord") && t.Get("texCoord").IsNumber() && t.Get("texCoord").GetNumberAsInt() != 0)
+      warn(path_, "material '" + materialName +
+                      "': KHR_texture_transform asks for another TEXCOORD set; TEXCOORD_0 is used");
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    const glm::mat3 translate(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
+    const glm::mat3 rotate(c, s, 0, -s, c, 0, 0, 0, 1);  // column-major, as in the README's GLSL
+    const glm::mat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
+    return translate * rotate * scaling;
+  }
+
   void readMaterial(const tinygltf::Material& source) {
     Material material;
     material.name = source.name;
@@ -231,6 +317,7 @@ class GltfReader {
                         std::to_string(pbr.baseColorTexture.texCoord) + "; TEXCOORD_0 is used");
       material.baseColorTexture = textureForImage(pbr.baseColorTexture.index, source.name);
     }
+    uvTransforms_.push_back(uvTransform(pbr.baseColorTexture, source.name));
     scene_.materials.push_back(material);
   }
 
@@ -258,16 +345,37 @@ class GltfReader {
   const tinygltf::Model& model_;
   Scene scene_;
   std::map<int, int> textureOfImage_;  // glTF image -> Scene texture (decoded once)
+  std::vector<glm::mat3> uvTransforms_;  // per material: KHR_texture_transform of its texture
+  std::size_t nodeInstances_ = 0, vertexTotal_ = 0, cornerTotal_ = 0;
 };
 
 }  // namespace
 
 Scene loadGltfScene(const std::filesystem::path& path, bool binary) {
+  const std::string bytes = readTextFile(path);
+  if (bytes.size() > std::numeric_limits<unsigned>::max())
+    throw Error(ErrorCode::InvalidInput, "glTF file '" + path.string() + "' is larger than 4 GiB");
+  requireGltfJsonDepth(bytes, binary, path);
   tinygltf::TinyGLTF loader;
   tinygltf::Model model;
+  loader.SetImageLoader(&decodeGltfImage, &model);
+  loader.SetFsCallbacks(gltfFileAccess());
   std::string error, warning;
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &error, &warning, path.string())
-                         : loader.LoadASCIIFromFile(&model, &error, &warning, path.string());
+  bool ok = false;
+  const auto size = static_cast<unsigned>(bytes.size());
+  const std::string baseDirectory = path.parent_path().string();
+  try {  // tinygltf throws from its JSON parser and allocations; each names this file
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                              reinterpret_cast<const unsigned char*>(bytes.data()),
+                                              size, baseDirectory)
+                : loader.LoadASCIIFromString(&model, &error, &warning, bytes.data(), size,
+                                             baseDirectory);
+  } catch (const std::exception& e) {
+    throw Error(ErrorCode::InvalidInput,
+                "cannot load glTF file '" + path.string() + "': " + e.what());
+  }
+  while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+  while (!warning.empty() && (warning.back() == '\n' || warning.back() == ' ')) warning.pop_back();
   if (!warning.empty()) warn(path, warning);
   if (!ok)
     throw Error(ErrorCode::InvalidInput, "cannot load glTF file '" + path.string() + "': " +

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/json_text.hpp"
 #include "import_parts.hpp"
 
 namespace confvis {
@@ -167,12 +168,7 @@ void readJsonViewport(const JsonAt& viewport, const JsonAt& window, const std::s
 
 DisplayConfig parseSgctJson(const std::string& text, const std::string& sourceName,
                             const ImportOptions& options, ImportReport* report) {
-  json parsed;
-  try {
-    parsed = json::parse(text);
-  } catch (const json::exception& e) {
-    throw Error(ErrorCode::InvalidInput, sourceName + ": invalid JSON: " + e.what());
-  }
+  const json parsed = parseJsonText(text, sourceName);
   const JsonAt root(parsed, "", sourceName);
   detail::ImportedDisplay display;
   display.format = DisplayFormat::SgctJson;

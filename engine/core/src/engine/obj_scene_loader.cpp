@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "confvis/base/error.hpp"
+#include "obj_text.hpp"
 #include "scene_file_parts.hpp"
 
 namespace confvis::scene_files {
@@ -35,7 +36,7 @@ std::vector<Material> objMaterials(const std::filesystem::path& path,
   std::map<std::string, int> textureOf;  // a map_Kd used by several materials is read once
   for (const tinyobj::material_t& m : source) {
     Material material;
-    material.name = m.name;
+    material.name = restoredMaterialName(m.name);
     material.baseColorFactor = glm::vec4(m.diffuse[0], m.diffuse[1], m.diffuse[2], m.dissolve);
     if (!m.diffuse_texname.empty()) {
       const std::filesystem::path file = path.parent_path() / m.diffuse_texname;
@@ -46,7 +47,7 @@ std::vector<Material> objMaterials(const std::filesystem::path& path,
           textures.push_back(loadTextureFile(file));
           index = static_cast<int>(textures.size()) - 1;
         } catch (const Error& error) {
-          warn(path, std::string("material '") + m.name + "': " + error.what() +
+          warn(path, "material '" + material.name + "': " + error.what() +
                          "; using its colour without the texture");
         }
         found = textureOf.emplace(file.string(), index).first;
@@ -63,9 +64,9 @@ std::vector<Material> objMaterials(const std::filesystem::path& path,
 Scene loadObjScene(const std::filesystem::path& path) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
-  config.mtl_search_path = path.parent_path().string();
+  const ObjText text = prepareObjText(path);
   tinyobj::ObjReader reader;
-  const bool ok = reader.ParseFromFile(path.string(), config);
+  const bool ok = reader.ParseFromString(text.obj, text.mtl, config);
   if (!ok || !reader.Error().empty())
     throw Error(ErrorCode::InvalidInput, "cannot load OBJ file '" + path.string() + "': " +
                                              (reader.Error().empty() ? "parse failed"

@@ -2,12 +2,32 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "confvis/base/error.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
 #include "scene_file_parts.hpp"
 
 namespace confvis {
+
+namespace {
+
+// Exporters write (0, 0, 0) normals for degenerate or unsmoothed faces; normalised they are NaN
+// and would shade the whole render wrong. Such a mesh gets flat normals, with a warning.
+void repairNormals(Scene& scene, const std::filesystem::path& path) {
+  for (Mesh& mesh : scene.meshes) {
+    const auto bad = std::count_if(mesh.normals.begin(), mesh.normals.end(), [](const glm::vec3& n) {
+      const float length = glm::length(n);
+      return !std::isfinite(length) || length < 1e-12f;
+    });
+    if (bad == 0) continue;
+    scene_files::warn(path, "mesh '" + mesh.name + "': " + std::to_string(bad) +
+                                " zero-length or non-finite normals; using flat face normals");
+    generateFlatNormals(mesh);
+  }
+}
+
+}  // namespace
 
 Scene loadScene(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
@@ -22,6 +42,7 @@ Scene loadScene(const std::filesystem::path& path) {
   Scene scene = extension == ".obj" ? scene_files::loadObjScene(path)
                                     : scene_files::loadGltfScene(path, extension == ".glb");
   scene.name = path.string();  // validation messages then name the file
+  repairNormals(scene, path);
   validateScene(scene);
   return scene;
 }

@@ -52,6 +52,11 @@ Texture loadTextureFile(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path))
     throw Error(ErrorCode::FileNotFound, "texture image '" + path.string() + "' does not exist");
   int width = 0, height = 0, channels = 0;
+  if (stbi_info(path.c_str(), &width, &height, &channels) && !texturePixelsAllowed(width, height))
+    throw Error(ErrorCode::InvalidInput, "texture image '" + path.string() + "' is " +
+                                             std::to_string(width) + "x" + std::to_string(height) +
+                                             " pixels (at most " +
+                                             std::to_string(kMaxTexturePixels) + ")");
   const bool hdr = stbi_is_hdr(path.c_str()) != 0;
   const std::unique_ptr<void, void (*)(void*)> pixels(
       hdr ? static_cast<void*>(stbi_loadf(path.c_str(), &width, &height, &channels, 0))

@@ -9,12 +9,11 @@
 
 namespace confvis {
 
-// A directory written by `confvis bake` (it has bake.json) is read by loadBakeDirectory, which
-// validates it and takes the map's reference point from the sidecar. Otherwise reads DIR/ray.exr
-// and DIR/geom.exr (OpenEXR cube maps, confvis layout) with `reference` as the maps' centre. Throws Error(FileNotFound) naming a missing directory or file,
-// Error(IoFailure / InvalidInput) naming a malformed one, and Error(InvalidInput) when the two
-// maps differ in size.
-RetargetMap readRetargetMapDirectory(const std::filesystem::path& directory,
-                                     const glm::dvec3& reference);
+// A directory written by `confvis bake` or writeRetargetMapDirectory (bake_files.hpp), read by
+// loadBakeDirectory: verified as a whole (each file's size and checksum in bake.json, float32
+// cube maps of the recorded resolution) and with the map's reference point from bake.json.
+// Throws Error(FileNotFound) naming a missing directory, Error(InvalidInput) for a directory
+// without bake.json, Error(IoFailure) naming the culprit of a corrupt one.
+RetargetMap readRetargetMapDirectory(const std::filesystem::path& directory);
 
 }  // namespace confvis

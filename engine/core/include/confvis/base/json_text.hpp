@@ -1,0 +1,13 @@
+#pragma once
+// JSON text from files, parsed the same way by every reader: nesting bounded before the parser
+// runs (input_limits.hpp), syntax errors and out-of-range numbers as Error(InvalidInput) naming
+// the file.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace confvis {
+
+nlohmann::json parseJsonText(const std::string& text, const std::string& sourceName);
+
+}  // namespace confvis
