@@ -47,6 +47,9 @@ TEST(UmbrellaHeader, IncludesEveryPublicHeader) {
   ASSERT_GT(headers.size(), 40u);  // the scan found the modules' include folders
   for (const std::string& header : headers) {
     if (header == "confvis/confvis.hpp") continue;
+    // The cluster is a component of its own (find_package(confvis COMPONENTS cluster)): it
+    // needs MPI, which an application without a cluster must not have to find.
+    if (header == "confvis/runtime/cluster.hpp") continue;
     EXPECT_TRUE(included.count(header)) << "confvis.hpp does not include " << header;
   }
   for (const std::string& header : included)

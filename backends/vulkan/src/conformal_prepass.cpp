@@ -196,7 +196,8 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
                         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, errorWalls_.get());
   const std::size_t errorWalls =
       thresholds.errorWalls.size() <= kMaxErrorWalls ? thresholds.errorWalls.size() : 0;
-  std::memcpy(errorWalls_.mapped(), thresholds.errorWalls.data(), errorWalls * sizeof(ErrorWall));
+  if (errorWalls > 0)  // data() may be null for an empty list, which memcpy must not get
+    std::memcpy(errorWalls_.mapped(), thresholds.errorWalls.data(), errorWalls * sizeof(ErrorWall));
 
   // Empty lists (the flat list spans the mesh's range: writeFlat), one instance, each mesh's own
   // index range and vertex offset.

@@ -290,7 +290,7 @@ json toJson(const DisplayConfig& config) {
                        {"right", w.bezel.right},
                        {"bottom", w.bezel.bottom},
                        {"top", w.bezel.top}}}});
-    if (!w.node.empty()) walls.back()["node"] = w.node;  // absent: hashes of node-less configs stay
+    if (!w.node.empty()) walls.back()["node"] = w.node;
     detail::writeWallOutput(w.output, walls.back());
   }
   const char* field = config.source == SourceField::Hemisphere ? "hemisphere" : "sphere";

@@ -134,6 +134,7 @@ json withoutWallOutputs(json displayJson) {
     for (json& wall : displayJson["walls"]) {
       wall.erase("window");
       wall.erase("stereo_output");
+      wall.erase("node");  // which cluster process draws it: no map changes either
     }
   return displayJson;
 }

@@ -144,10 +144,14 @@ Scene buildGraph(const BuiltinSceneOptions& options) {
   std::vector<glm::dvec3> clusterCentres;
   std::vector<std::vector<glm::vec3>> nodes(kGraphClusters);
   for (int c = 0; c < kGraphClusters; ++c) {
-    clusterCentres.push_back((5.0 + 7.0 * random.uniform()) * random.direction());
+    // Draws in named steps: operands and arguments are evaluated in an unspecified order (GCC
+    // right to left, clang left to right), and the scene must not depend on the compiler. The
+    // order is GCC's, which drew the stored goldens.
+    const glm::dvec3 direction = random.direction();
+    clusterCentres.push_back((5.0 + 7.0 * random.uniform()) * direction);
     for (int k = 0; k < kGraphNodesPerCluster; ++k) {
-      glm::dvec3 p = clusterCentres.back() +
-                     kClusterSpread * glm::dvec3(random.normal(), random.normal(), random.normal());
+      const double z = random.normal(), y = random.normal(), x = random.normal();
+      glm::dvec3 p = clusterCentres.back() + kClusterSpread * glm::dvec3(x, y, z);
       const double distance = std::clamp(glm::length(p), kMinDistance, kMaxDistance);
       nodes[static_cast<std::size_t>(c)].emplace_back(distance * glm::normalize(p));
     }
@@ -183,9 +187,11 @@ Scene buildGraph(const BuiltinSceneOptions& options) {
     std::partial_sort(byDistance.begin(), byDistance.begin() + kLinkedClusters, byDistance.end());
     for (int l = 0; l < kLinkedClusters; ++l) {
       const std::size_t d = byDistance[static_cast<std::size_t>(l)].second;
-      for (int e = 0; e < kEdgesPerClusterLink; ++e)
-        appendEdge(links, nodes[c][random.index(nodes[c].size())],
-                   nodes[d][random.index(nodes[d].size())]);
+      for (int e = 0; e < kEdgesPerClusterLink; ++e) {
+        const std::size_t to = random.index(nodes[d].size());
+        const std::size_t from = random.index(nodes[c].size());
+        appendEdge(links, nodes[c][from], nodes[d][to]);
+      }
     }
   }
   scene.meshes.push_back(std::move(links));

@@ -11,6 +11,7 @@
 
 #include "cluster_maps.hpp"
 #include "cluster_transport.hpp"
+#include "confvis/base/checksum.hpp"
 #include "confvis/engine/version.hpp"
 #include "confvis/runtime/wall_assignment.hpp"
 
@@ -83,7 +84,7 @@ Cluster::Cluster(MPI_Comm comm, const DisplayConfig& display, ClusterOptions opt
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &size);
   hosts_.assign(size, "unknown");
-  const json hello = {{"host", hostName()}, {"addresses", hostAddresses()}, {"hash", display.hash},
+  const json hello = {{"host", hostName()}, {"addresses", hostAddresses()}, {"hash", fnv1a64Hex(toJson(display).dump())},
                       {"version", versionString()}, {"display", display.name}};
   const auto deadline = deadlineIn(options_.timeoutSeconds);
   json answer;

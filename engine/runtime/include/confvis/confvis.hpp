@@ -23,6 +23,10 @@
 #include "confvis/base/png_io.hpp"
 #include "confvis/base/progress.hpp"
 #include "confvis/base/vec3.hpp"
+#include "confvis/base/checksum.hpp"
+#include "confvis/base/input_limits.hpp"
+#include "confvis/base/json_text.hpp"
+#include "confvis/base/text_encoding.hpp"
 
 // Displays, viewers and their off-axis views, head tracking, scenes.
 #include "confvis/engine/builtin_scenes.hpp"
@@ -36,6 +40,10 @@
 #include "confvis/engine/version.hpp"
 #include "confvis/engine/view.hpp"
 #include "confvis/engine/viewer.hpp"
+#include "confvis/engine/default_edge_length.hpp"
+#include "confvis/engine/display_output.hpp"
+#include "confvis/engine/scene_units.hpp"
+#include "confvis/engine/tracking_config.hpp"
 
 // The conformal map of a display, baked into direction cube maps (bakeDisplay: config -> map,
 // with the on-disk cache), their files and their measured quality.
@@ -58,12 +66,29 @@
 #include "confvis/conformal/mobius.hpp"
 #include "confvis/conformal/obj_output.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
+#include "confvis/conformal/bake_verdict.hpp"
+#include "confvis/conformal/map_alignment_quality.hpp"
 
 // Keeping the map around the tracked head.
 #include "confvis/runtime/background_bake.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/runtime/tracker_factory.hpp"
 #include "confvis/runtime/udp_tracker.hpp"
+
+// The live display: windows, swapchains, the frame loop (confvis view), and the frame state a
+// cluster shares (confvis/runtime/cluster.hpp itself is the cluster component: it needs MPI).
+#include "confvis/runtime/background_priority.hpp"
+#include "confvis/runtime/camera_controls.hpp"
+#include "confvis/runtime/display_window.hpp"
+#include "confvis/runtime/frame_log.hpp"
+#include "confvis/runtime/frame_state.hpp"
+#include "confvis/runtime/live_view.hpp"
+#include "confvis/runtime/present_context.hpp"
+#include "confvis/runtime/tracker_packets.hpp"
+#include "confvis/runtime/wall_assignment.hpp"
+#include "confvis/runtime/window_content.hpp"
+#include "confvis/runtime/window_plan.hpp"
+#include "confvis/runtime/window_presenter.hpp"
 
 // Rendering through the map (backends: Embree, Vulkan): render plans and eyeName(), typed frame
 // statistics (frameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).

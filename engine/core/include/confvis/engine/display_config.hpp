@@ -47,7 +47,8 @@ struct Wall {
   int width = 0, height = 0;  // pixels of the lit area
   Bezel bezel;
   WallOutput output;  // where its pixels go on a live display; not part of the hash
-  std::string node;  // cluster host name or rank number that draws this wall; empty: any
+  std::string node;  // cluster host name or rank number that draws this wall; empty: any. Not
+                     // part of the hash
 
   glm::dvec3 upperRight() const;
   glm::dvec3 right() const;   // unit, lower-left -> lower-right
@@ -76,8 +77,8 @@ struct DisplayConfig {
   int cubeResolution = 256;                  // baked cube-map face size, texels
   double eyeSeparation = 0.064;              // metres
   TrackingConfig tracking;                   // live head tracker; not part of the hash
-  // Hex FNV-1a 64 of toJson(*this).dump() without "tracking" and the walls' outputs: identifies
-  // a display for caches of baked maps.
+  // Hex FNV-1a 64 of toJson(*this).dump() without "tracking" and the walls' outputs and nodes:
+  // identifies a display for caches of baked maps (none of those change a map).
   std::string hash;
 
   // Throws Error(InvalidInput) naming the unknown wall and listing the known ones.

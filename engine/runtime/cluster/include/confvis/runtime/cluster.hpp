@@ -53,7 +53,8 @@ struct ClusterOptions {
 class Cluster {
  public:
   // Collective. Checks that every rank runs the same confvis version on a display with the same
-  // config hash as the root (ClusterError naming the first rank and host that differs), learns
+  // config as the root, every field included (ClusterError naming the first rank and host that
+  // differs), learns
   // every rank's host name and deals the walls (wall_assignment.hpp). Sets MPI_ERRORS_RETURN on
   // a duplicate of `comm`, which the Cluster owns.
   Cluster(MPI_Comm comm, const DisplayConfig& display, ClusterOptions options = {});
