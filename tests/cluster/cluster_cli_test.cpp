@@ -25,17 +25,21 @@ namespace {
 const std::string kMpiEnvironment =
     "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1";
 
-// `ranks` copies of `confvis args` under mpirun.
-CliRun runMpi(int ranks, const std::string& args) {
-  const std::string command = kMpiEnvironment + " " + CONFVIS_MPIEXEC + " --oversubscribe -np " +
-                              std::to_string(ranks) + " " + CONFVIS_CLI_PATH + " " + args +
-                              " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
+// Everything a command started with popen prints, and its exit status, once it ended.
+CliRun finish(FILE* pipe) {
   std::string output;
   char buffer[4096];
   while (pipe && fgets(buffer, sizeof buffer, pipe)) output += buffer;
   const int status = pipe ? pclose(pipe) : -1;
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// `ranks` copies of `confvis args` under mpirun.
+CliRun runMpi(int ranks, const std::string& args) {
+  const std::string command = kMpiEnvironment + " " + CONFVIS_MPIEXEC + " --oversubscribe -np " +
+                              std::to_string(ranks) + " " + CONFVIS_CLI_PATH + " " + args +
+                              " 2>&1";
+  return finish(popen(command.c_str(), "r"));
 }
 
 std::string bytes(const fs::path& file) {
@@ -133,14 +137,10 @@ TEST(ClusterCli, AMismatchedConfigIsRefusedAtStartNamingTheRank) {
                               " --oversubscribe -np 1 " + base + "-o " +
                               scratch("mismatch").string() + " : -np 1 " + base + other.string() +
                               " -o " + scratch("mismatch").string() + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  char buffer[4096];
-  while (pipe && fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pclose(pipe);
-  EXPECT_NE(WEXITSTATUS(status), 0) << output;
-  EXPECT_NE(output.find("rank 1 (host"), std::string::npos) << output;
-  EXPECT_NE(output.find("config hash"), std::string::npos) << output;
+  const CliRun run = finish(popen(command.c_str(), "r"));
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("rank 1 (host"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("config hash"), std::string::npos) << run.output;
   EXPECT_FALSE(fs::exists(scratch("mismatch") / "render.json"));
 }
 
@@ -173,13 +173,7 @@ struct RunningWalk {
     return pid;
   }
   // Everything mpirun and the ranks print, and the exit status, once the job ended.
-  CliRun finish() {
-    std::string output;
-    char buffer[4096];
-    while (fgets(buffer, sizeof buffer, pipe)) output += buffer;
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
-  }
+  CliRun finish() { return ::finish(pipe); }
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
