@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
+#include <thread>
 
 #include "command.hpp"
 #include "confvis/base/error.hpp"
@@ -25,6 +26,14 @@ void addClusterOptions(CLI::App& sub, ClusterCliOptions& options) {
                "(a lab's cluster config tried on one machine)");
 }
 
+namespace {
+bool clusterFailed = false;  // a CliCluster was left by an exception
+}  // namespace
+
+void lingerAfterClusterError() {
+  if (clusterFailed) std::this_thread::sleep_for(std::chrono::seconds(1));
+}
+
 #ifdef CONFVIS_HAVE_CLUSTER
 
 CliCluster::CliCluster(const DisplayConfig& display, const ClusterCliOptions& options) {
@@ -42,7 +51,10 @@ CliCluster::CliCluster(const DisplayConfig& display, const ClusterCliOptions& op
 }
 
 CliCluster::~CliCluster() {
-  if (std::uncaught_exceptions() > 0) return;  // see the class comment
+  if (std::uncaught_exceptions() > 0) {  // see the class comment
+    clusterFailed = true;
+    return;
+  }
   cluster_.reset();
   MPI_Finalize();
 }

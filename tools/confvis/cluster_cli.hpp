@@ -24,6 +24,11 @@ struct ClusterCliOptions {
 };
 void addClusterOptions(CLI::App& sub, ClusterCliOptions& options);
 
+// After an error in a --cluster run: waits a moment before the process exits, because the first
+// rank to exit makes mpirun end the others, which may not have printed their own message yet.
+// Does nothing when no cluster failed.
+void lingerAfterClusterError();
+
 // MPI and a Cluster for one command. MPI_Finalize at the end of a successful run only: after an
 // error a lost rank could keep MPI_Finalize waiting forever, so the process just exits non-zero
 // (mpirun then ends the others).

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 
+#include "cluster_cli.hpp"
 #include "command.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/engine/version.hpp"
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
       return action();
     } catch (const confvis::Error& e) {
       std::fprintf(stderr, "confvis %s: error: %s\n", sub->get_name().c_str(), e.what());
+      lingerAfterClusterError();
       return 2;
     } catch (const std::exception& e) {
       // Every reader turns bad input into confvis::Error naming the file; reaching this is a bug.

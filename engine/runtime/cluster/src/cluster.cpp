@@ -1,7 +1,6 @@
 #include "confvis/runtime/cluster.hpp"
 
 #include <cstdio>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <arpa/inet.h>
@@ -188,10 +187,7 @@ void Cluster::swapLock(double patienceSeconds) {
       if (r != lostRank)
         checkMpi(MPI_Isend(&lostRank, 1, MPI_INT, r, kTagGo, comm_, &gos[r - 1]), "MPI_Isend");
     const int lateGo = waitUntil(gos, deadlineIn(lostRank >= 0 ? 1.0 : options_.timeoutSeconds));
-    if (lostRank >= 0) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));  // let them report it too
-      lost(lostRank, "the swap lock");
-    }
+    if (lostRank >= 0) lost(lostRank, "the swap lock");
     if (lateGo >= 0) lost(lateGo + 1, "the swap lock");
     for (MPI_Request& r : readies) if (r != MPI_REQUEST_NULL) MPI_Request_free(&r);
   } else {
