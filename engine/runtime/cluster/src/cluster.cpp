@@ -74,7 +74,7 @@ json verdict(const std::vector<json>& hellos) {
 }  // namespace
 
 Cluster::Cluster(MPI_Comm comm, const DisplayConfig& display, ClusterOptions options)
-    : options_(options) {
+    : options_(options), transfer_(std::make_unique<MapTransfer>()) {
   if (!(options_.timeoutSeconds > 0.0) || options_.mapChunkBytes == 0)
     throw Error(ErrorCode::InvalidInput, "cluster: the timeout and the map chunk size must be > 0");
   checkMpi(MPI_Comm_dup(comm, &comm_), "MPI_Comm_dup");

@@ -31,7 +31,6 @@ void forEachChunk(std::size_t floats, std::size_t chunkBytes, Post&& post) {
 void Cluster::shareMap(std::shared_ptr<const RetargetMap> map, std::uint64_t generation) {
   if (!isRoot()) throw Error(ErrorCode::InvalidInput, "cluster: only rank 0 shares maps");
   if (!map) throw Error(ErrorCode::InvalidInput, "cluster: shareMap needs a map");
-  if (!transfer_) transfer_ = std::make_unique<MapTransfer>();
   MapTransfer& t = *transfer_;
   t.ready[generation] = map;
   if (t.sending) {  // one share in flight at a time: the newest waits behind it
@@ -65,7 +64,6 @@ void Cluster::shareMap(std::shared_ptr<const RetargetMap> map, std::uint64_t gen
 }
 
 bool Cluster::progressMaps() {
-  if (!transfer_) transfer_ = std::make_unique<MapTransfer>();
   MapTransfer& t = *transfer_;
   if (isRoot()) {
     if (!t.sending) return true;
@@ -141,14 +139,8 @@ void Cluster::shareMapNow(std::shared_ptr<const RetargetMap> map, std::uint64_t 
 
 void Cluster::adoptMap(std::uint64_t generation) {
   if (map_ && generation == mapGeneration_) return;
-  if (!transfer_ || transfer_->ready.empty()) {
-    if (!map_) return;  // no map shared yet (plain rendering)
-    throw ClusterError(ErrorCode::Internal, "cluster: rank " + std::to_string(rank_) +
-                                                " was told to render with map generation " +
-                                                std::to_string(generation) +
-                                                ", which never reached it");
-  }
   auto& ready = transfer_->ready;
+  if (!map_ && ready.empty()) return;  // no map shared yet (plain rendering)
   const auto it = ready.find(generation);
   if (it == ready.end())
     throw ClusterError(ErrorCode::Internal, "cluster: rank " + std::to_string(rank_) +
