@@ -82,6 +82,8 @@ void expectScreenshotsMatchRender(const std::string& backend, const std::string&
   const nlohmann::json report = readReport(view);
   EXPECT_EQ(report["frame_count"], 3);
   EXPECT_EQ(report["end"], "frames");
+  // Vulkan frames stay on the presenting device (one blit into the swapchain image each).
+  EXPECT_EQ(report["frame_path"], backend == "vulkan" ? "gpu" : "staging");
   ASSERT_EQ(report["windows"].size(), 6u);
   for (const nlohmann::json& window : report["windows"]) {
     const std::string wall = window["wall"];

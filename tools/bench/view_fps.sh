@@ -5,6 +5,8 @@
 # Presents with --no-vsync so the display's refresh does not cap the figures. Needs a display:
 # without DISPLAY it starts its own Xvfb. STEREO_RAYS=exact|fast (default fast: Embree's exact
 # curved stereo rays run at a fraction of a frame per second at these sizes).
+# SIZES, BACKENDS, EYES and MODES (space-separated) pick a subset, e.g. SIZES=480
+# BACKENDS=vulkan MODES="conformal plain".
 #   tools/bench/view_fps.sh [FRAMES] [BUILD_DIR]
 set -euo pipefail
 frames=${1:-60}
@@ -30,11 +32,11 @@ print("%.1f" % (1000*len(f)/sum(f)), "%.1f" % (1000*len(b)/sum(b)) if b else "-"
 }
 
 printf '%-7s %-7s %-7s %-10s %8s %14s\n' px backend eyes mode fps "fps(baking)"
-for px in 480 960; do
+for px in ${SIZES:-480 960}; do
   scale=$(python3 -c "print($px/1920)")
-  for backend in embree vulkan; do
-    for eyes in mono stereo; do
-      for mode in conformal plain rebake; do
+  for backend in ${BACKENDS:-embree vulkan}; do
+    for eyes in ${EYES:-mono stereo}; do
+      for mode in ${MODES:-conformal plain rebake}; do
         extra="--mode ${mode/rebake/conformal}"
         [ "$mode" = rebake ] && extra="$extra --tracker path:$work/step.csv"
         out="$work/$px-$backend-$eyes-$mode"

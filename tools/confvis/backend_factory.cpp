@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/backends/vulkan/external_device.hpp"
 #include "confvis/backends/vulkan_backend.hpp"
 #include "confvis/base/error.hpp"
 
@@ -50,6 +51,15 @@ std::unique_ptr<RenderBackend> makeBackend(const std::string& name,
   std::string list;
   for (const std::string& known : backendNames()) list += (list.empty() ? "" : ", ") + known;
   throw Error(ErrorCode::InvalidInput, "unknown backend '" + name + "' (known: " + list + ")");
+}
+
+std::unique_ptr<RenderBackend> makeBackendOn(const VulkanDeviceHandles& device,
+                                             const std::string& name,
+                                             const BackendOptions& options) {
+  if (name != "vulkan") return makeBackend(name, options);
+  VulkanOptions vulkan;
+  if (options.tessellationErrorPixels) vulkan.tessellationErrorPixels = *options.tessellationErrorPixels;
+  return makeVulkanRendererOn(device, vulkan);
 }
 
 }  // namespace confvis::cli

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/backends/vulkan/external_device.hpp"
 
 namespace confvis::cli {
 
@@ -19,5 +20,11 @@ struct BackendOptions {
 // Throws Error(InvalidInput) listing the known names for an unknown one.
 std::unique_ptr<RenderBackend> makeBackend(const std::string& name,
                                            const BackendOptions& options = {});
+
+// The same on a device made elsewhere (confvis view's presenting device): Vulkan renders on it
+// (its frames then never leave the GPU); other backends ignore it.
+std::unique_ptr<RenderBackend> makeBackendOn(const VulkanDeviceHandles& device,
+                                             const std::string& name,
+                                             const BackendOptions& options = {});
 
 }  // namespace confvis::cli

@@ -20,6 +20,7 @@
 #include "confvis/runtime/background_priority.hpp"
 #include "confvis/runtime/live_view.hpp"
 #include "confvis/runtime/map_follower.hpp"
+#include "confvis/runtime/present_context.hpp"
 #include "confvis/runtime/tracker_factory.hpp"
 #include "retarget_map_source.hpp"
 #include "shipped_files.hpp"
@@ -52,9 +53,14 @@ int runView(const ViewArgs& args) {
   const DisplayConfig config = loadDisplayConfig(configPath);
   std::unique_ptr<Tracker> tracker;
   if (!args.tracker.empty()) tracker = openTracker(args.tracker, config);
-  std::unique_ptr<RenderBackend> backend = makeBackend(args.backend, {args.device, {}});
   const Scene scene = sceneByNameOrFile(args.scene);
-  backend->setScene(scene);
+  // Made on the presenting device: the Vulkan backend's frames then stay on the GPU.
+  const LiveBackendFactory makeRenderer = [&](const PresentContext& context) {
+    std::unique_ptr<RenderBackend> backend =
+        makeBackendOn(context.handles(), args.backend, {args.device, {}});
+    backend->setScene(scene);
+    return backend;
+  };
 
   // The first map as `confvis render` gets it (identity, or the bake cache), unless
   // --bake-resolution asks for every map at another resolution; re-bakes around the moving head
@@ -85,11 +91,12 @@ int runView(const ViewArgs& args) {
   options.screenshotDirectory = args.screenshotDirectory;
   options.validation = args.validate;
   options.showProgress = !args.quiet;
-  nlohmann::json report = runLiveView(config, *backend, follower, tracker.get(), options);
+  options.renderOnPresentingDevice = args.backend == "vulkan";
+  options.renderDevice = args.device;
+  nlohmann::json report = runLiveView(config, makeRenderer, follower, tracker.get(), options);
 
   report["display"] = {{"name", config.name}, {"config", configPath.string()}};
   report["scene"] = args.scene;
-  report["backend"] = backend->name();
   report["eyes"] = options.stereo ? "stereo" : "mono";
   report["stereo_rays"] = args.stereoRays;
   report["scale"] = args.scale;

@@ -106,6 +106,10 @@ RenderPlan planRender(const DisplayConfig& config, const RetargetMap* map,
     }
   }
 
+  std::vector<std::string> wallNames;
+  for (const Wall& wall : config.walls) wallNames.push_back(wall.name);
+  checkViewOverrides(settings.views, wallNames);
+
   RenderPlan plan;
   for (int wallIndex : wallIndices) {
     const Wall& wall = config.walls[static_cast<std::size_t>(wallIndex)];
@@ -118,7 +122,11 @@ RenderPlan planRender(const DisplayConfig& config, const RetargetMap* map,
       PlannedImage image;
       image.wallIndex = wallIndex;
       image.eye = eye;
-      image.view = makeWallView(wall, eyePosition(settings.head, eye, config.eyeSeparation));
+      if (const ViewOverride* custom = findViewOverride(settings.views, wall.name, eye))
+        image.custom = *custom;
+      image.view = makeWallView(wall, image.custom ? overrideEyePosition(*image.custom)
+                                                   : eyePosition(settings.head, eye,
+                                                                 config.eyeSeparation));
       image.view.eye = eye;
       image.width = outputPixels(wall.width, settings.resolutionScale);
       image.height = outputPixels(wall.height, settings.resolutionScale);

@@ -57,12 +57,31 @@ int curvedRay(const ConformalWarp& warp, const glm::dvec3& eye, const glm::dvec3
   return count;
 }
 
+namespace {
+
+// The rays of `view`, or of the override where there is one.
+OverrideRays raysOf(const WallView& view, const ViewOverride* custom) {
+  if (custom)  // scaled as WallView::rayDirection's, which reach the wall plane at t = 1
+    return overrideRays(*custom, view.wall->width, view.wall->height, view.nearDistance);
+  const glm::dvec3 base = view.rayDirection(0.0, 0.0);
+  return {view.eye_position, base, view.rayDirection(1.0, 0.0) - base,
+          view.rayDirection(0.0, 1.0) - base};
+}
+
+}  // namespace
+
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
-                       const glm::dvec3& reference)
+                       const glm::dvec3& reference, const ViewOverride* custom)
+    : CameraRays(view, raysOf(view, custom), camera, reference) {
+  custom_ = custom != nullptr;
+}
+
+CameraRays::CameraRays(const WallView& view, const OverrideRays& rays,
+                       const VirtualCamera& camera, const glm::dvec3& reference)
     : view_(view),
-      directionBase_(view.rayDirection(0.0, 0.0)),
-      directionStepX_(view.rayDirection(1.0, 0.0) - directionBase_),
-      directionStepY_(view.rayDirection(0.0, 1.0) - directionBase_),
+      directionBase_(rays.base),
+      directionStepX_(rays.stepX),
+      directionStepY_(rays.stepY),
       reference_(reference),
       cameraPosition_(camera.position),
       rotation_(camera.rotation()),
@@ -73,8 +92,8 @@ CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
 
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
                        const ConformalWarp& warp, const WallMapGrid& grid, StereoRays stereoRays,
-                       int curvedSegments)
-    : CameraRays(view, camera, warp.reference()) {
+                       int curvedSegments, const ViewOverride* custom)
+    : CameraRays(view, camera, warp.reference(), custom) {
   if (curvedSegments < 1 || curvedSegments > kMaxCurvedSegments)
     throw Error(ErrorCode::InvalidInput, "curved rays need 1 to " +
                                              std::to_string(kMaxCurvedSegments) +
@@ -98,20 +117,44 @@ bool CameraRays::straightDirection(double px, double py, glm::vec3& direction) c
     direction = plain_.at(fx, fy);
     return true;
   }
-  const WallMapGrid::Sample pixel = grid_->at(fx, fy);
+  glm::dvec3 wallPoint;
+  const WallMapGrid::Sample pixel = mapSample(px, py, wallPoint);
   if (!(pixel.alpha >= 0.5f)) return false;
   if (eyeAtReference_) {
     direction = centreDirection(pixel.direction);
     return true;
   }
-  // Fast stereo: from the eye towards W(p), p = eye + toWall on the wall (WallView::rayDirection
-  // is affine in px, py).
+  // Fast stereo: from the eye towards W(p), p on the wall.
   const glm::dvec3 eye = view_.eye_position;
-  const glm::dvec3 wallPoint = eye + directionBase_ + px * directionStepX_ + py * directionStepY_;
   const glm::dvec3 target = reference_ + glm::length(wallPoint - reference_) *
                                              glm::normalize(glm::dvec3(pixel.direction));  // W(p)
   direction = turn(glm::normalize(target - eye));
   return true;
+}
+
+WallMapGrid::Sample CameraRays::mapSample(double px, double py, glm::dvec3& wallPoint) const {
+  const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
+  if (!custom_) {  // WallView::rayDirection reaches the wall at t = 1 through its own pixel
+    wallPoint = view_.eye_position + toWall;
+    return grid_->at(static_cast<float>(px), static_cast<float>(py));
+  }
+  // Rows of the view matrix's rotation: the wall's right, up and normal (WallView::rayDirection).
+  const glm::dmat4& v = view_.view;
+  const glm::dvec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]),
+      normal(v[0][2], v[1][2], v[2][2]);
+  const double towardWall = glm::dot(toWall, normal);
+  const double t = towardWall < 0.0 ? -view_.nearDistance / towardWall : -1.0;
+  wallPoint = view_.eye_position + (t > 0.0 ? t : 1.0) * toWall;
+  if (t > 0.0) {
+    const glm::dvec3 onWall = t * toWall;
+    const Wall& wall = *view_.wall;
+    const double wx = (glm::dot(onWall, right) - view_.left) / (view_.right - view_.left) * wall.width;
+    const double wy = (view_.top - glm::dot(onWall, up)) / (view_.top - view_.bottom) * wall.height;
+    if (wx >= 0.0 && wy >= 0.0 && wx <= wall.width && wy <= wall.height)
+      return grid_->at(static_cast<float>(wx), static_cast<float>(wy));
+  }
+  const ConformalWarp::Lookup exact = warp_->lookup(glm::normalize(wallPoint - reference_));
+  return {glm::vec3(exact.direction), exact.lit ? 1.0f : 0.0f};
 }
 
 bool CameraRays::gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const {
@@ -162,8 +205,8 @@ void CameraRays::make(double px, double py, RayPath& path) const {
     path.lit = straightDirection(px, py, path.tail);
     return;
   }
-  const WallMapGrid::Sample pixel = grid_->at(static_cast<float>(px), static_cast<float>(py));
-  path.lit = pixel.alpha >= 0.5f;
+  glm::dvec3 wallPoint;
+  path.lit = mapSample(px, py, wallPoint).alpha >= 0.5f;
   if (!path.lit) return;
   const glm::dvec3 eye = view_.eye_position;
   // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)

@@ -51,12 +51,15 @@ int curvedRay(const ConformalWarp& warp, const glm::dvec3& eye, const glm::dvec3
 
 class CameraRays {
  public:
-  // Plain rays.
-  CameraRays(const WallView& view, const VirtualCamera& camera, const glm::dvec3& reference);
+  // Plain rays. `custom`: the application's view and projection (view_override.hpp) give the
+  // rays instead of `view`, which must then be the off-axis view from the override's eye.
+  CameraRays(const WallView& view, const VirtualCamera& camera, const glm::dvec3& reference,
+             const ViewOverride* custom = nullptr);
   // Conformal rays; `warp` and `grid` (the map seen from this view's wall) must outlive this
   // object.
   CameraRays(const WallView& view, const VirtualCamera& camera, const ConformalWarp& warp,
-             const WallMapGrid& grid, StereoRays stereoRays, int curvedSegments);
+             const WallMapGrid& grid, StereoRays stereoRays, int curvedSegments,
+             const ViewOverride* custom = nullptr);
 
   // The path through pixel-space point (px, py) of the wall (see WallView::rayDirection).
   void make(double px, double py, RayPath& path) const;
@@ -83,8 +86,13 @@ class CameraRays {
   // The virtual camera's rotation in float (centreDirection turns F with it).
   const glm::mat3& rotation() const { return rotationF_; }
   bool centreEyeConformal() const { return warp_ && eyeAtReference_; }
+  // The rays are an override's: a pixel is not the wall's pixel at the same position (no
+  // per-wall-pixel direction table).
+  bool overridden() const { return custom_; }
 
  private:
+  CameraRays(const WallView& view, const OverrideRays& rays, const VirtualCamera& camera,
+             const glm::dvec3& reference);
   glm::vec3 place(const glm::dvec3& physicalPoint) const;
   // F(dir(fromC)) from this wall's map grid where the ray from c along fromC meets the wall
   // (bilinear over samples half a map texel apart: within ~1e-5 rad of the cube map's lookup,
@@ -95,6 +103,10 @@ class CameraRays {
   // grid's accuracy). False where the curve leaves the ball or a lookup misses the wall.
   bool tailOnly(const glm::dvec3& unitDirection, RayPath& path) const;
   glm::vec3 turn(const glm::dvec3& physicalDirection) const;
+  // The map at the wall point that the ray through (px, py) meets (`wallPoint`, physical
+  // frame): the grid's sample of that wall pixel; for an override's ray that meets the wall's
+  // plane outside the wall, or not at all, the map's exact lookup.
+  WallMapGrid::Sample mapSample(double px, double py, glm::dvec3& wallPoint) const;
 
   WallView view_;
   // rayDirection is affine in the pixel position: base + px stepX + py stepY.
@@ -111,6 +123,7 @@ class CameraRays {
   StereoRays stereoRays_ = StereoRays::Exact;
   int curvedSegments_ = 0;
   bool eyeAtReference_ = false;
+  bool custom_ = false;
   double emptyRadius_ = 0.0;
 };
 

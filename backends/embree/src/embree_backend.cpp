@@ -171,10 +171,11 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     const Wall& wall = *planned.view.wall;
     const WallMapGrid* grid =
         warp ? &impl_->wallGrid(*warp, mapFingerprint, wall, settings.resolutionScale) : nullptr;
+    const ViewOverride* custom = planned.custom ? &*planned.custom : nullptr;
     embree::CameraRays rays =
         warp ? embree::CameraRays(planned.view, settings.camera, *warp, *grid, settings.stereoRays,
-                                  impl_->options.curvedRaySegments)
-             : embree::CameraRays(planned.view, settings.camera, config.reference);
+                                  impl_->options.curvedRaySegments, custom)
+             : embree::CameraRays(planned.view, settings.camera, config.reference, custom);
     if (!rays.straight()) {
       // Exact stereo: the curves bend within the ball around the warp's centre that the scene
       // keeps out of (a margin for float rounding); only what leaves it is traced.
@@ -189,7 +190,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                        static_cast<double>(wall.height) / planned.height};
     job.seed = static_cast<std::uint32_t>(planned.wallIndex * 3 + static_cast<int>(planned.eye));
     job.directions = nullptr;
-    if (rays.centreEyeConformal()) {
+    if (rays.centreEyeConformal() && !rays.overridden()) {
       job.directions = impl_->directionTable(
           *grid, Impl::gridKey(*warp, mapFingerprint, wall, settings.resolutionScale), job,
           tableBuildSeconds);

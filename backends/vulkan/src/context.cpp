@@ -162,14 +162,45 @@ VulkanContext::VulkanContext(const ContextOptions& options)
     : onMessage_(options.onValidationMessage) {
   try {
     createInstance(options);
-    std::vector<VkPhysicalDevice> handles;
-    const std::vector<DeviceCapabilities> devices = queryDevices(instance_, &handles);
-    const std::size_t chosen = chooseDevice(devices, options.device);
-    physicalDevice_ = handles[chosen];
-    capabilities_ = devices[chosen];
-    createDevice();
+    pickDevice(options);
+    createDevice(options);
   } catch (...) {
     release();  // the destructor does not run for a half-built object
+    throw;
+  }
+}
+
+VulkanContext::VulkanContext(const VulkanDeviceHandles& handles) : ownsDevice_(false) {
+  if (!handles.instance || !handles.physicalDevice || !handles.device || !handles.queue)
+    throw Error(ErrorCode::DeviceUnsupported,
+                "Vulkan backend on an application's device: a null instance, physical device, "
+                "device or queue handle");
+  instance_ = handles.instance;
+  physicalDevice_ = handles.physicalDevice;
+  device_ = handles.device;
+  queue_ = handles.queue;
+  queueFamily_ = handles.queueFamily;
+  capabilities_ = capabilitiesOf(physicalDevice_);
+  const std::vector<VkQueueFamilyProperties> families = queueFamilies(physicalDevice_);
+  if (queueFamily_ >= families.size() || !(families[queueFamily_].queueFlags & VK_QUEUE_GRAPHICS_BIT))
+    throw Error(ErrorCode::DeviceUnsupported,
+                "Vulkan backend on an application's device: queue family " +
+                    std::to_string(queueFamily_) + " of '" + capabilities_.name +
+                    "' is not a graphics queue family");
+  const std::vector<std::string> missing = missingRequirements(capabilities_);
+  if (!missing.empty()) {
+    std::string list;
+    for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
+    throw Error(ErrorCode::DeviceUnsupported, "Vulkan device '" + capabilities_.name +
+                                                  "' lacks what confvis renders with: " + list);
+  }
+  vkGetPhysicalDeviceProperties(physicalDevice_, &properties_);
+  vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memory_);
+  timestampValidBits_ = families[queueFamily_].timestampValidBits;
+  try {
+    createPoolAndFence();
+  } catch (...) {
+    release();
     throw;
   }
 }
@@ -178,6 +209,9 @@ void VulkanContext::createInstance(const ContextOptions& options) {
   const VkApplicationInfo app = applicationInfo();
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
   info.pApplicationInfo = &app;
+  std::vector<const char*> extensions = options.instanceExtensions;
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   if (!options.validation) {
     instance_ = createInstanceChecked(info);
     return;
@@ -187,12 +221,12 @@ void VulkanContext::createInstance(const ContextOptions& options) {
                 std::string("Vulkan validation requested but ") + kValidationLayer +
                     " is not installed (Debian package vulkan-validationlayers)");
   const char* layers[] = {kValidationLayer};
-  const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME,
-                              VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME};
+  extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+  extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
   info.enabledLayerCount = 1;
   info.ppEnabledLayerNames = layers;
-  info.enabledExtensionCount = 2;
-  info.ppEnabledExtensionNames = extensions;
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   // Synchronization validation catches missing barriers, the errors a CPU driver hides.
   const VkValidationFeatureEnableEXT enables[] = {
       VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
@@ -211,32 +245,71 @@ void VulkanContext::createInstance(const ContextOptions& options) {
   check(create(instance_, &messenger, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
 }
 
-void VulkanContext::createDevice() {
+void VulkanContext::pickDevice(const ContextOptions& options) {
+  std::vector<VkPhysicalDevice> handles;
+  std::vector<DeviceCapabilities> devices = queryDevices(instance_, &handles);
+  std::vector<std::optional<std::uint32_t>> families(devices.size());
+  std::string seen;
+  for (std::size_t i = 0; i < devices.size(); ++i) {
+    seen += (seen.empty() ? "" : ", ") + devices[i].name;
+    const std::vector<VkQueueFamilyProperties> all = queueFamilies(handles[i]);
+    for (std::uint32_t f = 0; f < all.size() && !families[i]; ++f)
+      if ((all[f].queueFlags & VK_QUEUE_GRAPHICS_BIT) &&
+          (!options.canPresent || options.canPresent(instance_, handles[i], f)))
+        families[i] = f;
+    // A device whose graphics queues cannot present is, for a presenter, one without any.
+    devices[i].graphicsQueue = families[i].has_value();
+  }
+  std::size_t chosen = devices.size();
+  if (options.requireRendering) {
+    chosen = chooseDevice(devices, options.device);
+  } else {
+    for (std::size_t i = 0; i < devices.size(); ++i)
+      if (families[i] && (chosen == devices.size() || devices[i].kind < devices[chosen].kind))
+        chosen = i;  // DeviceKind lists discrete GPUs first, CPU devices last
+    if (chosen == devices.size())
+      throw Error(ErrorCode::DeviceUnsupported,
+                  "no Vulkan device can present to a window on this display (devices: " +
+                      (seen.empty() ? std::string("none") : seen) + ")");
+  }
+  physicalDevice_ = handles[chosen];
+  capabilities_ = devices[chosen];
+  queueFamily_ = *families[chosen];
+}
+
+void VulkanContext::createDevice(const ContextOptions& options) {
   vkGetPhysicalDeviceProperties(physicalDevice_, &properties_);
   vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memory_);
-  queueFamily_ = *graphicsQueueFamily(physicalDevice_);  // chooseDevice required one
   timestampValidBits_ = queueFamilies(physicalDevice_)[queueFamily_].timestampValidBits;
   const float priority = 1.0f;
   VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
   queueInfo.queueFamilyIndex = queueFamily_;
   queueInfo.queueCount = 1;
   queueInfo.pQueuePriorities = &priority;
-  VkPhysicalDeviceMultiviewFeatures multiview{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES};
-  multiview.multiview = VK_TRUE;
-  multiview.multiviewTessellationShader = VK_TRUE;
-  multiview.multiviewGeometryShader = VK_TRUE;
-  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  features.pNext = &multiview;
-  features.features.tessellationShader = VK_TRUE;
-  features.features.geometryShader = VK_TRUE;
+  VulkanRequiredFeatures required;
+  // A presenter that need not render enables only what the device has.
+  const DeviceCapabilities& caps = capabilities_;
+  required.features.features.tessellationShader = caps.tessellationShader;
+  required.features.features.geometryShader = caps.geometryShader;
+  required.multiview.multiview = caps.multiview;
+  required.multiview.multiviewTessellationShader = caps.multiviewTessellationShader;
+  required.multiview.multiviewGeometryShader = caps.multiviewGeometryShader;
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-  info.pNext = &features;
+  // Vulkan 1.0 devices know no VkPhysicalDeviceFeatures2 chain; they never render (chooseDevice).
+  if (caps.apiVersion >= VK_API_VERSION_1_1) info.pNext = &required.features;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
+  info.enabledExtensionCount = static_cast<std::uint32_t>(options.deviceExtensions.size());
+  info.ppEnabledExtensionNames = options.deviceExtensions.data();
   check(vkCreateDevice(physicalDevice_, &info, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  createPoolAndFence();
+}
+
+void VulkanContext::createPoolAndFence() {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  poolInfo.flags =
+      VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   poolInfo.queueFamilyIndex = queueFamily_;
   check(vkCreateCommandPool(device_, &poolInfo, nullptr, &commandPool_), "vkCreateCommandPool");
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
@@ -246,6 +319,18 @@ void VulkanContext::createDevice() {
 VulkanContext::~VulkanContext() { release(); }
 
 void VulkanContext::release() noexcept {
+  if (!ownsDevice_) {  // the application's device: only what this context made goes
+    if (device_) {
+      vkQueueWaitIdle(queue_);
+      if (fence_) vkDestroyFence(device_, fence_, nullptr);
+      if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
+    }
+    fence_ = VK_NULL_HANDLE;
+    commandPool_ = VK_NULL_HANDLE;
+    device_ = VK_NULL_HANDLE;
+    instance_ = VK_NULL_HANDLE;
+    return;
+  }
   if (device_) {
     vkDeviceWaitIdle(device_);
     if (fence_) vkDestroyFence(device_, fence_, nullptr);
@@ -282,6 +367,12 @@ std::uint32_t VulkanContext::memoryType(std::uint32_t typeBits,
 }
 
 void VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {
+  submitAndWait(record, {}, {});
+}
+
+void VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& record,
+                                  const std::vector<VkSemaphore>& wait,
+                                  const std::vector<VkSemaphore>& signal) {
   VkCommandBufferAllocateInfo allocInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocInfo.commandPool = commandPool_;
   allocInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -302,9 +393,30 @@ void VulkanContext::submitAndWait(const std::function<void(VkCommandBuffer)>& re
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
+  const std::vector<VkPipelineStageFlags> waitStages(wait.size(), VK_PIPELINE_STAGE_TRANSFER_BIT);
+  submit.waitSemaphoreCount = static_cast<std::uint32_t>(wait.size());
+  submit.pWaitSemaphores = wait.data();
+  submit.pWaitDstStageMask = waitStages.data();
+  submit.signalSemaphoreCount = static_cast<std::uint32_t>(signal.size());
+  submit.pSignalSemaphores = signal.data();
   check(vkResetFences(device_, 1, &fence_), "vkResetFences");
   check(vkQueueSubmit(queue_, 1, &submit, fence_), "vkQueueSubmit");
   check(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 }
 
 }  // namespace confvis::vulkan
+
+namespace confvis {
+
+VulkanRequiredFeatures::VulkanRequiredFeatures() {
+  multiview.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MULTIVIEW_FEATURES;
+  features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+  multiview.multiview = VK_TRUE;
+  multiview.multiviewTessellationShader = VK_TRUE;
+  multiview.multiviewGeometryShader = VK_TRUE;
+  features.pNext = &multiview;
+  features.features.tessellationShader = VK_TRUE;
+  features.features.geometryShader = VK_TRUE;
+}
+
+}  // namespace confvis

@@ -11,6 +11,7 @@
 #include <vulkan/vulkan.h>
 
 #include "confvis/backends/vulkan/device_requirements.hpp"
+#include "confvis/backends/vulkan/external_device.hpp"
 
 namespace confvis::vulkan {
 
@@ -18,6 +19,14 @@ struct ContextOptions {
   std::string device;  // see VulkanOptions::device
   bool validation = false;
   std::function<void(const std::string&)> onValidationMessage;
+  // For a device that also presents to windows (confvis view): the window system's instance
+  // extensions, the device extensions (VK_KHR_swapchain), and which queue families can present;
+  // only devices with a graphics family that can are chosen, and that family is the queue's.
+  std::vector<const char*> instanceExtensions{}, deviceExtensions{};
+  std::function<bool(VkInstance, VkPhysicalDevice, std::uint32_t family)> canPresent{};
+  // False: any device with a graphics queue will do (best by kind, `device` ignored), the
+  // rendering features enabled where it has them (a presenter of Embree's frames needs none).
+  bool requireRendering = true;
 };
 
 // The capabilities of every device the instance reports, in its order.
@@ -31,11 +40,22 @@ VkInstance createPlainInstance();
 class VulkanContext {
  public:
   explicit VulkanContext(const ContextOptions& options);
+  // On an application's instance and device (external_device.hpp): owns neither, makes only
+  // its command pool and fence. Error(DeviceUnsupported) for a null handle or a device that
+  // lacks a rendering requirement.
+  explicit VulkanContext(const VulkanDeviceHandles& handles);
   ~VulkanContext();
   VulkanContext(const VulkanContext&) = delete;
   VulkanContext& operator=(const VulkanContext&) = delete;
 
+  VkInstance instance() const { return instance_; }
   VkDevice device() const { return device_; }
+  std::uint32_t queueFamily() const { return queueFamily_; }
+  // Resettable command buffers may be allocated from it; one thread at a time.
+  VkCommandPool commandPool() const { return commandPool_; }
+  VulkanDeviceHandles handles() const {
+    return {instance_, physicalDevice_, device_, queue_, queueFamily_};
+  }
   VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
   VkQueue queue() const { return queue_; }
   const DeviceCapabilities& capabilities() const { return capabilities_; }
@@ -51,10 +71,15 @@ class VulkanContext {
 
   // Records into a fresh primary command buffer, submits it and waits for it to finish.
   void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
+  // The same, waiting for `wait` (at the transfer stage) before it runs and signalling `signal`.
+  void submitAndWait(const std::function<void(VkCommandBuffer)>& record,
+                     const std::vector<VkSemaphore>& wait, const std::vector<VkSemaphore>& signal);
 
  private:
   void createInstance(const ContextOptions& options);
-  void createDevice();
+  void pickDevice(const ContextOptions& options);
+  void createDevice(const ContextOptions& options);
+  void createPoolAndFence();
   void release() noexcept;
 
   std::function<void(const std::string&)> onMessage_;
@@ -70,6 +95,7 @@ class VulkanContext {
   VkQueue queue_ = VK_NULL_HANDLE;
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  bool ownsDevice_ = true;  // false on an application's device: instance and device are its
 };
 
 }  // namespace confvis::vulkan

@@ -107,6 +107,9 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
                     const RenderSettings& settings, const TessellationOptions& tessellation,
                     std::uint32_t maxViews) {
   checkSettings(settings, map, maxViews);
+  std::vector<std::string> wallNames;
+  for (const Wall& wall : config.walls) wallNames.push_back(wall.name);
+  checkViewOverrides(settings.views, wallNames);
   FramePlan plan;
   plan.splitAlongCut = tessellation.splitAlongCut;
   plan.snapCutToRim = tessellation.snapCutToRim;
@@ -142,16 +145,17 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
                            static_cast<float>(glm::radians(tessellation.maxSegmentDegrees)),
                            static_cast<float>(4.0 * pixelAngle), tessellation.enabled ? 1.0f : 0.0f);
     for (std::size_t e = 0; e < eyes.size(); ++e) {
-      WallView view = makeWallView(*wall, eyes[e]);  // throws if the eye cannot see the wall
+      const ViewOverride* custom = findViewOverride(settings.views, wall->name, plan.eyes[e]);
+      const glm::dvec3 eye = custom ? overrideEyePosition(*custom) : eyes[e];
+      WallView view = makeWallView(*wall, eye);  // throws if the eye cannot see the wall
       ViewData data;
       // Reverse-Z without a far plane, the near plane a tiny fraction of the wall's distance:
       // float depth resolves the same relative distances in a scene of millimetres or of
       // kilometres, and clips nothing that the ray tracer (rays from t = 0) would show.
-      data.viewProj = glm::mat4(
-          view.projectionVulkanReverseZ(kNearFractionOfWallDistance * view.nearDistance) *
-          view.view);
-      data.eyeVirtual =
-          glm::vec4(glm::vec3(virtualEyePosition(eyes[e], config, map, settings)), 1.0f);
+      const double near = kNearFractionOfWallDistance * view.nearDistance;
+      data.viewProj = glm::mat4(custom ? withReverseDepth(custom->projection, near) * custom->view
+                                       : view.projectionVulkanReverseZ(near) * view.view);
+      data.eyeVirtual = glm::vec4(glm::vec3(virtualEyePosition(eye, config, map, settings)), 1.0f);
       data.params = params;
       plan.views.push_back(data);
     }

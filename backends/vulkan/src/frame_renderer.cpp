@@ -152,6 +152,7 @@ void FrameRenderer::recordPass(VkCommandBuffer cmd, const PassRequest& request,
   recordDraws(cmd, pass, request, scene);
   vkCmdEndRenderPass(cmd);
   stopwatch_.stop(cmd);
+  if (!request.readback) return;
   // The pass left the colour layers in TRANSFER_SRC_OPTIMAL; its dependency orders this copy.
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, views};
@@ -251,6 +252,30 @@ FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene)
 std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuScene& scene,
                                              const RetargetMap* map, bool multiview,
                                              Progress& progress) {
+  prepareFrame(plan, scene, map);
+  const bool conformal = map != nullptr;
+  const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());
+  std::vector<WallImage> images;
+  for (std::size_t wall = 0; wall < plan.walls.size(); ++wall) {
+    PassRequest request{plan.widths[wall], plan.heights[wall],
+                        static_cast<std::uint32_t>(wall) * eyes, eyes, conformal};
+    std::vector<ImageRGBA> layers;
+    if (multiview) {
+      layers = renderPass(request, scene);  // every eye in one multiview pass
+    } else {
+      request.views = 1;
+      for (std::uint32_t eye = 0; eye < eyes; ++eye, ++request.viewBase)
+        layers.push_back(std::move(renderPass(request, scene).front()));
+    }
+    for (std::uint32_t eye = 0; eye < eyes; ++eye)
+      images.push_back({plan.walls[wall]->name, plan.eyes[eye], std::move(layers[eye])});
+    progress.advance();
+  }
+  return images;
+}
+
+void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
+                                 const RetargetMap* map) {
   const bool conformal = map != nullptr;
   gpuSeconds_ = stopwatch_.available() ? std::optional<double>(0.0) : std::nullopt;
   if (conformal) uploadMap(*map);
@@ -302,24 +327,6 @@ std::vector<WallImage> FrameRenderer::render(const FramePlan& plan, const GpuSce
                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
     }
   }
-  const auto eyes = static_cast<std::uint32_t>(plan.eyes.size());
-  std::vector<WallImage> images;
-  for (std::size_t wall = 0; wall < plan.walls.size(); ++wall) {
-    PassRequest request{plan.widths[wall], plan.heights[wall],
-                        static_cast<std::uint32_t>(wall) * eyes, eyes, conformal};
-    std::vector<ImageRGBA> layers;
-    if (multiview) {
-      layers = renderPass(request, scene);  // every eye in one multiview pass
-    } else {
-      request.views = 1;
-      for (std::uint32_t eye = 0; eye < eyes; ++eye, ++request.viewBase)
-        layers.push_back(std::move(renderPass(request, scene).front()));
-    }
-    for (std::uint32_t eye = 0; eye < eyes; ++eye)
-      images.push_back({plan.walls[wall]->name, plan.eyes[eye], std::move(layers[eye])});
-    progress.advance();
-  }
-  return images;
 }
 
 }  // namespace confvis::vulkan

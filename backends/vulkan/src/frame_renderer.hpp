@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/backends/vulkan/external_device.hpp"
 #include "confvis/base/progress.hpp"
 #include "conformal_prepass.hpp"
 #include "frame_plan.hpp"
@@ -29,6 +30,13 @@ class FrameRenderer {
   // otherwise one pass per eye (see multiview_probe.hpp for why that exists).
   std::vector<WallImage> render(const FramePlan& plan, const GpuScene& scene,
                                 const RetargetMap* map, bool multiview, Progress& progress);
+
+  // The same frame written into application images instead of read back
+  // (frame_renderer_targets.cpp; external_device.hpp says what a target must be). Every target
+  // names a wall of the plan and one of its eyes (the caller checks).
+  void renderToTargets(const FramePlan& plan, const GpuScene& scene, const RetargetMap* map,
+                       bool multiview, const std::vector<VulkanImageTarget>& outputs,
+                       Progress& progress);
 
   // Triangles the last conformal frame drew flat and through tessellation (the pre-pass's lists).
   struct PrepassCounts {
@@ -56,6 +64,8 @@ class FrameRenderer {
   Targets& targets(std::uint32_t width, std::uint32_t height, std::uint32_t views,
                    VkRenderPass renderPass);
   void uploadFrame(const FramePlan& plan);
+  // The map and frame uploads and the conformal pre-pass, before any wall's pass.
+  void prepareFrame(const FramePlan& plan, const GpuScene& scene, const RetargetMap* map);
   void addGpuSeconds(std::optional<double> seconds);
   void uploadMap(const RetargetMap& map);
   struct PassRequest {
@@ -63,6 +73,7 @@ class FrameRenderer {
     std::uint32_t viewBase;  // index into FramePlan::views of the pass's view 0
     std::uint32_t views;     // multiview layers drawn in the pass
     bool conformal;
+    bool readback = true;  // copy the colour layers into the readback buffer after the pass
   };
   // Draws one pass, reads it back; one image per view.
   std::vector<ImageRGBA> renderPass(const PassRequest& request, const GpuScene& scene);

@@ -1,9 +1,14 @@
 #include "confvis/backends/vulkan_backend.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <optional>
 
+#include "confvis/backends/render_plan.hpp"
+#include "confvis/backends/vulkan/external_device.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
 #include "context.hpp"
@@ -33,30 +38,122 @@ void checkOptions(const VulkanOptions& options) {
                 "Vulkan backend: the longest segment must be in (0, 180] degrees");
 }
 
-class VulkanBackend final : public RenderBackend {
+// The settings renderImages renders with: the targets' walls and eyes (see external_device.hpp).
+RenderSettings settingsForTargets(const DisplayConfig& config, const RenderSettings& settings,
+                                  const std::vector<VulkanImageTarget>& targets,
+                                  VkPhysicalDevice physicalDevice) {
+  if (targets.empty())
+    throw Error(ErrorCode::InvalidInput, "Vulkan renderImages: no target image given");
+  RenderSettings chosen = settings;
+  chosen.walls.clear();
+  chosen.eyes.clear();
+  std::map<VkImage, const VulkanImageTarget*> byImage;
+  for (const VulkanImageTarget& target : targets) {
+    const std::string culprit = "Vulkan render target of wall '" + target.wall + "' (" +
+                                eyeName(target.eye) + " eye): ";
+    config.wall(target.wall);  // Error(InvalidInput) naming an unknown wall
+    if (std::find(settings.eyes.begin(), settings.eyes.end(), target.eye) == settings.eyes.end())
+      throw Error(ErrorCode::InvalidInput, culprit + "the settings do not render that eye");
+    if (target.image == VK_NULL_HANDLE) throw Error(ErrorCode::InvalidInput, culprit + "no image");
+    const VkRect2D r = target.region.extent.width == 0 && target.region.extent.height == 0
+                           ? VkRect2D{{0, 0}, target.extent}
+                           : target.region;
+    if (r.extent.width == 0 || r.extent.height == 0 || r.offset.x < 0 || r.offset.y < 0 ||
+        std::uint64_t(r.offset.x) + r.extent.width > target.extent.width ||
+        std::uint64_t(r.offset.y) + r.extent.height > target.extent.height)
+      throw Error(ErrorCode::InvalidInput,
+                  culprit + "the region is empty or leaves the " +
+                      std::to_string(target.extent.width) + "x" +
+                      std::to_string(target.extent.height) + " image");
+    VkFormatProperties properties;
+    vkGetPhysicalDeviceFormatProperties(physicalDevice, target.format, &properties);
+    if (!(properties.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT))
+      throw Error(ErrorCode::InvalidInput, culprit + "the device cannot blit into format " +
+                                               std::to_string(target.format));
+    const auto [other, fresh] = byImage.try_emplace(target.image, &target);
+    if (!fresh && (other->second->layoutBefore != target.layoutBefore ||
+                   other->second->layoutAfter != target.layoutAfter ||
+                   other->second->waitSemaphore != target.waitSemaphore ||
+                   other->second->signalSemaphore != target.signalSemaphore))
+      throw Error(ErrorCode::InvalidInput,
+                  culprit + "shares its image with wall '" + other->second->wall +
+                      "' but not its layouts and semaphores");
+    if (std::find(chosen.walls.begin(), chosen.walls.end(), target.wall) == chosen.walls.end())
+      chosen.walls.push_back(target.wall);
+  }
+  for (Eye eye : settings.eyes)
+    for (const VulkanImageTarget& target : targets)
+      if (target.eye == eye) {
+        chosen.eyes.push_back(eye);
+        break;
+      }
+  return chosen;
+}
+
+class VulkanBackend final : public VulkanRenderer {
  public:
   explicit VulkanBackend(const VulkanOptions& options)
-      : options_((checkOptions(options), options)),
-        context_({options.device, options.validation, options.onValidationMessage}),
-        pipelines_(context_),
-        frames_(context_, pipelines_, options.timePrepassPasses),
-        multiview_(options.stereoPasses == StereoPasses::Multiview ||
-                   (options.stereoPasses == StereoPasses::Auto &&
-                    vulkan::multiviewKeepsClippedPrimitivesInTheirView(context_, pipelines_,
-                                                                       frames_))) {}
+      : VulkanBackend(options, std::make_unique<vulkan::VulkanContext>(vulkan::ContextOptions{
+                                   options.device, options.validation,
+                                   options.onValidationMessage})) {}
+  VulkanBackend(const VulkanOptions& options, const VulkanDeviceHandles& device)
+      : VulkanBackend(options, std::make_unique<vulkan::VulkanContext>(device)) {}
 
   std::string name() const override { return "vulkan"; }
+
+  VulkanDeviceHandles deviceHandles() const override { return context_->handles(); }
 
   void setScene(const Scene& scene) override {
     scene_.reset();  // free the old buffers first
     split_.reset();
     checkedCentre_.reset();
-    scene_.emplace(context_, pipelines_, scene);
+    scene_.emplace(*context_, pipelines_, scene);
     source_ = scene;
   }
 
   RenderResult render(const DisplayConfig& config, const RetargetMap* map,
                       const RenderSettings& settings) override {
+    RenderResult result;
+    result.stats = renderFrame(config, map, settings, [&](const Frame& frame) {
+      result.images =
+          frames_.render(frame.plan, frame.drawn, frame.map, multiview_, frame.progress);
+    });
+    return result;
+  }
+
+  nlohmann::json renderImages(const DisplayConfig& config, const RetargetMap* map,
+                              const RenderSettings& settings,
+                              const std::vector<VulkanImageTarget>& targets) override {
+    const RenderSettings chosen =
+        settingsForTargets(config, settings, targets, context_->physicalDevice());
+    return renderFrame(config, map, chosen, [&](const Frame& frame) {
+      frames_.renderToTargets(frame.plan, frame.drawn, frame.map, multiview_, targets,
+                              frame.progress);
+    });
+  }
+
+ private:
+  VulkanBackend(const VulkanOptions& options, std::unique_ptr<vulkan::VulkanContext> context)
+      : options_((checkOptions(options), options)),
+        context_(std::move(context)),
+        pipelines_(*context_),
+        frames_(*context_, pipelines_, options.timePrepassPasses),
+        multiview_(options.stereoPasses == StereoPasses::Multiview ||
+                   (options.stereoPasses == StereoPasses::Auto &&
+                    vulkan::multiviewKeepsClippedPrimitivesInTheirView(*context_, pipelines_,
+                                                                       frames_))) {}
+
+  struct Frame {
+    const vulkan::FramePlan& plan;
+    const vulkan::GpuScene& drawn;
+    const RetargetMap* map;  // null in plain mode
+    Progress& progress;
+  };
+
+  // Plans the frame, has `draw` render it, and returns its stats.
+  nlohmann::json renderFrame(const DisplayConfig& config, const RetargetMap* map,
+                             const RenderSettings& settings,
+                             const std::function<void(const Frame&)>& draw) {
     if (!scene_) throw Error(ErrorCode::InvalidInput, "Vulkan backend: render before setScene");
     const auto start = std::chrono::steady_clock::now();
     const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
@@ -65,49 +162,47 @@ class VulkanBackend final : public RenderBackend {
                                                    options_.snapCutToRim};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
-                          context_.capabilities().maxMultiviewViewCount);
+                          context_->capabilities().maxMultiviewViewCount);
     const bool conformal = settings.mode == RenderMode::Conformal;
     Progress progress("vulkan " + std::string(conformal ? "conformal" : "plain"),
                       plan.walls.size(), settings.showProgress);
-    RenderResult result;
     const bool onePass = multiview_ || plan.eyes.size() == 1;
     const vulkan::GpuScene& drawn = conformal ? sceneForWarp(config, *map, settings) : *scene_;
-    result.images = frames_.render(plan, drawn, conformal ? map : nullptr, multiview_, progress);
+    draw(Frame{plan, drawn, conformal ? map : nullptr, progress});
     progress.finish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.stats = {{"backend", "vulkan"},
-                    {"device", context_.capabilities().name},
-                    {"mode", conformal ? "conformal" : "plain"},
-                    {"walls", plan.walls.size()},
-                    {"views_per_pass", onePass ? plan.eyes.size() : 1},
-                    {"stereo_passes", multiview_ ? "multiview" : "per-eye"},
-                    {"triangles", scene_->triangleCount()},
-                    {"seconds", seconds}};
-    if (const auto gpu = frames_.gpuSeconds()) result.stats["gpu_seconds"] = *gpu;
+    nlohmann::json stats = {{"backend", "vulkan"},
+                            {"device", context_->capabilities().name},
+                            {"mode", conformal ? "conformal" : "plain"},
+                            {"walls", plan.walls.size()},
+                            {"views_per_pass", onePass ? plan.eyes.size() : 1},
+                            {"stereo_passes", multiview_ ? "multiview" : "per-eye"},
+                            {"triangles", scene_->triangleCount()},
+                            {"seconds", seconds}};
+    if (const auto gpu = frames_.gpuSeconds()) stats["gpu_seconds"] = *gpu;
     if (conformal) {
-      result.stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
-      result.stats["tessellation"] = options_.tessellate;
-      result.stats["triangles_split_before_warp"] = split_ ? split_->trianglesSplit : 0;
+      stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
+      stats["tessellation"] = options_.tessellate;
+      stats["triangles_split_before_warp"] = split_ ? split_->trianglesSplit : 0;
       const auto counts = frames_.prepassCounts(drawn);
-      result.stats["triangles_drawn_flat"] = counts.flat;
-      result.stats["triangles_tessellated"] = counts.tessellated + counts.dropping;
-      result.stats["triangles_through_geometry_shader"] = counts.dropping;
-      result.stats["triangles_split_along_cut"] = counts.splitAlongCut;
-      result.stats["prepass_seconds"] = counts.seconds;
-      if (counts.gpuSeconds) result.stats["prepass_gpu_seconds"] = *counts.gpuSeconds;
-      result.stats["prepass_reused"] = counts.reused;
+      stats["triangles_drawn_flat"] = counts.flat;
+      stats["triangles_tessellated"] = counts.tessellated + counts.dropping;
+      stats["triangles_through_geometry_shader"] = counts.dropping;
+      stats["triangles_split_along_cut"] = counts.splitAlongCut;
+      stats["prepass_seconds"] = counts.seconds;
+      if (counts.gpuSeconds) stats["prepass_gpu_seconds"] = *counts.gpuSeconds;
+      stats["prepass_reused"] = counts.reused;
       if (!counts.passGpuSeconds.empty()) {
         nlohmann::json passes = nlohmann::json::object();
         for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
           passes[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
-        result.stats["prepass_pass_gpu_seconds"] = passes;
+        stats["prepass_pass_gpu_seconds"] = passes;
       }
     }
-    return result;
+    return stats;
   }
 
- private:
   // Triangles wider than this seen from the warp's centre are split before the warp; a split
   // made for one centre serves the next frames while none of its pieces is (hysteresis: the
   // pieces are made half as wide).
@@ -143,12 +238,12 @@ class VulkanBackend final : public RenderBackend {
     split_.emplace();
     split_->scene = std::move(split.scene);
     split_->trianglesSplit = split.trianglesSplit;
-    split_->gpu.emplace(context_, pipelines_, split_->scene);
+    split_->gpu.emplace(*context_, pipelines_, split_->scene);
     return *split_->gpu;
   }
 
   VulkanOptions options_;
-  vulkan::VulkanContext context_;
+  std::unique_ptr<vulkan::VulkanContext> context_;
   vulkan::Pipelines pipelines_;
   vulkan::FrameRenderer frames_;
   bool multiview_;  // every eye of a wall in one pass
@@ -185,6 +280,15 @@ std::vector<VulkanDeviceInfo> listVulkanDevices() {
 
 std::unique_ptr<RenderBackend> makeVulkanBackend(const VulkanOptions& options) {
   return std::make_unique<VulkanBackend>(options);
+}
+
+std::unique_ptr<VulkanRenderer> makeVulkanRenderer(const VulkanOptions& options) {
+  return std::make_unique<VulkanBackend>(options);
+}
+
+std::unique_ptr<VulkanRenderer> makeVulkanRendererOn(const VulkanDeviceHandles& device,
+                                                     const VulkanOptions& options) {
+  return std::make_unique<VulkanBackend>(options, device);
 }
 
 }  // namespace confvis

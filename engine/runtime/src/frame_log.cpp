@@ -56,7 +56,9 @@ nlohmann::json FrameLog::toJson() const {
                       {"bake_in_flight", r.bakeInFlight},
                       {"bake_started", r.bakeStarted},
                       {"map_swapped", r.mapSwapped},
-                      {"mode", r.conformal ? "conformal" : "plain"}});
+                      {"mode", r.conformal ? "conformal" : "plain"},
+                      {"head", r.head},
+                      {"windows_presented", r.windowsPresented}});
   }
   return {{"frames", frames},
           {"frame_time", confvis::toJson(summary())},

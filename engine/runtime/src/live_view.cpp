@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -10,6 +11,7 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/backends/render_plan.hpp"
+#include "confvis/backends/vulkan/external_device.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/runtime/camera_controls.hpp"
 #include "confvis/runtime/display_window.hpp"
@@ -83,22 +85,49 @@ std::string trackerText(const Tracker* tracker) {
   return text;
 }
 
-}  // namespace
+// An eye's region of the window's content, scaled to the swapchain image it is written into.
+VkRect2D scaledRegion(const EyeRegion& region, const WindowPlan& plan, VkExtent2D extent) {
+  const auto scale = [](int at, int content, std::uint32_t size) {
+    return static_cast<std::int32_t>(std::lround(double(at) * size / content));
+  };
+  const std::int32_t x0 = scale(region.x, plan.contentWidth, extent.width),
+                     x1 = scale(region.x + region.width, plan.contentWidth, extent.width),
+                     y0 = scale(region.y, plan.contentHeight, extent.height),
+                     y1 = scale(region.y + region.height, plan.contentHeight, extent.height);
+  return {{x0, y0},
+          {static_cast<std::uint32_t>(std::max(1, x1 - x0)),
+           static_cast<std::uint32_t>(std::max(1, y1 - y0))}};
+}
 
-nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
-                           MapFollower& follower, Tracker* tracker,
-                           const LiveViewOptions& options) {
-  GlfwSession glfw;
-  PresentContext context(PresentContextOptions{.validation = options.validation});
+PresentContextOptions presentOptions(const LiveViewOptions& options) {
+  return {.validation = options.validation,
+          .forRendering = options.renderOnPresentingDevice,
+          .device = options.renderDevice};
+}
+
+nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const DisplayConfig& config,
+                       RenderBackend& backend, MapFollower& follower, Tracker* tracker,
+                       const LiveViewOptions& options) {
   const std::vector<WindowPlan> plans =
       planWindows(config, options.stereo, options.scale, glfw.monitors());
+  // The Vulkan backend on this device writes the swapchain images itself (sRGB ones, so that
+  // the blit encodes its linear values as the CPU composition would).
+  auto* gpu = dynamic_cast<VulkanRenderer*>(&backend);
+  bool gpuFrames = gpu && gpu->deviceHandles().device == context.device();
   std::vector<std::unique_ptr<DisplayWindow>> windows;
   std::vector<std::unique_ptr<WindowPresenter>> presenters;
   for (const WindowPlan& plan : plans) {
     windows.push_back(std::make_unique<DisplayWindow>(plan, "confvis view: " + plan.wall));
-    presenters.push_back(
-        std::make_unique<WindowPresenter>(context, windows.back()->handle(), options.vsync));
+    presenters.push_back(std::make_unique<WindowPresenter>(context, windows.back()->handle(),
+                                                           options.vsync, gpuFrames));
   }
+  for (const auto& presenter : presenters) gpuFrames = gpuFrames && presenter->srgb();
+  std::vector<Eye> allEyes;
+  if (gpuFrames)
+    for (const WindowPlan& plan : plans)
+      for (Eye eye : plan.eyes)
+        if (std::find(allEyes.begin(), allEyes.end(), eye) == allEyes.end()) allEyes.push_back(eye);
+  std::sort(allEyes.begin(), allEyes.end());
   std::vector<RenderGroup> groups = groupByEyes(plans);
   const bool capture = !options.screenshotDirectory.empty();
 
@@ -154,6 +183,7 @@ nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
     record.bakeStarted = follower.stats().bakesStarted > bakesStartedBefore;
     record.bakeInFlight = frame.baking;
     record.conformal = mode == RenderMode::Conformal;
+    record.head = {head.position.x, head.position.y, head.position.z};
     bakesStartedBefore = follower.stats().bakesStarted;
 
     // The virtual world stays put when the map's reference moves: the camera follows it.
@@ -163,27 +193,58 @@ nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
     settings.camera.position =
         navigation.position + navigation.rotation() * (reference - config.reference);
     const Clock::time_point renderStart = Clock::now();
-    for (RenderGroup& group : groups) {
-      settings.eyes = group.eyes;
-      settings.walls = group.walls;
-      try {
-        backend.renderInto(frameConfig, frame.map.get(), settings, group.result);
-      } catch (const Error& error) {
-        throw Error(error.code(), "frame " + std::to_string(index) + ": " + error.what());
+    Clock::time_point presentStart;
+    const auto frameError = [&](const Error& error) {
+      return Error(error.code(), "frame " + std::to_string(index) + ": " + error.what());
+    };
+    if (gpuFrames) {
+      // Every window's swapchain image, every eye blitted into its region, one submission chain.
+      std::vector<VulkanImageTarget> targets;
+      std::vector<std::size_t> acquired;
+      for (std::size_t w = 0; w < windows.size(); ++w) {
+        const std::optional<WindowPresenter::Acquired> image = presenters[w]->acquire();
+        if (!image) continue;  // minimised or out of date: this window skips the frame
+        acquired.push_back(w);
+        for (const EyeRegion& region : plans[w].regions)
+          targets.push_back({plans[w].wall, region.eye, image->image, image->format,
+                             image->extent, 0, scaledRegion(region, plans[w], image->extent),
+                             VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                             image->acquired, image->written});
       }
-    }
-    const Clock::time_point presentStart = Clock::now();
-    for (std::size_t w = 0; w < windows.size(); ++w) {
-      const WindowPlan& plan = plans[w];
-      auto imageOf = [&](Eye eye) -> const ImageRGBA* {
-        for (const RenderGroup& group : groups)
-          for (const WallImage& image : group.result.images)
-            if (image.wall == plan.wall && image.eye == eye) return &image.image;
-        return nullptr;
-      };
-      std::uint8_t* pixels = presenters[w]->beginFrame(plan.contentWidth, plan.contentHeight);
-      composeWindow(plan, imageOf, pixels);
-      presenters[w]->present(capture);
+      settings.eyes = allEyes;
+      settings.walls.clear();
+      try {
+        if (!targets.empty())
+          gpu->renderImages(frameConfig, frame.map.get(), settings, targets);
+      } catch (const Error& error) {
+        throw frameError(error);
+      }
+      presentStart = Clock::now();
+      for (std::size_t w : acquired) presenters[w]->presentAcquired(capture);
+      record.windowsPresented = static_cast<int>(acquired.size());
+    } else {
+      for (RenderGroup& group : groups) {
+        settings.eyes = group.eyes;
+        settings.walls = group.walls;
+        try {
+          backend.renderInto(frameConfig, frame.map.get(), settings, group.result);
+        } catch (const Error& error) {
+          throw frameError(error);
+        }
+      }
+      presentStart = Clock::now();
+      for (std::size_t w = 0; w < windows.size(); ++w) {
+        const WindowPlan& plan = plans[w];
+        auto imageOf = [&](Eye eye) -> const ImageRGBA* {
+          for (const RenderGroup& group : groups)
+            for (const WallImage& image : group.result.images)
+              if (image.wall == plan.wall && image.eye == eye) return &image.image;
+          return nullptr;
+        };
+        std::uint8_t* pixels = presenters[w]->beginFrame(plan.contentWidth, plan.contentHeight);
+        composeWindow(plan, imageOf, pixels);
+        record.windowsPresented += presenters[w]->present(capture) ? 1 : 0;
+      }
     }
     for (const std::string& message : follower.takeErrors()) {
       bakeErrors.push_back({{"frame", index}, {"message", message}});
@@ -243,6 +304,10 @@ nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
   report["end"] = endReason;
   report["seconds"] = secondsBetween(start, Clock::now());
   report["present_device"] = context.deviceName();
+  report["backend"] = backend.name();
+  // How frames reach the windows: "gpu" (rendered on the presenting device, blitted into the
+  // swapchain images) or "staging" (read back, composed on the CPU, uploaded and blitted).
+  report["frame_path"] = gpuFrames ? "gpu" : "staging";
   report["windows"] = windowReport;
   report["rebakes"] = {{"started", stats.bakesStarted},
                        {"swapped", stats.bakesSucceeded},
@@ -260,6 +325,25 @@ nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
                           {"warnings", validation.warnings},
                           {"messages", validation.messages}};
   return report;
+}
+
+}  // namespace
+
+nlohmann::json runLiveView(const DisplayConfig& config, const LiveBackendFactory& makeBackend,
+                           MapFollower& follower, Tracker* tracker,
+                           const LiveViewOptions& options) {
+  GlfwSession glfw;
+  PresentContext context(presentOptions(options));
+  const std::unique_ptr<RenderBackend> backend = makeBackend(context);  // gone before context
+  return runLoop(glfw, context, config, *backend, follower, tracker, options);
+}
+
+nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
+                           MapFollower& follower, Tracker* tracker,
+                           const LiveViewOptions& options) {
+  GlfwSession glfw;
+  PresentContext context(presentOptions(options));
+  return runLoop(glfw, context, config, backend, follower, tracker, options);
 }
 
 }  // namespace confvis

@@ -26,11 +26,13 @@ bool isBgra(VkFormat format) {
 
 // 8-bit formats only: the composed codes are sRGB already, so a UNORM swapchain shows them as
 // they are and an sRGB one gets an sRGB source (the blit decodes and encodes again).
-VkSurfaceFormatKHR chooseFormat(const std::vector<VkSurfaceFormatKHR>& formats) {
-  for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM,
-                          VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB})
-    for (const VkSurfaceFormatKHR& f : formats)
-      if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
+VkSurfaceFormatKHR chooseFormat(const std::vector<VkSurfaceFormatKHR>& formats, bool preferSrgb) {
+  const std::vector<VkFormat> unorm = {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM},
+                              srgb = {VK_FORMAT_B8G8R8A8_SRGB, VK_FORMAT_R8G8B8A8_SRGB};
+  for (const std::vector<VkFormat>* family : {preferSrgb ? &srgb : &unorm, preferSrgb ? &unorm : &srgb})
+    for (VkFormat wanted : *family)
+      for (const VkSurfaceFormatKHR& f : formats)
+        if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
   throw Error(ErrorCode::DeviceUnsupported,
               "the window's surface offers no 8-bit RGBA/BGRA format to present to");
 }
@@ -60,8 +62,9 @@ constexpr VkImageSubresourceLayers kColourLayer{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0,
 
 }  // namespace
 
-WindowPresenter::WindowPresenter(PresentContext& context, GLFWwindow* window, bool vsync)
-    : context_(context), window_(window), vsync_(vsync) {
+WindowPresenter::WindowPresenter(PresentContext& context, GLFWwindow* window, bool vsync,
+                                 bool preferSrgb)
+    : context_(context), window_(window), vsync_(vsync), preferSrgb_(preferSrgb) {
   const VkDevice device = context_.device();
   try {
     check(glfwCreateWindowSurface(context_.instance(), window_, nullptr, &surface_),
@@ -80,6 +83,7 @@ WindowPresenter::WindowPresenter(PresentContext& context, GLFWwindow* window, bo
     check(vkAllocateCommandBuffers(device, &allocate, &commands_), "vkAllocateCommandBuffers");
     VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     check(vkCreateSemaphore(device, &semaphore, nullptr, &imageAcquired_), "vkCreateSemaphore");
+    check(vkCreateSemaphore(device, &semaphore, nullptr, &imageWritten_), "vkCreateSemaphore");
     VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     check(vkCreateFence(device, &fence, nullptr, &frameDone_), "vkCreateFence");
     ensureSwapchainMatchesWindow();
@@ -102,6 +106,8 @@ void WindowPresenter::release() noexcept {
   for (VkSemaphore s : renderDone_) vkDestroySemaphore(device, s, nullptr);
   renderDone_.clear();
   if (imageAcquired_) vkDestroySemaphore(device, imageAcquired_, nullptr);
+  if (imageWritten_) vkDestroySemaphore(device, imageWritten_, nullptr);
+  imageWritten_ = VK_NULL_HANDLE;
   if (frameDone_) vkDestroyFence(device, frameDone_, nullptr);
   if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
   if (surface_) vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
@@ -134,7 +140,7 @@ void WindowPresenter::createSwapchain() {
   vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface_, &count, nullptr);
   std::vector<VkSurfaceFormatKHR> formats(count);
   vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface_, &count, formats.data());
-  const VkSurfaceFormatKHR format = chooseFormat(formats);
+  const VkSurfaceFormatKHR format = chooseFormat(formats, preferSrgb_);
   vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface_, &count, nullptr);
   std::vector<VkPresentModeKHR> modes(count);
   vkGetPhysicalDeviceSurfacePresentModesKHR(physical, surface_, &count, modes.data());
@@ -309,10 +315,16 @@ bool WindowPresenter::present(bool capture) {
 
   check(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
   record(commands_, index, capture);
+  submitAndPresent(imageAcquired_, index, capture, acquired == VK_SUBOPTIMAL_KHR);
+  return true;
+}
+
+void WindowPresenter::submitAndPresent(VkSemaphore wait, std::uint32_t index, bool capture,
+                                       bool suboptimal) {
   const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
-  submit.pWaitSemaphores = &imageAcquired_;
+  submit.pWaitSemaphores = &wait;
   submit.pWaitDstStageMask = &waitStage;
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &commands_;
@@ -329,13 +341,41 @@ bool WindowPresenter::present(bool capture) {
   info.pSwapchains = &swapchain_;
   info.pImageIndices = &index;
   const VkResult presented = vkQueuePresentKHR(context_.queue(), &info);
-  if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
-      acquired == VK_SUBOPTIMAL_KHR)
+  if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR || suboptimal)
     extent_ = {0, 0};  // the window changed under the swapchain: recreate at the next frame
   else
     check(presented, "vkQueuePresentKHR");
-  return true;
 }
+
+std::optional<WindowPresenter::Acquired> WindowPresenter::acquire() {
+  finish();
+  if (!ensureSwapchainMatchesWindow()) return std::nullopt;
+  const VkResult acquired = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX,
+                                                  imageAcquired_, VK_NULL_HANDLE, &acquiredIndex_);
+  if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
+    extent_ = {0, 0};  // recreated at the next frame
+    return std::nullopt;
+  }
+  if (acquired != VK_SUBOPTIMAL_KHR) check(acquired, "vkAcquireNextImageKHR");
+  acquiredSuboptimal_ = acquired == VK_SUBOPTIMAL_KHR;
+  return Acquired{images_[acquiredIndex_], format_, extent_, imageAcquired_, imageWritten_};
+}
+
+void WindowPresenter::presentAcquired(bool capture) {
+  capture = capture && canCapture_;
+  if (capture)
+    ensureBuffer(readback_, static_cast<VkDeviceSize>(extent_.width) * extent_.height * 4,
+                 VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  check(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(commands_, &begin), "vkBeginCommandBuffer");
+  recordCaptureAndPresentLayout(commands_, images_[acquiredIndex_], capture);
+  check(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
+  submitAndPresent(imageWritten_, acquiredIndex_, capture, acquiredSuboptimal_);
+}
+
+bool WindowPresenter::srgb() const { return isSrgb(format_); }
 
 void WindowPresenter::record(VkCommandBuffer commands, std::uint32_t index, bool capture) {
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -369,11 +409,17 @@ void WindowPresenter::record(VkCommandBuffer commands, std::uint32_t index, bool
   vkCmdBlitImage(commands, content_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
                  sameSize ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+  imageBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+               VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+               VK_PIPELINE_STAGE_TRANSFER_BIT);
+  recordCaptureAndPresentLayout(commands, target, capture);
+  check(vkEndCommandBuffer(commands), "vkEndCommandBuffer");
+}
+
+void WindowPresenter::recordCaptureAndPresentLayout(VkCommandBuffer commands, VkImage target,
+                                                    bool capture) {
   if (capture) {
-    imageBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_TRANSFER_WRITE_BIT,
-                 VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT);
     VkBufferImageCopy copy{};
     copy.imageSubresource = kColourLayer;
     copy.imageExtent = {extent_.width, extent_.height, 1};
@@ -387,15 +433,13 @@ void WindowPresenter::record(VkCommandBuffer commands, std::uint32_t index, bool
     toHost.size = VK_WHOLE_SIZE;
     vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0,
                          0, nullptr, 1, &toHost, 0, nullptr);
-    imageBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_ACCESS_TRANSFER_READ_BIT, 0,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
-  } else {
-    imageBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_ACCESS_TRANSFER_WRITE_BIT, 0,
-                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
   }
-  check(vkEndCommandBuffer(commands), "vkEndCommandBuffer");
+  // The writes before (this buffer's blit, or a GPU frame's writer behind the semaphore) are
+  // transfers; the read for the capture too.
+  imageBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+               VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, 0,
+               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
   screenshot_.width = static_cast<int>(extent_.width);  // what the capture will hold
   screenshot_.height = static_cast<int>(extent_.height);
   screenshotBgra_ = isBgra(format_);

@@ -99,6 +99,7 @@
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/backends/retarget_map_files.hpp"
+#include "confvis/backends/view_override.hpp"
 #include "confvis/backends/wall_map_grid.hpp"
 #include "confvis/backends/embree/embree_backend.hpp"
 #include "confvis/backends/vulkan_backend.hpp"
@@ -111,4 +112,6 @@
 // GLSL include confvis_warp.glsl (installed in ${confvis_SHADER_DIR}).
 #if __has_include(<vulkan/vulkan.h>)
 #include "confvis/backends/vulkan/warp_interface.hpp"
+// The Vulkan backend on the application's device, rendering into its images.
+#include "confvis/backends/vulkan/external_device.hpp"
 #endif

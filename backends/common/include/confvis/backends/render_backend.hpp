@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/backends/view_override.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
@@ -46,6 +47,11 @@ struct RenderSettings {
   // Output size = round(wall resolution * resolutionScale), at least 1 pixel; tests render small.
   double resolutionScale = 1.0;
   bool showProgress = false;           // progress bar on stderr
+  // Application-supplied view and projection for some walls' eyes (view_override.hpp); the
+  // others get the off-axis view of `head`. Both backends, both modes: in conformal mode the
+  // overridden eye's rays (Embree) or the projected warped vertices (Vulkan) go through the map
+  // as the computed view's do.
+  std::vector<ViewOverride> views;
 };
 
 struct WallImage {

@@ -1,6 +1,7 @@
 #pragma once
 // What a render call will produce, checked before any work starts; shared by the backends so
 // they validate settings the same way and return images in the same order.
+#include <optional>
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
@@ -12,6 +13,9 @@ struct PlannedImage {
   int wallIndex = 0;  // into config.walls
   Eye eye = Eye::Center;
   WallView view;      // off-axis view of the wall for this eye (points into config.walls)
+  // RenderSettings::views' override of this wall's eye, if any (`view` is then the off-axis
+  // view from the override's eye, for the wall's geometry; the rays are the override's).
+  std::optional<ViewOverride> custom;
   int width = 0, height = 0;  // output pixels: round(wall resolution * scale), at least 1
 };
 

@@ -2,6 +2,7 @@
 // What a live display's frames took, one record per frame, and the summary view.json reports:
 // frame time mean / p50 / p99 over all frames, over those with a re-bake in flight and over
 // those without (a bake must never hold a frame up: tests compare the two).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,9 @@ struct FrameRecord {
   bool bakeStarted = false;     // this frame started it
   bool mapSwapped = false;      // this frame is the first with a new map
   bool conformal = true;
+  // The head position the frame rendered every eye's off-axis view from (physical frame, m).
+  std::array<double, 3> head{0.0, 0.0, 0.0};
+  int windowsPresented = 0;     // windows that showed the frame (a minimised one shows none)
 };
 
 struct FrameTimeSummary {

@@ -4,6 +4,8 @@
 // for every eye its window shows, and presents each window through its swapchain. Ends after
 // `frames` frames, on Esc, or when a window is closed; returns the report for view.json.
 #include <filesystem>
+#include <functional>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 
@@ -25,10 +27,25 @@ struct LiveViewOptions {
   std::filesystem::path screenshotDirectory;
   bool validation = false;  // Khronos validation on the presenting device, counted in the report
   bool showProgress = true; // a status line on stderr about once a second
+  // The backend the factory makes is the Vulkan one, on the presenting device: that device is
+  // then chosen as VulkanOptions::device says (`renderDevice`), with every rendering feature.
+  bool renderOnPresentingDevice = false;
+  std::string renderDevice;
 };
+
+class PresentContext;
+// Makes the renderer once the presenting device exists. A VulkanRenderer
+// (vulkan/external_device.hpp) made on context.handles() renders every eye straight into the
+// windows' swapchain images (one blit each, nothing read back); other backends' frames are
+// composed on the CPU and uploaded through a staging buffer.
+using LiveBackendFactory = std::function<std::unique_ptr<RenderBackend>(const PresentContext&)>;
 
 // `tracker` may be null (the head stays at the display's reference point). Throws Error naming
 // the wall for window placement errors, and the backend's errors naming the frame.
+nlohmann::json runLiveView(const DisplayConfig& config, const LiveBackendFactory& makeBackend,
+                           MapFollower& follower, Tracker* tracker,
+                           const LiveViewOptions& options);
+// The same with a backend made beforehand (its frames always go through the CPU).
 nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
                            MapFollower& follower, Tracker* tracker,
                            const LiveViewOptions& options);

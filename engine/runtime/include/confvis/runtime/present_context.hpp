@@ -1,19 +1,32 @@
 #pragma once
-// The Vulkan context a live display presents with, independent of the renderer's: an instance
-// with the window system's surface extensions, a device whose queue can present to GLFW
-// windows and copy images, and, on request, the Khronos validation layer with a debug-utils
-// messenger that counts what it reports (confvis view --validate, view.json).
+// The Vulkan context a live display presents with: the Vulkan backend's own context
+// (backends/vulkan/src/context.hpp) made with the window system's surface extensions and
+// VK_KHR_swapchain, on a device whose graphics queue can present to GLFW windows, and, on
+// request, the Khronos validation layer whose messages are counted (confvis view --validate,
+// view.json). The Vulkan backend renders on this same device (handles()), so its frames reach
+// the windows without leaving the GPU.
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
+#include "confvis/backends/vulkan/external_device.hpp"
+
 namespace confvis {
+
+namespace vulkan {
+class VulkanContext;
+}
 
 struct PresentContextOptions {
   bool validation = false;  // VK_LAYER_KHRONOS_validation + messenger; an error if not installed
+  // The device also renders with the Vulkan backend: chosen as VulkanOptions::device says among
+  // those that can present, with every rendering feature required and enabled.
+  bool forRendering = false;
+  std::string device{};  // see VulkanOptions::device; only with forRendering
 };
 
 struct ValidationReport {
@@ -31,36 +44,24 @@ class PresentContext {
   PresentContext(const PresentContext&) = delete;
   PresentContext& operator=(const PresentContext&) = delete;
 
-  VkInstance instance() const { return instance_; }
-  VkPhysicalDevice physicalDevice() const { return physicalDevice_; }
-  VkDevice device() const { return device_; }
-  VkQueue queue() const { return queue_; }
-  std::uint32_t queueFamily() const { return queueFamily_; }
-  VkCommandPool commandPool() const { return commandPool_; }
-  const std::string& deviceName() const { return deviceName_; }
+  VkInstance instance() const;
+  VkPhysicalDevice physicalDevice() const;
+  VkDevice device() const;
+  VkQueue queue() const;
+  std::uint32_t queueFamily() const;
+  VkCommandPool commandPool() const;
+  VulkanDeviceHandles handles() const;
+  const std::string& deviceName() const;
   // A memory type among typeBits with all `required` flags; Error(DeviceUnsupported) if none.
   std::uint32_t memoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required) const;
   ValidationReport validation() const;
 
  private:
-  static VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(
-      VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT type,
-      const VkDebugUtilsMessengerCallbackDataEXT* data, void* self);
-  void createInstance(const PresentContextOptions& options);
-  void pickDevice();
-  void release() noexcept;
+  void count(const std::string& message);
 
-  VkInstance instance_ = VK_NULL_HANDLE;
-  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
-  VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
-  VkPhysicalDeviceMemoryProperties memory_{};
-  std::string deviceName_;
-  std::uint32_t queueFamily_ = 0;
-  VkDevice device_ = VK_NULL_HANDLE;
-  VkQueue queue_ = VK_NULL_HANDLE;
-  VkCommandPool commandPool_ = VK_NULL_HANDLE;
   mutable std::mutex validationMutex_;
   ValidationReport validation_;
+  std::unique_ptr<vulkan::VulkanContext> context_;
 };
 
 }  // namespace confvis

@@ -4,7 +4,11 @@
 // into an image and are blitted into the swapchain image, stretched to the window. The
 // swapchain is recreated when the window is resized or the surface reports it out of date;
 // a minimised window presents nothing. One frame in flight per window.
+// Frames the GPU renders (the Vulkan backend on the presenting device) skip the staging buffer:
+// acquire() hands out the swapchain image, the backend blits each eye straight into it, and
+// presentAcquired() presents it.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -24,7 +28,10 @@ struct Screenshot {
 class WindowPresenter {
  public:
   // vsync: FIFO; otherwise MAILBOX, else IMMEDIATE, where the surface offers them (else FIFO).
-  WindowPresenter(PresentContext& context, GLFWwindow* window, bool vsync);
+  // preferSrgb: an sRGB swapchain format first (for GPU frames, whose linear values the blit
+  // encodes), else 8-bit UNORM first (for composed sRGB codes).
+  WindowPresenter(PresentContext& context, GLFWwindow* window, bool vsync,
+                  bool preferSrgb = false);
   ~WindowPresenter();
   WindowPresenter(const WindowPresenter&) = delete;
   WindowPresenter& operator=(const WindowPresenter&) = delete;
@@ -39,6 +46,22 @@ class WindowPresenter {
   // Waits for the last frame; its screenshot is then complete.
   void finish();
   const Screenshot& latestScreenshot() const { return screenshot_; }
+
+  // GPU frames: the swapchain image to write, after the window's previous frame has finished;
+  // nullopt when nothing can be presented now (minimised, or out of date and recreated for the
+  // next frame). The writer waits for `acquired` before writing, signals `written` when done,
+  // and leaves the image in TRANSFER_SRC_OPTIMAL.
+  struct Acquired {
+    VkImage image = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{0, 0};
+    VkSemaphore acquired = VK_NULL_HANDLE, written = VK_NULL_HANDLE;
+  };
+  std::optional<Acquired> acquire();
+  // Presents the image acquire() gave once `written` is signalled (capture: as present()).
+  void presentAcquired(bool capture);
+  // The swapchain encodes sRGB (a GPU frame's linear values come out as the composed codes).
+  bool srgb() const;
 
   int recreations() const { return recreations_; }
   VkPresentModeKHR presentMode() const { return presentMode_; }
@@ -62,11 +85,16 @@ class WindowPresenter {
   void ensureContentImage(int width, int height);
   void destroyContentImage() noexcept;
   void record(VkCommandBuffer commands, std::uint32_t imageIndex, bool capture);
+  // The image is in TRANSFER_SRC_OPTIMAL: the optional copy for a screenshot, then PRESENT_SRC.
+  void recordCaptureAndPresentLayout(VkCommandBuffer commands, VkImage target, bool capture);
+  // Submits commands_ (waiting for `wait` at the transfer stage) and presents images_[index].
+  void submitAndPresent(VkSemaphore wait, std::uint32_t index, bool capture, bool suboptimal);
   void collectScreenshot();
 
   PresentContext& context_;
   GLFWwindow* window_;
   bool vsync_;
+  bool preferSrgb_;
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
@@ -79,6 +107,9 @@ class WindowPresenter {
 
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkSemaphore imageAcquired_ = VK_NULL_HANDLE;
+  VkSemaphore imageWritten_ = VK_NULL_HANDLE;  // GPU frames: signalled by their writer
+  std::uint32_t acquiredIndex_ = 0;
+  bool acquiredSuboptimal_ = false;
   VkFence frameDone_ = VK_NULL_HANDLE;
   bool frameInFlight_ = false;
   bool captureInFlight_ = false;
