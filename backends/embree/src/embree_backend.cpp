@@ -29,10 +29,26 @@ struct EmbreeBackend::Impl {
                               const Wall& wall, double scale) {
     const std::uint64_t key = gridKey(warp, mapFingerprint, wall, scale);
     auto found = grids.find(key);
-    if (found != grids.end()) return *found->second;
+    if (found != grids.end()) {
+      found->second.lastUsed = renders;
+      return *found->second.grid;
+    }
     if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
     auto grid = std::make_unique<WallMapGrid>(warp, wall, spacingFor(warp, wall, scale));
-    return *grids.emplace(key, std::move(grid)).first->second;
+    return *grids.emplace(key, GridEntry{std::move(grid), renders}).first->second.grid;
+  }
+
+  // Gives back the grids and tables of images not rendered in the last kIdleRenders renders:
+  // a walk that swaps in a new map every few seconds would otherwise keep every old map's
+  // tables, up to kMaxTableSamples (found by tools/soak/walk_soak.py: +0.7 MB per re-bake).
+  void dropIdleEntries() {
+    const auto idle = [&](std::uint64_t lastUsed) { return renders - lastUsed > kIdleRenders; };
+    std::erase_if(grids, [&](const auto& item) { return idle(item.second.lastUsed); });
+    std::erase_if(tables, [&](const auto& item) {
+      if (!idle(item.second.lastUsed)) return false;
+      if (item.second.table) tableSamples -= item.second.table->sampleCount();
+      return true;
+    });
   }
 
   // The centre-eye directions of one image (see DirectionTable), or null. Built on the second
@@ -45,6 +61,7 @@ struct EmbreeBackend::Impl {
     for (int value : {job.width, job.height, job.samplesPerPixel, static_cast<int>(job.seed)})
       key = mixHash(key, static_cast<double>(value));
     TableEntry& entry = tables[key];
+    entry.lastUsed = renders;
     if (entry.table || ++entry.renders < 2) return entry.table.get();
     const std::size_t samples = static_cast<std::size_t>(job.width) *
                                 static_cast<std::size_t>(job.height) *
@@ -80,9 +97,15 @@ struct EmbreeBackend::Impl {
   // About 48M samples (576 MB): five 1920^2 walls at 2 spp, or one frame's worth of a large
   // display at 1 spp.
   static constexpr std::size_t kMaxTableSamples = std::size_t{48} << 20;
+  static constexpr std::uint64_t kIdleRenders = 8;
   struct TableEntry {
     int renders = 0;
+    std::uint64_t lastUsed = 0;  // `renders` of Impl when last looked up
     std::unique_ptr<embree::DirectionTable> table;
+  };
+  struct GridEntry {
+    std::unique_ptr<WallMapGrid> grid;
+    std::uint64_t lastUsed = 0;
   };
 
   EmbreeOptions options;
@@ -90,9 +113,10 @@ struct EmbreeBackend::Impl {
       options.baselineShading ? embree::SimdLevel::Sse2 : embree::detectedSimdLevel();
   EmbreeDevice device;
   std::unique_ptr<EmbreeScene> scene;
-  std::map<std::uint64_t, std::unique_ptr<WallMapGrid>> grids;
+  std::map<std::uint64_t, GridEntry> grids;
   std::map<std::uint64_t, TableEntry> tables;
   std::size_t tableSamples = 0;  // held by `tables`
+  std::uint64_t renders = 0;     // renderInto calls so far
 };
 
 EmbreeBackend::EmbreeBackend(const EmbreeOptions& options)
@@ -128,6 +152,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
   result = RenderResult{};
   std::optional<ConformalWarp> warp;
   std::uint64_t mapFingerprint = 0;
+  ++impl_->renders;
   const auto setupStart = std::chrono::steady_clock::now();
   if (settings.mode == RenderMode::Conformal) {
     warp.emplace(*map);
@@ -214,6 +239,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
       tableBuildSeconds;
   mapBuildSeconds += tableBuildSeconds;
+  impl_->dropIdleEntries();
   progress.finish();
   impl_->device.check("rendering");
 
@@ -227,6 +253,8 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                   {"render_seconds", seconds},
                   {"map_build_seconds", mapBuildSeconds},
                   {"direction_table_samples", tableSamples},
+                  {"cached_direction_table_samples", impl_->tableSamples},
+                  {"cached_wall_grids", impl_->grids.size()},
                   {"camera_rays", cameraRays},
                   {"occlusion_rays", occlusionRays},
                   {"retraced_rays", counters.retraced.load()},
