@@ -20,6 +20,7 @@ namespace {
 
 constexpr std::int32_t kExrMagic = 20000630;
 constexpr std::int32_t kMultiPartFlag = 0x1000;
+constexpr std::int32_t kLongNamesFlag = 0x400;
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& what) {
   throw Error(ErrorCode::IoFailure, "EXR file '" + path.string() + "': " + what);
@@ -33,15 +34,17 @@ std::int32_t littleEndianInt(const char* bytes) {
   return result;
 }
 
-// The NUL-terminated string (at most 255 bytes) at the stream's position; false if there is none.
-bool readName(std::istream& in, std::string& name) {
+// A name as OpenEXR reads it (Xdr::read): up to maxLength + 1 bytes, ending early at a NUL,
+// which it consumes; a longer name goes on into the next field. False at the end of the file.
+bool readName(std::istream& in, int maxLength, std::string& name) {
   name.clear();
-  for (char c; in.get(c);) {
+  for (int i = 0; i <= maxLength; ++i) {
+    char c;
+    if (!in.get(c)) return false;
     if (c == '\0') return true;
-    if (name.size() >= 255) return false;
     name.push_back(c);
   }
-  return false;
+  return true;
 }
 
 // The pixels of a data window (box2i), refused beyond the readers' limits.
@@ -66,15 +69,16 @@ void requirePlausibleExrHeader(const fs::path& path) {
   char word[8];
   if (!in || ec || !in.read(word, 8) || littleEndianInt(word) != kExrMagic) return;
   const bool multiPart = (littleEndianInt(word + 4) & kMultiPartFlag) != 0;
+  const int maxName = (littleEndianInt(word + 4) & kLongNamesFlag) != 0 ? 255 : 31;
   long long windowPixels = 0;  // of the current part, for the tile count
   while (true) {  // one header per part
     std::string name, type;
     int attributes = 0;
     while (true) {
-      if (!readName(in, name)) return;  // truncated: OpenEXR says so
+      if (!readName(in, maxName, name)) return;  // truncated: OpenEXR says so
       if (name.empty()) break;          // the end of this header
       char sizeBytes[4];
-      if (!readName(in, type) || !in.read(sizeBytes, 4)) return;
+      if (!readName(in, maxName, type) || !in.read(sizeBytes, 4)) return;
       const long long size = littleEndianInt(sizeBytes);
       const long long left = fileSize - static_cast<long long>(in.tellg());
       if (size < 0 || size > left)

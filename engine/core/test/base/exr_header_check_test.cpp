@@ -104,6 +104,20 @@ TEST(ExrHeaderCheck, TinyTilesOverALargeWindowAreRefused) {
   fs::remove(file);
 }
 
+// OpenEXR reads at most 32 bytes of a name (without the long-names flag) and the rest as the
+// type: here the size it reads is "box2" (846 753 634 bytes), which the check must see too
+// (the fuzzer's second input).
+TEST(ExrHeaderCheck, ALongNameIsSplitAsOpenExrSplitsIt) {
+  const fs::path file = scratch("long-name.exr");
+  writeBytes(file, int32(20000630) + int32(2) + std::string(40, 'x') + std::string(1, '\0') +
+                       std::string("box2i\0", 6) + int32(16) + std::string(64, '\0'));
+  const std::string message = refusal(file);
+  EXPECT_NE(message.find("header attribute '" + std::string(32, 'x') + "' claims 846753634 bytes"),
+            std::string::npos)
+      << message;
+  fs::remove(file);
+}
+
 TEST(ExrHeaderCheck, ValidCubeMapsAndImagesStillRead) {
   const fs::path file = scratch("valid.exr");
   writeCubeExr(file, CubeMap(8));
