@@ -104,15 +104,34 @@ TEST(ExrHeaderCheck, TinyTilesOverALargeWindowAreRefused) {
   fs::remove(file);
 }
 
-// OpenEXR reads at most 32 bytes of a name (without the long-names flag) and the rest as the
-// type: here the size it reads is "box2" (846 753 634 bytes), which the check must see too
-// (the fuzzer's second input).
-TEST(ExrHeaderCheck, ALongNameIsSplitAsOpenExrSplitsIt) {
+// OpenEXR reads names of up to 255 bytes even without the long-names flag: a 35-byte name is
+// one name, and the size after its type is the one OpenEXR allocates (the fuzzer's fourth
+// input; read as 32 bytes, the rest would have been taken for the type).
+TEST(ExrHeaderCheck, ANameLongerThan31BytesIsReadAsOpenExrReadsIt) {
   const fs::path file = scratch("long-name.exr");
-  writeBytes(file, int32(20000630) + int32(2) + std::string(40, 'x') + std::string(1, '\0') +
-                       std::string("box2i\0", 6) + int32(16) + std::string(64, '\0'));
+  const std::string name = std::string(32, 'x') + "abc";
+  writeBytes(file, int32(20000630) + int32(2) + name + std::string(1, '\0') +
+                       std::string("opaque\0", 7) + int32(1600000000) + std::string(64, '\0'));
   const std::string message = refusal(file);
-  EXPECT_NE(message.find("header attribute '" + std::string(32, 'x') + "' claims 846753634 bytes"),
+  EXPECT_NE(message.find("header attribute '" + name + "' claims 1600000000 bytes"),
+            std::string::npos)
+      << message;
+  fs::remove(file);
+}
+
+// OpenEXR reads a channel list to its end whatever size the header declares: a smaller
+// declared size would put this check out of step with OpenEXR (the fuzzer's third input).
+TEST(ExrHeaderCheck, AKnownTypeWhoseDeclaredSizeDiffersIsRefused) {
+  const fs::path file = scratch("chlist.exr");
+  writeCubeExr(file, CubeMap(8));
+  std::string bytes = readBytes(file);
+  const std::string attribute("channels\0chlist\0", 16);
+  const std::size_t at = bytes.find(attribute);
+  ASSERT_NE(at, std::string::npos);
+  bytes.replace(at + attribute.size(), 4, int32(37));  // A and B only: 2 x 18 bytes + 1
+  writeBytes(file, bytes);
+  const std::string message = refusal(file);
+  EXPECT_NE(message.find("header attribute 'channels' of type 'chlist' declares 37 bytes"),
             std::string::npos)
       << message;
   fs::remove(file);
