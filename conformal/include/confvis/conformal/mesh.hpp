@@ -33,8 +33,9 @@ void requireDisk(const TriMesh& mesh, const std::string& what);
 
 // Reads OBJ, OFF, PLY (ascii, binary) and STL (ascii, binary) with confvis's own bounded readers
 // (limits in the README). Throws FileNotFound / InvalidInput with the path (and line); rejects
-// malformed files, meshes with no faces, non-manifold faces, non-finite coordinates or
-// zero-length edges.
+// malformed files, meshes with no faces, non-manifold edges or vertices, inconsistently oriented
+// faces, non-finite coordinates or zero-length edges, naming them as the file numbers them; welds
+// vertices at equal positions and leaves out unused ones (mesh_source.hpp).
 TriMesh readMesh(const std::filesystem::path& path);
 
 // Boundary loops as vertex index lists, each following the boundary half-edges.
