@@ -1,6 +1,7 @@
 #include "camera_rays.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "confvis/base/error.hpp"
 
@@ -67,6 +68,7 @@ CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
       cameraPosition_(camera.position),
       rotation_(camera.rotation()),
       placedEye_(place(view.eye_position)),
+      placedCentre_(camera.position),
       rotationF_(rotation_),
       plain_{rotation_ * directionBase_, rotation_ * directionStepX_,
              rotation_ * directionStepY_} {}
@@ -98,19 +100,28 @@ bool CameraRays::straightDirection(double px, double py, glm::vec3& direction) c
     direction = plain_.at(fx, fy);
     return true;
   }
-  const WallMapGrid::Sample pixel = grid_->at(fx, fy);
-  if (!(pixel.alpha >= 0.5f)) return false;
-  if (eyeAtReference_) {
-    direction = centreDirection(pixel.direction);
+  if (!eyeAtReference_) {
+    glm::vec3 physical;
+    if (!fastDirection(px, py, physical)) return false;
+    direction = centreDirection(physical);
     return true;
   }
-  // Fast stereo: from the eye towards W(p), p = eye + toWall on the wall (WallView::rayDirection
-  // is affine in px, py).
+  const WallMapGrid::Sample pixel = grid_->at(fx, fy);
+  if (!(pixel.alpha >= 0.5f)) return false;
+  direction = centreDirection(pixel.direction);
+  return true;
+}
+
+bool CameraRays::fastDirection(double px, double py, glm::vec3& physicalDirection) const {
+  const WallMapGrid::Sample pixel = grid_->at(static_cast<float>(px), static_cast<float>(py));
+  if (!(pixel.alpha >= 0.5f)) return false;
+  // From the eye towards W(p), p = eye + toWall on the wall (WallView::rayDirection is affine in
+  // px, py).
   const glm::dvec3 eye = view_.eye_position;
   const glm::dvec3 wallPoint = eye + directionBase_ + px * directionStepX_ + py * directionStepY_;
   const glm::dvec3 target = reference_ + glm::length(wallPoint - reference_) *
                                              glm::normalize(glm::dvec3(pixel.direction));  // W(p)
-  direction = turn(glm::normalize(target - eye));
+  physicalDirection = glm::vec3(glm::normalize(target - eye));
   return true;
 }
 
@@ -134,20 +145,31 @@ bool CameraRays::gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) c
   return true;
 }
 
-bool CameraRays::tailOnly(const glm::dvec3& u, RayPath& path) const {
+float CameraRays::tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& offset) const {
+  constexpr float kUnbounded = std::numeric_limits<float>::infinity();
   const glm::dvec3 a = view_.eye_position - reference_;
   const double along = glm::dot(a, u);
   const glm::dvec3 perpendicular = a - along * u;
   const double h = glm::length(perpendicular);
+  if (!(std::atan2(h, along) > kAsymptoteAngle)) return kUnbounded;  // a line through c: curvedRay
   // The curve's vertices lie between |e - c| and h / sin(kAsymptoteAngle) from c (curvedRay).
-  if (!(glm::length(a) < emptyRadius_ && h / std::sin(kAsymptoteAngle) < emptyRadius_)) return false;
-  if (!(std::atan2(h, along) > kAsymptoteAngle)) return false;  // on a line through c: curvedRay
+  const double reach = std::max(glm::length(a), h / std::sin(kAsymptoteAngle));
   const glm::dvec3 last = perpendicular + (h / std::tan(kAsymptoteAngle)) * u;  // relative to c
-  glm::dvec3 lastDirection, tail;
-  if (!gridDirection(last, lastDirection) || !gridDirection(u, tail)) return false;
-  path.vertexCount = 1;
-  path.vertices[0] = place(reference_ + glm::length(last) * lastDirection);
-  path.tail = turn(tail);
+  glm::dvec3 lastDirection, tailDirection;
+  if (!gridDirection(last, lastDirection) || !gridDirection(u, tailDirection)) return kUnbounded;
+  offset = glm::vec3(glm::length(last) * lastDirection);
+  direction = glm::vec3(tailDirection);
+  // Rounded up: the float never claims a smaller ball than the curve needs.
+  return std::nextafter(static_cast<float>(reach), kUnbounded);
+}
+
+bool CameraRays::tailRay(double px, double py, glm::vec3& direction, glm::vec3& offset,
+                         float& reach) const {
+  const WallMapGrid::Sample pixel = grid_->at(static_cast<float>(px), static_cast<float>(py));
+  if (!(pixel.alpha >= 0.5f)) return false;
+  // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)
+  const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
+  reach = tail(glm::normalize(toWall), direction, offset);
   return true;
 }
 
@@ -162,20 +184,23 @@ void CameraRays::make(double px, double py, RayPath& path) const {
     path.lit = straightDirection(px, py, path.tail);
     return;
   }
-  const WallMapGrid::Sample pixel = grid_->at(static_cast<float>(px), static_cast<float>(py));
-  path.lit = pixel.alpha >= 0.5f;
+  glm::vec3 direction, offset;
+  float reach = 0.0f;
+  path.lit = tailRay(px, py, direction, offset, reach);
   if (!path.lit) return;
-  const glm::dvec3 eye = view_.eye_position;
-  // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)
+  // The whole bent part lies in the empty ball: the tail alone (as the table packets trace it).
+  if (reach < emptyRadius_) {
+    path.vertices[0] = placeOffset(offset);
+    path.tail = centreDirection(direction);
+    return;
+  }
   const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
-  if (tailOnly(glm::normalize(toWall), path)) return;
   std::array<glm::dvec3, kMaxCurvedSegments + 2> vertices;
-  glm::dvec3 tail;
-  path.vertexCount =
-      curvedRay(*warp_, eye, glm::normalize(toWall), curvedSegments_, vertices.data(), tail,
-                emptyRadius_);
+  glm::dvec3 tailDirection;
+  path.vertexCount = curvedRay(*warp_, view_.eye_position, glm::normalize(toWall), curvedSegments_,
+                               vertices.data(), tailDirection, emptyRadius_);
   for (int i = 0; i < path.vertexCount; ++i) path.vertices[i] = place(vertices[i]);
-  path.tail = turn(tail);
+  path.tail = turn(tailDirection);
 }
 
 }  // namespace confvis::embree
