@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
   app.add_option("--profile", profileMode,
                  "Only render `repeats` frames of one kind (plain, conformal or raw) after the "
                  "warm-up, for a profiler (perf, callgrind); prints nothing else")
-      ->check(CLI::IsMember({"plain", "conformal", "raw"}));
+      ->check(CLI::IsMember({"plain", "conformal", "raw", "plain-stereo", "exact-stereo"}));
   EmbreeOptions embreeOptions;
   app.add_flag("--baseline-shading", embreeOptions.baselineShading,
                "The baseline (SSE2) shading code even where the CPU has AVX2");
@@ -220,10 +220,16 @@ int main(int argc, char** argv) {
     if (!profileMode.empty()) {
       RenderResult frame;  // a frame loop's images, rendered over (renderInto)
       if (profileMode == "conformal") backend.render(config, &map, conformal);  // builds tables
+      RenderSettings plainStereo = plain, exactStereo = conformal;
+      plainStereo.eyes = exactStereo.eyes = {Eye::Left, Eye::Right};
+      if (profileMode == "exact-stereo")
+        for (int i = 0; i < 2; ++i) backend.render(config, &map, exactStereo);  // builds tables
       for (int i = 0; i < repeats; ++i) {
         if (profileMode == "plain") backend.renderInto(config, nullptr, plain, frame);
         if (profileMode == "conformal") backend.renderInto(config, &map, conformal, frame);
         if (profileMode == "raw") bench::rawIntersectLoop(rawScene, config, scale);
+        if (profileMode == "plain-stereo") backend.renderInto(config, nullptr, plainStereo, frame);
+        if (profileMode == "exact-stereo") backend.renderInto(config, &map, exactStereo, frame);
       }
       return 0;
     }

@@ -155,8 +155,14 @@ float CameraRays::tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& off
   // The curve's vertices lie between |e - c| and h / sin(kAsymptoteAngle) from c (curvedRay).
   const double reach = std::max(glm::length(a), h / std::sin(kAsymptoteAngle));
   const glm::dvec3 last = perpendicular + (h / std::tan(kAsymptoteAngle)) * u;  // relative to c
-  glm::dvec3 lastDirection, tailDirection;
-  if (!gridDirection(last, lastDirection) || !gridDirection(u, tailDirection)) return kUnbounded;
+  // Where the ray from c misses this wall (near its edges), the cube map itself (the grid
+  // reproduces it to ~1e-5 rad).
+  const auto mapDirection = [this](const glm::dvec3& fromC) {
+    glm::dvec3 mapped;
+    if (!gridDirection(fromC, mapped)) mapped = glm::normalize(warp_->direction(fromC));
+    return mapped;
+  };
+  const glm::dvec3 lastDirection = mapDirection(last), tailDirection = mapDirection(u);
   offset = glm::vec3(glm::length(last) * lastDirection);
   direction = glm::vec3(tailDirection);
   // Rounded up: the float never claims a smaller ball than the curve needs.

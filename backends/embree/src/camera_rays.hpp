@@ -108,8 +108,8 @@ class CameraRays {
   bool gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const;
   // tailRay's tail for the unit physical direction u: its start W(last vertex) relative to c and
   // direction F(u), both looked up in the grid (curvedRay's vertex and tail up to the grid's
-  // accuracy). Returns the reach, infinite where a lookup misses the wall or the ray lies on a
-  // line through c (curvedRay).
+  // accuracy), in the cube map where the ray from c misses the wall. Returns the reach, infinite
+  // where the ray lies on a line through c (curvedRay).
   float tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& offset) const;
   glm::vec3 turn(const glm::dvec3& physicalDirection) const;
 
