@@ -174,7 +174,7 @@ int main(int argc, char** argv) {
   app.add_option("--profile", profileMode,
                  "Only render `repeats` frames of one kind (plain, conformal or raw) after the "
                  "warm-up, for a profiler (perf, callgrind); prints nothing else")
-      ->check(CLI::IsMember({"plain", "conformal", "raw", "plain-stereo", "exact-stereo"}));
+      ->check(CLI::IsMember({"plain", "conformal", "raw", "plain-stereo", "exact-stereo", "exact-moving"}));
   EmbreeOptions embreeOptions;
   app.add_flag("--baseline-shading", embreeOptions.baselineShading,
                "The baseline (SSE2) shading code even where the CPU has AVX2");
@@ -230,6 +230,10 @@ int main(int argc, char** argv) {
         if (profileMode == "raw") bench::rawIntersectLoop(rawScene, config, scale);
         if (profileMode == "plain-stereo") backend.renderInto(config, nullptr, plainStereo, frame);
         if (profileMode == "exact-stereo") backend.renderInto(config, &map, exactStereo, frame);
+        if (profileMode == "exact-moving") {  // a new head place every frame: no table
+          exactStereo.head.position.x += 1e-4;
+          backend.renderInto(config, &map, exactStereo, frame);
+        }
       }
       return 0;
     }
