@@ -71,7 +71,21 @@ CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
       placedCentre_(camera.position),
       rotationF_(rotation_),
       plain_{rotation_ * directionBase_, rotation_ * directionStepX_,
-             rotation_ * directionStepY_} {}
+             rotation_ * directionStepY_} {
+  // Rows of the view matrix's rotation: the wall's right, up and normal.
+  const glm::dmat4& v = view.view;
+  wallRight_ = {v[0][0], v[1][0], v[2][0]};
+  wallUp_ = {v[0][1], v[1][1], v[2][1]};
+  wallNormal_ = {v[0][2], v[1][2], v[2][2]};
+  const glm::dvec3 fromEye = reference - view.eye_position;
+  cRight_ = glm::dot(fromEye, wallRight_);
+  cUp_ = glm::dot(fromEye, wallUp_);
+  cNormal_ = glm::dot(fromEye, wallNormal_);
+  if (view.wall) {
+    pixelsPerMetreX_ = view.wall->width / (view.right - view.left);
+    pixelsPerMetreY_ = view.wall->height / (view.top - view.bottom);
+  }
+}
 
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
                        const ConformalWarp& warp, const WallMapGrid& grid, StereoRays stereoRays,
@@ -126,19 +140,14 @@ bool CameraRays::fastDirection(double px, double py, glm::vec3& physicalDirectio
 }
 
 bool CameraRays::gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const {
-  // Rows of the view matrix's rotation: the wall's right, up and normal (WallView::rayDirection).
-  const glm::dmat4& v = view_.view;
-  const glm::dvec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]),
-      normal(v[0][2], v[1][2], v[2][2]);
-  const glm::dvec3 fromEye = reference_ - view_.eye_position;
-  const double towardWall = glm::dot(fromC, normal);
+  const double towardWall = glm::dot(fromC, wallNormal_);
   if (!(towardWall < 0.0)) return false;
-  const double t = (-view_.nearDistance - glm::dot(fromEye, normal)) / towardWall;
+  const double t = (-view_.nearDistance - cNormal_) / towardWall;
   if (!(t > 0.0)) return false;
-  const glm::dvec3 onWall = fromEye + t * fromC;  // relative to the eye
+  // Where c + t fromC meets the wall, relative to the eye, in wall pixels.
+  const double px = (cRight_ + t * glm::dot(fromC, wallRight_) - view_.left) * pixelsPerMetreX_;
+  const double py = (view_.top - (cUp_ + t * glm::dot(fromC, wallUp_))) * pixelsPerMetreY_;
   const Wall& wall = *view_.wall;
-  const double px = (glm::dot(onWall, right) - view_.left) / (view_.right - view_.left) * wall.width;
-  const double py = (view_.top - glm::dot(onWall, up)) / (view_.top - view_.bottom) * wall.height;
   if (!(px >= 0.0 && py >= 0.0 && px <= wall.width && py <= wall.height)) return false;
   direction = glm::normalize(
       glm::dvec3(grid_->at(static_cast<float>(px), static_cast<float>(py)).direction));
@@ -151,10 +160,15 @@ float CameraRays::tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& off
   const double along = glm::dot(a, u);
   const glm::dvec3 perpendicular = a - along * u;
   const double h = glm::length(perpendicular);
-  if (!(std::atan2(h, along) > kAsymptoteAngle)) return kUnbounded;  // a line through c: curvedRay
+  // The angle between u and dir(e - c), atan2(h, along), at most kAsymptoteAngle: a line through
+  // c (curvedRay).
+  static const double tanAsymptote = std::tan(kAsymptoteAngle);
+  static const double sinAsymptote = std::sin(kAsymptoteAngle);
+  if (!(h > along * tanAsymptote)) return kUnbounded;
   // The curve's vertices lie between |e - c| and h / sin(kAsymptoteAngle) from c (curvedRay).
-  const double reach = std::max(glm::length(a), h / std::sin(kAsymptoteAngle));
-  const glm::dvec3 last = perpendicular + (h / std::tan(kAsymptoteAngle)) * u;  // relative to c
+  const double lastDistance = h / sinAsymptote;
+  const double reach = std::max(glm::length(a), lastDistance);
+  const glm::dvec3 last = perpendicular + (h / tanAsymptote) * u;  // relative to c
   // Where the ray from c misses this wall (near its edges), the cube map itself (the grid
   // reproduces it to ~1e-5 rad).
   const auto mapDirection = [this](const glm::dvec3& fromC) {
@@ -163,7 +177,7 @@ float CameraRays::tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& off
     return mapped;
   };
   const glm::dvec3 lastDirection = mapDirection(last), tailDirection = mapDirection(u);
-  offset = glm::vec3(glm::length(last) * lastDirection);
+  offset = glm::vec3(lastDistance * lastDirection);  // |last| = h / sin(kAsymptoteAngle)
   direction = glm::vec3(tailDirection);
   // Rounded up: the float never claims a smaller ball than the curve needs.
   return std::nextafter(static_cast<float>(reach), kUnbounded);

@@ -124,6 +124,10 @@ class CameraRays {
   glm::mat3 rotationF_;
   // The same affine direction, turned by the camera, in float: plain rays need nothing else.
   AffineDirections plain_;
+  // gridDirection's wall plane, from the view matrix (WallView::rayDirection): the wall's right,
+  // up and normal, the eye-to-c offset along each, and wall pixels per metre across and down.
+  glm::dvec3 wallRight_, wallUp_, wallNormal_;
+  double cRight_ = 0.0, cUp_ = 0.0, cNormal_ = 0.0, pixelsPerMetreX_ = 0.0, pixelsPerMetreY_ = 0.0;
   const ConformalWarp* warp_ = nullptr;
   const WallMapGrid* grid_ = nullptr;
   StereoRays stereoRays_ = StereoRays::Exact;
