@@ -320,6 +320,9 @@ int main(int argc, char** argv) {
                  "checker-sphere size of the baked-map sweep (about this many triangles)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--skip-sweep", skipSweep, "leave out the threshold sweeps");
+  bool stereo = false;
+  app.add_flag("--stereo", stereo,
+               "both stereo eyes in the timing table (conformal stereo against plain stereo)");
   app.add_flag("--skip-zoom-sweep", skipZoomSweep,
                "leave out the threshold sweeps under the zoom map (keep the baked-map one)");
   app.add_option("--thresholds", sweepThresholds,
@@ -356,6 +359,7 @@ int main(int argc, char** argv) {
     auto reuseBackend = makeVulkanBackend(reuseOptions);
     RenderSettings settings;
     settings.resolutionScale = scale;
+    if (stereo) settings.eyes = {Eye::Left, Eye::Right};
     const RetargetMap identity = RetargetMap::identity(256);
     const RetargetMap squeeze = test::azimuthSqueezeMap(256);
     constexpr double kZoom = 2.0;
@@ -370,10 +374,11 @@ int main(int argc, char** argv) {
     if (!skip20k) scenes.push_back({"sphere-20k", 20000});
     if (!skip1m) scenes.push_back({"sphere-1M", 1000000});
     for (std::size_t size : extraSizes) scenes.push_back({"sphere-" + std::to_string(size), size});
-    std::printf("config %s, %zu walls at scale %.3g (%d x %d px), median of %d frames\n",
+    std::printf("config %s, %zu walls at scale %.3g (%d x %d px)%s, median of %d frames\n",
                 config.name.c_str(), config.walls.size(), scale,
                 int(std::lround(config.walls[0].width * scale)),
-                int(std::lround(config.walls[0].height * scale)), repeats);
+                int(std::lround(config.walls[0].height * scale)),
+                stereo ? ", both stereo eyes" : "", repeats);
     std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s %9s %9s %7s %9s %11s %9s %8s %14s "
                 "%9s\n",
                 "scene", "triangles", "map", "plain s", "conf s", "ratio", "plain cpu",

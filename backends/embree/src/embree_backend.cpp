@@ -40,41 +40,68 @@ struct EmbreeBackend::Impl {
 
   // Gives back the grids and tables of images not rendered in the last kIdleRenders renders:
   // a walk that swaps in a new map every few seconds would otherwise keep every old map's
-  // tables, up to kMaxTableSamples (found by tools/soak/walk_soak.py: +0.7 MB per re-bake).
+  // tables, up to kMaxTableBytes (found by tools/soak/walk_soak.py: +0.7 MB per re-bake).
   void dropIdleEntries() {
     const auto idle = [&](std::uint64_t lastUsed) { return renders - lastUsed > kIdleRenders; };
     std::erase_if(grids, [&](const auto& item) { return idle(item.second.lastUsed); });
     std::erase_if(tables, [&](const auto& item) {
       if (!idle(item.second.lastUsed)) return false;
-      if (item.second.table) tableSamples -= item.second.table->sampleCount();
+      if (item.second.table) tableBytes -= item.second.table->bytes();
       return true;
     });
   }
 
-  // The centre-eye directions of one image (see DirectionTable), or null. Built on the second
-  // render of the same image: a one-shot render would pay a full map lookup per sample for the
-  // table on top of the frame. Bounded to kMaxTableSamples in all; `buildSeconds` accumulates
-  // the build time.
-  const embree::DirectionTable* directionTable(const WallMapGrid& grid, std::uint64_t gridKey,
-                                               const embree::TileJob& job, double& buildSeconds) {
+  // The straight rays of one image (see DirectionTable), or null: the centre eye's directions,
+  // or a stereo eye's (fast rays' directions, exact rays' tails). Built on the second render of
+  // the same image (the same map, wall, eye, output size and samples): a one-shot render, or a
+  // tracked head that moves every frame, would pay a full map lookup per sample for the table
+  // on top of the frame. Bounded to kMaxTableBytes in all; `buildSeconds` accumulates the build
+  // time.
+  const embree::DirectionTable* rayTable(const WallMapGrid& grid, std::uint64_t gridKey,
+                                         const glm::dvec3& reference,
+                                         const embree::CameraRays& rays, const WallView& view,
+                                         StereoRays stereoRays, const embree::TileJob& job,
+                                         double& buildSeconds) {
+    const bool centre = rays.centreEyeConformal();
+    const bool withOrigins = !centre && stereoRays == StereoRays::Exact;
     std::uint64_t key = gridKey;
-    for (int value : {job.width, job.height, job.samplesPerPixel, static_cast<int>(job.seed)})
+    for (int value : {job.width, job.height, job.samplesPerPixel, static_cast<int>(job.seed),
+                      centre ? 0 : 1 + static_cast<int>(stereoRays)})
       key = mixHash(key, static_cast<double>(value));
+    if (!centre)  // the eye's place relative to the warp's centre decides the rays
+      for (int i = 0; i < 3; ++i) key = mixHash(key, view.eye_position[i] - reference[i]);
     TableEntry& entry = tables[key];
     entry.lastUsed = renders;
     if (entry.table || ++entry.renders < 2) return entry.table.get();
-    const std::size_t samples = static_cast<std::size_t>(job.width) *
-                                static_cast<std::size_t>(job.height) *
-                                static_cast<std::size_t>(job.samplesPerPixel);
-    if (samples > kMaxTableSamples) return nullptr;
-    if (tableSamples + samples > kMaxTableSamples) {  // make room: drop every built table
+    const std::size_t bytes = static_cast<std::size_t>(job.width) *
+                              static_cast<std::size_t>(job.height) *
+                              static_cast<std::size_t>(job.samplesPerPixel) *
+                              (withOrigins ? 6 : 3) * sizeof(float);
+    if (bytes > kMaxTableBytes) return nullptr;
+    if (tableBytes + bytes > kMaxTableBytes) {  // make room: drop every built table
       for (auto& [k, other] : tables) other.table.reset();
-      tableSamples = 0;
+      tableBytes = 0;
     }
     const auto start = std::chrono::steady_clock::now();
-    entry.table = std::make_unique<embree::DirectionTable>(grid, job);
+    if (centre) {
+      entry.table = std::make_unique<embree::DirectionTable>(grid, job);
+    } else if (withOrigins) {
+      entry.table = std::make_unique<embree::DirectionTable>(
+          job,
+          [&rays](double px, double py, glm::vec3& direction, glm::vec3& origin, float& reach) {
+            return rays.tailRay(px, py, direction, origin, reach);
+          },
+          true);
+    } else {
+      entry.table = std::make_unique<embree::DirectionTable>(
+          job,
+          [&rays](double px, double py, glm::vec3& direction, glm::vec3&, float&) {
+            return rays.fastDirection(px, py, direction);
+          },
+          false);
+    }
     buildSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    tableSamples += samples;
+    tableBytes += entry.table->bytes();
     return entry.table.get();
   }
 
@@ -94,9 +121,10 @@ struct EmbreeBackend::Impl {
     return key;
   }
 
-  // About 48M samples (576 MB): five 1920^2 walls at 2 spp, or one frame's worth of a large
-  // display at 1 spp.
-  static constexpr std::size_t kMaxTableSamples = std::size_t{48} << 20;
+  // 576 MB: 48M centre-eye samples (five 1920^2 walls at 2 spp, or one frame's worth of a large
+  // display at 1 spp), or 24M exact stereo samples (five 1920^2 walls' two eyes at 1 spp hold
+  // 37M: over the cap, so full-resolution exact stereo computes its tails every frame).
+  static constexpr std::size_t kMaxTableBytes = std::size_t{576} << 20;
   static constexpr std::uint64_t kIdleRenders = 8;
   struct TableEntry {
     int renders = 0;
@@ -115,8 +143,8 @@ struct EmbreeBackend::Impl {
   std::unique_ptr<EmbreeScene> scene;
   std::map<std::uint64_t, GridEntry> grids;
   std::map<std::uint64_t, TableEntry> tables;
-  std::size_t tableSamples = 0;  // held by `tables`
-  std::uint64_t renders = 0;     // renderInto calls so far
+  std::size_t tableBytes = 0;  // held by `tables`
+  std::uint64_t renders = 0;   // renderInto calls so far
 };
 
 EmbreeBackend::EmbreeBackend(const EmbreeOptions& options)
@@ -203,9 +231,11 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     if (!rays.straight()) {
       // Exact stereo: the curves bend within the ball around the warp's centre that the scene
       // keeps out of (a margin for float rounding); only what leaves it is traced.
+      // The query's radius caps its answer: a little beyond the reach, so that a scene keeping
+      // farther than every curve bends gets a ball that holds them all (the margins below).
       const double reach = rays.curvedReach();
       const double empty = embree::clearance(scene, glm::vec3(settings.camera.position),
-                                             static_cast<float>(reach));
+                                             static_cast<float>(1.01 * reach));
       rays.setEmptyRadius((1.0 - 1e-4) * empty - 1e-6 * reach);
     }
     job.width = planned.width;
@@ -214,10 +244,11 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                        static_cast<double>(wall.height) / planned.height};
     job.seed = static_cast<std::uint32_t>(planned.wallIndex * 3 + static_cast<int>(planned.eye));
     job.directions = nullptr;
-    if (rays.centreEyeConformal()) {
-      job.directions = impl_->directionTable(
-          *grid, Impl::gridKey(*warp, mapFingerprint, wall, settings.resolutionScale), job,
-          tableBuildSeconds);
+    if (warp) {
+      job.directions = impl_->rayTable(
+          *grid, Impl::gridKey(*warp, mapFingerprint, wall, settings.resolutionScale),
+          warp->reference(), rays,
+          planned.view, settings.stereoRays, job, tableBuildSeconds);
       if (job.directions) tableSamples += job.directions->sampleCount();
     }
     WallImage out;
@@ -253,7 +284,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                   {"render_seconds", seconds},
                   {"map_build_seconds", mapBuildSeconds},
                   {"direction_table_samples", tableSamples},
-                  {"cached_direction_table_samples", impl_->tableSamples},
+                  {"cached_direction_table_bytes", impl_->tableBytes},
                   {"cached_wall_grids", impl_->grids.size()},
                   {"camera_rays", cameraRays},
                   {"occlusion_rays", occlusionRays},

@@ -22,20 +22,21 @@ TEST(EmbreeMapCache, AWalkThroughManyMapsHoldsTheTablesOfTheRecentOnesOnly) {
   RenderSettings settings;
   settings.mode = RenderMode::Conformal;
   settings.resolutionScale = test::scaleFor(16);
-  std::uint64_t oneMapSamples = 0, mostSamples = 0, mostGrids = 0;
+  std::uint64_t oneMapBytes = 0, mostBytes = 0, mostGrids = 0;
   const int maps = 40;
   for (int m = 0; m < maps; ++m) {  // each map for 3 frames, as a walk re-baking often would
     const RetargetMap map = ceilinglessDilationMap(1.2 + 0.01 * m, 16);
     for (int frame = 0; frame < 3; ++frame) {
       const RenderResult result = backend.render(config, &map, settings);
-      if (m == 0 && frame == 2) oneMapSamples = stat(result, "cached_direction_table_samples");
-      mostSamples = std::max(mostSamples, stat(result, "cached_direction_table_samples"));
+      if (m == 0 && frame == 2) oneMapBytes = stat(result, "cached_direction_table_bytes");
+      mostBytes = std::max(mostBytes, stat(result, "cached_direction_table_bytes"));
       mostGrids = std::max(mostGrids, stat(result, "cached_wall_grids"));
     }
   }
-  ASSERT_EQ(oneMapSamples, 5u * 16 * 16) << "one table per wall after the second frame";
+  ASSERT_EQ(oneMapBytes, 5u * 16 * 16 * 3 * sizeof(float))
+      << "one table of directions per wall after the second frame";
   // Idle after 8 renders: at most the maps of the last 4 (3 frames each) hold anything.
-  EXPECT_LE(mostSamples, 4 * oneMapSamples);
+  EXPECT_LE(mostBytes, 4 * oneMapBytes);
   EXPECT_LE(mostGrids, 4u * 5);
   EXPECT_LT(mostGrids, static_cast<std::uint64_t>(maps) * 5) << "the bound must bite";
 }
