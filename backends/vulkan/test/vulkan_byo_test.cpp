@@ -1,0 +1,171 @@
+// Bring-your-own Vulkan (issue 25): the example application under tools/byo_vulkan_example, with
+// its own instance, device and pipelines, renders through the byo_* helpers what the Vulkan
+// backend renders (the same scene, baked map and walls) within the goldens' tolerance; broken
+// renders (the map's two cube maps swapped, the pre-pass's lists but the flat one left out) must
+// fail the same comparison; bad geometry and maps get one clear error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+// The example application's own headers (not an include directory of the test binary).
+#include "../../../tools/byo_vulkan_example/app_device.hpp"
+#include "../../../tools/byo_vulkan_example/app_renderer.hpp"
+#include "confvis/backends/vulkan/byo_frame.hpp"
+#include "confvis/backends/vulkan/byo_prepass.hpp"
+#include "confvis/backends/vulkan/byo_upload.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_display.hpp"
+#include "confvis/engine/builtin_scenes.hpp"
+#include "vulkan_test_support.hpp"
+
+namespace confvis {
+namespace {
+
+// The goldens' comparison (vulkan_golden_test.cpp): a pixel is bad when a channel is off by more
+// than kTolerance; a render passes with at most kBudget of each wall's pixels bad.
+constexpr float kTolerance = 0.05f;
+constexpr double kBudget = 0.01;
+constexpr int kWallPixels = 64;
+constexpr int kBakeResolution = 64;
+
+struct Fixture {
+  DisplayConfig config = test::loadConfig("cave5");
+  Scene scene = builtinScene("checker-sphere");
+  RetargetMap map;
+  RenderResult backend;
+  Fixture() {
+    BakeDisplayOptions bake;
+    bake.useCache = false;
+    bake.resolution = kBakeResolution;
+    map = bakeDisplay(config, bake).map;
+    test::ValidatedBackend vulkan;
+    vulkan->setScene(scene);
+    RenderSettings settings;
+    settings.mode = RenderMode::Conformal;
+    settings.resolutionScale = test::scaleFor(config, kWallPixels);
+    backend = vulkan->render(config, &map, settings);
+    test::expectNoValidationMessages(vulkan);
+  }
+};
+
+const Fixture& fixture() {
+  static const Fixture f;  // one bake and one backend render for every test here
+  return f;
+}
+
+struct AppRun {
+  std::vector<WallImage> images;
+  std::vector<std::string> messages;
+};
+
+AppRun runExample(const RetargetMap& map, byo_example::AppOptions options = {}) {
+  const Fixture& f = fixture();
+  AppRun run;
+  options.device = test::testDevice();
+  options.validation = true;
+  options.onValidationMessage = [&run](const std::string& m) { run.messages.push_back(m); };
+  options.resolutionScale = test::scaleFor(f.config, kWallPixels);
+  run.images = byo_example::renderThroughMap(f.config, f.scene, map, options);
+  return run;
+}
+
+// The largest share of bad pixels over the walls, example against backend.
+double worstBadFraction(const std::vector<WallImage>& images) {
+  const Fixture& f = fixture();
+  EXPECT_EQ(images.size(), f.backend.images.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < std::min(images.size(), f.backend.images.size()); ++i) {
+    EXPECT_EQ(images[i].wall, f.backend.images[i].wall);
+    const test::PixelComparison c =
+        test::comparePixels(images[i].image, f.backend.images[i].image, kTolerance);
+    worst = std::max(worst, c.badFraction());
+  }
+  return worst;
+}
+
+TEST(VulkanBringYourOwn, ExampleAppMatchesTheBackendThroughTheBakedMap) {
+  const AppRun run = runExample(fixture().map);
+  EXPECT_TRUE(run.messages.empty()) << run.messages.size() << " validation message(s), first: "
+                                    << (run.messages.empty() ? "" : run.messages.front());
+  EXPECT_LE(worstBadFraction(run.images), kBudget);
+  // Something was drawn on every wall (the comparison alone would pass two empty renders).
+  for (const WallImage& image : run.images)
+    EXPECT_GT(test::drawnPixels(image.image), image.image.pixelCount() / 2) << image.wall;
+}
+
+TEST(VulkanBringYourOwn, BrokenAppRendersFailTheComparison) {
+  RetargetMap swapped = fixture().map;
+  std::swap(swapped.geom, swapped.ray);
+  EXPECT_GT(worstBadFraction(runExample(swapped).images), 10 * kBudget);
+  byo_example::AppOptions flatOnly;
+  flatOnly.onlyFlatList = true;  // no pieces at the cut, no tessellation: holes and chords
+  EXPECT_GT(worstBadFraction(runExample(fixture().map, flatOnly).images), kBudget);
+}
+
+TEST(VulkanBringYourOwn, WallBoundsAreTheBackendsInRadians) {
+  const Fixture& f = fixture();
+  const Wall& front = f.config.wall("front");
+  const vulkan::WallWarpBounds b = vulkan::wallWarpBounds(front, 64, 64, f.map.reference);
+  // A wall w metres wide at distance D straight ahead: its corner pixels, seen from c at the
+  // centre, subtend (w / 64) * D / r^2 with r the distance to the corner; the smallest there.
+  const Wall lit = front.litRectangle();
+  const glm::dvec3 c = f.map.reference;
+  const double pitch = std::min(lit.widthMetres(), lit.heightMetres()) / 64;
+  const double distance = std::abs(glm::dot(lit.normal(), lit.lowerLeft - c));
+  double farthest = 0.0;
+  for (const glm::dvec3& corner : {lit.lowerLeft, lit.lowerRight, lit.upperLeft, lit.upperRight()})
+    farthest = std::max(farthest, glm::length(corner - c));
+  EXPECT_NEAR(b.pixelAngle, pitch * distance / (farthest * farthest), 1e-12);
+  EXPECT_DOUBLE_EQ(b.errorAngle, 0.5 * b.pixelAngle);
+  EXPECT_DOUBLE_EQ(b.cutGapAngle, 4.0 * b.pixelAngle);
+  EXPECT_NEAR(b.maxSegmentAngle, 20.0 * 3.14159265358979 / 180.0, 1e-9);
+  EXPECT_THROW(vulkan::wallWarpBounds(front, 0, 64, c), Error);
+}
+
+TEST(VulkanBringYourOwn, BadGeometryAndMapsGetOneClearError) {
+  byo_example::AppVulkan vk(test::testDevice(), false, nullptr);
+  const float vertices[] = {0, 0, -1, 1, 0, -1, 0, 1, -1};
+  vulkan::PrepassGeometry geometry;
+  geometry.vertices = vertices;
+  geometry.vertexCount = 3;
+  geometry.layout.stride = 12;
+  geometry.indices = {0, 1, 2};
+  const auto message = [&](const vulkan::PrepassGeometry& g) {
+    try {
+      vulkan::ConformalPrepassStep step(vk.appDevice(), g);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  vulkan::PrepassGeometry normalPastStride = geometry;
+  normalPastStride.layout.normalOffset = 4;
+  EXPECT_NE(message(normalPastStride).find("normal at offset 4"), std::string::npos);
+  vulkan::PrepassGeometry halfPositions = geometry;
+  halfPositions.layout.positionFormat = VK_FORMAT_R16G16B16_SFLOAT;
+  EXPECT_NE(message(halfPositions).find("position format"), std::string::npos);
+  vulkan::PrepassGeometry badIndex = geometry;
+  badIndex.indices = {0, 1, 3};
+  EXPECT_NE(message(badIndex).find("names vertex 3 of 3"), std::string::npos);
+  vulkan::PrepassGeometry badMesh = geometry;
+  badMesh.meshes = {{3, 3, 0}};
+  EXPECT_NE(message(badMesh).find("mesh 0"), std::string::npos);
+
+  RetargetMap broken = fixture().map;
+  broken.geom.faces[2].pixels[5] = std::nanf("");
+  try {
+    vulkan::uploadRetargetMap(vk.appDevice(), broken);
+    ADD_FAILURE() << "a map with a NaN texel was uploaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace confvis
