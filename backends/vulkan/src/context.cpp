@@ -251,7 +251,9 @@ VulkanContext::~VulkanContext() { release(); }
 
 void VulkanContext::release() noexcept {
   if (device_) {
-    vkDeviceWaitIdle(device_);
+    // An application's device: its other queues may be busy on other threads (vkDeviceWaitIdle
+    // needs them all); this context's own submissions were waited for.
+    if (ownsDevice_) vkDeviceWaitIdle(device_);
     if (fence_) vkDestroyFence(device_, fence_, nullptr);
     if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
     if (ownsDevice_) vkDestroyDevice(device_, nullptr);

@@ -2,6 +2,7 @@
 // instance and device stay the application's; the context makes only the command pool and the
 // fence its uploads are submitted with.
 #include <string>
+#include <vector>
 
 #include "confvis/base/error.hpp"
 #include "context.hpp"

@@ -107,19 +107,26 @@ TEST(VulkanBringYourOwn, BrokenAppRendersFailTheComparison) {
 }
 
 TEST(VulkanBringYourOwn, WallBoundsAreTheBackendsInRadians) {
-  const Fixture& f = fixture();
-  const Wall& front = f.config.wall("front");
-  const vulkan::WallWarpBounds b = vulkan::wallWarpBounds(front, 64, 64, f.map.reference);
-  // A wall w metres wide at distance D straight ahead: its corner pixels, seen from c at the
-  // centre, subtend (w / 64) * D / r^2 with r the distance to the corner; the smallest there.
+  const DisplayConfig config = test::loadConfig("cave5");  // no bake: any centre will do
+  const Wall& front = config.wall("front");
+  const glm::dvec3 c = config.reference + glm::dvec3(0.1, -0.2, 0.3);
+  const vulkan::WallWarpBounds b = vulkan::wallWarpBounds(front, 64, 64, c);
+  // The angle a pixel step along the wall subtends at c, measured at the lit rectangle's corners
+  // (the farthest points): the bound may not exceed any of them (a bend of `errorAngle` stays
+  // within half a pixel everywhere) and, being the smallest, lies close to the smallest.
   const Wall lit = front.litRectangle();
-  const glm::dvec3 c = f.map.reference;
   const double pitch = std::min(lit.widthMetres(), lit.heightMetres()) / 64;
-  const double distance = std::abs(glm::dot(lit.normal(), lit.lowerLeft - c));
-  double farthest = 0.0;
+  const glm::dvec3 centre = 0.5 * (lit.lowerLeft + lit.upperRight());
+  double smallest = 1e9;
   for (const glm::dvec3& corner : {lit.lowerLeft, lit.lowerRight, lit.upperLeft, lit.upperRight()})
-    farthest = std::max(farthest, glm::length(corner - c));
-  EXPECT_NEAR(b.pixelAngle, pitch * distance / (farthest * farthest), 1e-12);
+    for (const glm::dvec3& axis : {lit.right(), lit.up()}) {
+      const glm::dvec3 inward = glm::dot(axis, centre - corner) > 0 ? axis : -axis;
+      const glm::dvec3 a0 = glm::normalize(corner - c);
+      const glm::dvec3 a1 = glm::normalize(corner + pitch * inward - c);
+      smallest = std::min(smallest, std::acos(std::clamp(glm::dot(a0, a1), -1.0, 1.0)));
+    }
+  EXPECT_LE(b.pixelAngle, smallest * (1.0 + 1e-6));
+  EXPECT_GE(b.pixelAngle, 0.5 * smallest);
   EXPECT_DOUBLE_EQ(b.errorAngle, 0.5 * b.pixelAngle);
   EXPECT_DOUBLE_EQ(b.cutGapAngle, 4.0 * b.pixelAngle);
   EXPECT_NEAR(b.maxSegmentAngle, 20.0 * 3.14159265358979 / 180.0, 1e-9);
@@ -156,7 +163,7 @@ TEST(VulkanBringYourOwn, BadGeometryAndMapsGetOneClearError) {
   badMesh.meshes = {{3, 3, 0}};
   EXPECT_NE(message(badMesh).find("mesh 0"), std::string::npos);
 
-  RetargetMap broken = fixture().map;
+  RetargetMap broken = RetargetMap::identity(8);
   broken.geom.faces[2].pixels[5] = std::nanf("");
   try {
     vulkan::uploadRetargetMap(vk.appDevice(), broken);

@@ -23,7 +23,8 @@ namespace confvis::vulkan {
 // (warpSamplerInfo: linear, clamp to edge). Bind geomView() with sampler() at
 // CONFVIS_WARP_SET / CONFVIS_WARP_BINDING of confvis_warp.glsl for the warp; the conformal
 // pre-pass step (byo_prepass.hpp) reads both. Destroys its objects (not the device) when
-// destroyed: keep it alive until the device has finished every command that samples it.
+// destroyed, without waiting for the device: keep it alive until the device has finished every
+// command that samples it (the same holds for UploadedTexture and ConformalPrepassStep).
 class UploadedRetargetMap {
  public:
   UploadedRetargetMap(UploadedRetargetMap&&) noexcept;
