@@ -235,6 +235,10 @@ void VulkanContext::createDevice() {
   info.pQueueCreateInfos = &queueInfo;
   check(vkCreateDevice(physicalDevice_, &info, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  createCommandPool();
+}
+
+void VulkanContext::createCommandPool() {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   poolInfo.queueFamilyIndex = queueFamily_;
@@ -247,10 +251,12 @@ VulkanContext::~VulkanContext() { release(); }
 
 void VulkanContext::release() noexcept {
   if (device_) {
-    vkDeviceWaitIdle(device_);
+    // An application's device: its other queues may be busy on other threads (vkDeviceWaitIdle
+    // needs them all); this context's own submissions were waited for.
+    if (ownsDevice_) vkDeviceWaitIdle(device_);
     if (fence_) vkDestroyFence(device_, fence_, nullptr);
     if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
+    if (ownsDevice_) vkDestroyDevice(device_, nullptr);
   }
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(

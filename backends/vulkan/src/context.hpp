@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "confvis/backends/vulkan/byo_device.hpp"
 #include "confvis/backends/vulkan/device_requirements.hpp"
 
 namespace confvis::vulkan {
@@ -31,6 +32,9 @@ VkInstance createPlainInstance();
 class VulkanContext {
  public:
   explicit VulkanContext(const ContextOptions& options);
+  // On an application's device and queue (context_adopted.cpp): owns only its command pool and
+  // fence; the device stays the application's.
+  explicit VulkanContext(const AppDevice& app);
   ~VulkanContext();
   VulkanContext(const VulkanContext&) = delete;
   VulkanContext& operator=(const VulkanContext&) = delete;
@@ -56,6 +60,9 @@ class VulkanContext {
   void createInstance(const ContextOptions& options);
   void createDevice();
   void release() noexcept;
+  void createCommandPool();  // and the fence: for submitAndWait
+
+  bool ownsDevice_ = true;  // false on an application's device
 
   std::function<void(const std::string&)> onMessage_;
   VkInstance instance_ = VK_NULL_HANDLE;

@@ -111,4 +111,9 @@
 // GLSL include confvis_warp.glsl (installed in ${confvis_SHADER_DIR}).
 #if __has_include(<vulkan/vulkan.h>)
 #include "confvis/backends/vulkan/warp_interface.hpp"
+// ... and the map upload, per-wall bounds and conformal pre-pass on the application's device.
+#include "confvis/backends/vulkan/byo_device.hpp"
+#include "confvis/backends/vulkan/byo_frame.hpp"
+#include "confvis/backends/vulkan/byo_prepass.hpp"
+#include "confvis/backends/vulkan/byo_upload.hpp"
 #endif
