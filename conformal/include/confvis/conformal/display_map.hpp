@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "confvis/base/vec3.hpp"
+#include "confvis/conformal/display_template.hpp"
 
 namespace confvis {
 
@@ -54,11 +55,14 @@ struct DisplayConfig;
 // Euclidean: the faster preset (cave5 at 20 cm, shared 2-core machine: 50 against 75 ms CPU for
 // the whole re-bake), but its removed face bends the map around the display's centre (0.7 px
 // median mirror asymmetry on cave3, 59 px on flat-wall).
-enum class DisplayMapRoute { Spherical, Euclidean };
+// Hyperbolic: iterated boundary curvature (disk_map.hpp); measured against the other two in
+// conformal/README.md ("Map accuracy"), Euclidean fallback like the spherical route.
+enum class DisplayMapRoute { Spherical, Euclidean, Hyperbolic };
 
 struct DisplayMapOptions {
   double edgeLength = 0.0;          // metres; <= 0 takes the config's edge_length
   DisplayMapRoute route = DisplayMapRoute::Spherical;
+  TemplateGrading grading;  // uniform edges unless radiusDegrees > 0 (display_template.hpp)
   bool showProgress = false;
 };
 

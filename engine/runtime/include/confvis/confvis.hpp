@@ -68,6 +68,7 @@
 #include "confvis/conformal/ricci_flow.hpp"
 #include "confvis/conformal/bake_verdict.hpp"
 #include "confvis/conformal/map_alignment_quality.hpp"
+#include "confvis/conformal/map_accuracy.hpp"
 
 // Keeping the map around the tracked head.
 #include "confvis/runtime/background_bake.hpp"
