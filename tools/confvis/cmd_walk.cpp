@@ -19,6 +19,7 @@
 #include "cluster_cli.hpp"
 #include "command.hpp"
 #include "confvis/runtime/map_follower.hpp"
+#include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
@@ -104,6 +105,7 @@ int runWalk(const WalkArgs& args) {
   // The map's render config: the display with its reference at the map's, rebuilt when a new map
   // is swapped in (a --cluster rank other than 0 has no follower to hand it out).
   DisplayConfig frameConfig = config;
+  const EdgeBlender blender(config);  // masks once: they do not depend on the head
   std::uint64_t frameConfigGeneration = 0;
   nlohmann::json frames = nlohmann::json::array(), errors = nlohmann::json::array();
   int previousBakesStarted = 0;
@@ -164,6 +166,7 @@ int runWalk(const WalkArgs& args) {
       throw Error(error.code(), "frame " + std::to_string(index) + " (t = " +
                                     std::to_string(frameSeconds) + " s): " + error.what());
     }
+    blender.apply(result.images);  // overlapping projectors, when configured
     const fs::path directory = fs::path(args.output) / frameName(index);
     writeRenderOutput(directory, frameConfig, settings, result,
                       {{"walk", {{"frame", index}, {"seconds", frameSeconds}}}});
