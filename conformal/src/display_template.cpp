@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "confvis/base/error.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 #include "display_template_parts.hpp"
 #include "display_template_sources.hpp"
 
@@ -302,15 +303,19 @@ DisplayTemplates closureTemplates(const DisplayConfig& config, const CoarseDispl
 
 }  // namespace
 
-bool displayMapIsIdentity(const DisplayConfig& config) {
+bool displayMapIsIdentity(const DisplayConfig& displayConfig) {
+  const DisplayConfig config = surfaceConfig(displayConfig);  // projector overlaps count once
   if (config.source != SourceField::FullSphere) return false;
   if (std::any_of(config.walls.begin(), config.walls.end(), hasBezel)) return false;
   // Without bezels every wall is one fan cell, whatever the edge length: the topology is cheap.
   return assembleDisplay(config, resolveEdgeLength(config, 0.0)).closed();
 }
 
-DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength,
+DisplayTemplates buildDisplayTemplates(const DisplayConfig& displayConfig, double edgeLength,
                                        const TemplateGrading& grading) {
+  // The map sees display surfaces: projector walls overlapping on one plane are one rectangle,
+  // previews none (display_surfaces.hpp).
+  const DisplayConfig config = surfaceConfig(displayConfig);
   const double h = resolveEdgeLength(config, edgeLength);
   // The source of a sphere field is about as large as the display again (more for small ones).
   // Checked before anything is built: assembling a huge display at edge length h is itself slow.

@@ -12,6 +12,7 @@
 #include "backend_factory.hpp"
 #include "cluster_cli.hpp"
 #include "command.hpp"
+#include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/base/error.hpp"
@@ -119,6 +120,7 @@ int runRender(const RenderArgs& args) {
       cluster ? cluster->render(*backend, config, renderMap, settings)
               : backend->render(config, renderMap, settings);
   if (!rendered) return 0;  // a cluster rank other than 0: rank 0 writes every image
+  EdgeBlender(config).apply(rendered->images);  // overlapping projectors, when configured
   const RenderResult& result = *rendered;
   const double renderSeconds = secondsSince(stage);
 

@@ -42,6 +42,7 @@
 #include "confvis/engine/viewer.hpp"
 #include "confvis/engine/default_edge_length.hpp"
 #include "confvis/engine/display_output.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 #include "confvis/engine/scene_units.hpp"
 #include "confvis/engine/tracking_config.hpp"
 
@@ -97,6 +98,7 @@
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/frame_stats.hpp"
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/backends/retarget_map_files.hpp"
