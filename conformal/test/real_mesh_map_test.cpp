@@ -8,6 +8,7 @@
 #include <complex>
 #include <numbers>
 
+#include "confvis/conformal/distortion.hpp"
 #include "confvis/conformal/real_mesh_map.hpp"
 
 using namespace confvis::conformal;
@@ -84,6 +85,18 @@ TEST(RealMeshMap, AFlatFaceIsMovedOffItsLongEdgeTowardsItsNeighboursSide) {
   // A face with slack is left alone.
   TriMesh again = moved;
   EXPECT_EQ(mollifyDegenerateFaces(again), 0);
+  // In the input the flat face has no orientation: a counter-clockwise image of it is not
+  // counted as flipped, a clockwise one is.
+  std::vector<std::complex<double>> uv;
+  for (const auto& p : {a, b, c, e, m, d}) uv.emplace_back(p[0], p[1]);
+  uv[4] += std::complex<double>(0, 1e-3);
+  DistortionStats stats = measureDistortion(mesh, uv);
+  EXPECT_EQ(stats.flippedFaces, 0);
+  EXPECT_EQ(stats.degenerateFaces, 1);
+  uv[4] -= std::complex<double>(0, 2e-3);
+  stats = measureDistortion(mesh, uv);
+  EXPECT_EQ(stats.flippedFaces, 1);
+  EXPECT_EQ(stats.degenerateFaces, 0);
 }
 
 }  // namespace

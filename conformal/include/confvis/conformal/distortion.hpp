@@ -14,7 +14,8 @@ namespace confvis::conformal {
 struct DistortionStats {
   int faces = 0;
   double ratioMean = 0, ratioP50 = 0, ratioP99 = 0, ratioMax = 0;  // σ_max / σ_min per face
-  int flippedFaces = 0;          // faces whose orientation the map reverses (or collapses)
+  int flippedFaces = 0;          // faces whose image is clockwise or collapsed
+  int degenerateFaces = 0;       // faces of zero area in space, left out of the ratios
   double boundaryRoundness = 0;  // max | |uv| - 1 | over boundary vertices
   double logAngleRatioStd = 0;   // of log(mapped angle / input angle) over all corners
   double histogramMin = -0.5, histogramMax = 0.5;

@@ -2,6 +2,7 @@
 // Where a mesh read from a file came from: which of the file's vertices and faces each mesh
 // vertex and triangle is, so that errors about the mesh name places as the file numbers them
 // (not the indices of the cleaned-up copy the algorithms work on).
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
