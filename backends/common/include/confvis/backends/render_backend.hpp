@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/backends/frame_stats.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
@@ -56,7 +57,7 @@ struct WallImage {
 
 struct RenderResult {
   std::vector<WallImage> images;   // walls in settings order (config order), eyes in settings order
-  nlohmann::json stats = nlohmann::json::object();  // backend, seconds, rays per second, ...
+  FrameStats stats;  // the frame's times and counts (frame_stats.hpp); toJson for files
 };
 
 // Thread-safety: not thread-safe; call a backend from one thread at a time (it keeps the scene,
