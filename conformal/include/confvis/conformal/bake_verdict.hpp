@@ -14,6 +14,8 @@
 
 namespace confvis {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct BakeVerdict {
   std::size_t flippedTriangles = 0;  // source and target disk triangles turned over (or flat)
   std::size_t flippedTexels = 0;     // ray texels whose Jacobian reverses orientation

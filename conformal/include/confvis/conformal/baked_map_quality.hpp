@@ -38,6 +38,8 @@ struct BakedConformality {
 BakedConformality measureBakedConformality(const CubeMap& map,
                                            const ConformalityOptions& options = {});
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct RoundTripErrors {
   std::size_t measured = 0;
   // Measured texels whose inverse lookup straddles a jump of the inverse map by more than

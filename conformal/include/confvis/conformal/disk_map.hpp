@@ -29,6 +29,7 @@ namespace confvis::conformal {
 // the flow still fails, a second run with flips throughout.
 enum class FlipPolicy { Off, On, Auto };
 
+// Thread-safety: a value (options); onIteration is called on the thread that computes the map.
 struct DiskMapOptions {
   Geometry geometry = Geometry::Euclidean;  // the route: background geometry of the flow
   Scheme scheme = Scheme::Yamabe;

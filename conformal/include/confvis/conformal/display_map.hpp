@@ -34,6 +34,8 @@ struct SphereDiskMesh {
   std::vector<std::uint8_t> lit;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct DisplayMap {
   SphereDiskMesh source;  // S: the virtual field of view shown (sphere cut open, or hemisphere)
   SphereDiskMesh target;  // D: the directions covered by the display's lit walls

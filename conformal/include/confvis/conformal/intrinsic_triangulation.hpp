@@ -12,6 +12,8 @@
 
 namespace confvis::conformal {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct IntrinsicTriangulation {
   int vertexCount = 0;
   std::vector<std::array<int, 3>> faceVertices;  // counter-clockwise

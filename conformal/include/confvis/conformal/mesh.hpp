@@ -11,6 +11,8 @@ namespace confvis::conformal {
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble>;
 using Vec3 = TriMesh::Point;
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct MeshTopology {
   int vertices = 0;
   int edges = 0;

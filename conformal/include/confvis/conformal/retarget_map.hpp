@@ -15,6 +15,9 @@
 
 namespace confvis {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
+// toVirtual and toPhysical only read: a map in use by a renderer may be shared by many.
 struct RetargetMap {
   glm::dvec3 reference{0.0};  // c, metres, physical frame
   CubeMap ray;

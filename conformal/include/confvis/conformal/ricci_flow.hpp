@@ -13,6 +13,8 @@
 
 namespace confvis::conformal {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct CirclePackingMetric {
   Geometry geometry = Geometry::Euclidean;
   Scheme scheme = Scheme::Yamabe;
@@ -52,6 +54,8 @@ Eigen::SparseMatrix<double> curvatureJacobian(const IntrinsicTriangulation& tri,
 void checkTargetCurvature(const IntrinsicTriangulation& tri, Geometry geometry,
                           const std::vector<double>& target);
 
+// Thread-safety: a value (options); onIteration and updateTarget are called on the thread that
+// runs the flow.
 struct RicciFlowOptions {
   double tolerance = 1e-10;      // on max |K̄ - K|
   int maxIterations = 100;

@@ -15,6 +15,8 @@ struct PlannedImage {
   int width = 0, height = 0;  // output pixels: round(wall resolution * scale), at least 1
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct RenderPlan {
   std::vector<PlannedImage> images;  // walls in settings order, each with its eyes in order
   bool hasOffCentreEyes = false;     // some eye is not at the reference point

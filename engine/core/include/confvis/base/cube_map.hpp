@@ -34,6 +34,8 @@ inline constexpr std::array<CubeFace, 6> kCubeFaces = {
     CubeFace::PosX, CubeFace::NegX, CubeFace::PosY, CubeFace::NegY, CubeFace::PosZ, CubeFace::NegZ};
 const char* toString(CubeFace face) noexcept;
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct CubeMap {
   int faceSize = 0;                // N
   std::array<ImageRGBA, 6> faces;  // indexed by CubeFace, each N x N

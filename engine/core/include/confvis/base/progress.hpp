@@ -9,6 +9,8 @@
 
 namespace confvis {
 
+// Thread-safety: advance() may be called from any number of threads at once (workers);
+// construction, finish() and destruction from one thread.
 class Progress {
  public:
   Progress(std::string label, std::size_t total, bool enabled = true);

@@ -12,6 +12,7 @@
 
 namespace confvis {
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct BuiltinSceneOptions {
   // Mesh density, 0 = the scene's default:
   //   checker-sphere: quads per cube-face edge (default 32; a multiple of 8 keeps every

@@ -41,6 +41,8 @@ struct Bezel {
   double left = 0, right = 0, bottom = 0, top = 0;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct Wall {
   std::string name;
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
@@ -67,6 +69,8 @@ struct Wall {
 
 enum class SourceField { FullSphere, Hemisphere };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct DisplayConfig {
   std::string name;
   std::vector<Wall> walls;

@@ -41,6 +41,8 @@ struct WallWindow {
   bool decorated = true;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct WallOutput {
   std::optional<WallWindow> window;
   std::optional<StereoOutput> stereo;

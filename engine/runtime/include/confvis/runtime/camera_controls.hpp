@@ -10,6 +10,7 @@
 
 namespace confvis {
 
+// Thread-safety: not thread-safe; call it from the thread that polls the windows' events.
 class CameraControls {
  public:
   double metresPerSecond = 1.5;

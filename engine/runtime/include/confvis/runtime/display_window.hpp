@@ -12,6 +12,7 @@ namespace confvis {
 
 // glfwInit / glfwTerminate. Throws Error(DeviceUnsupported) when no display can be opened
 // (no DISPLAY / WAYLAND_DISPLAY), with GLFW's own reason.
+// Thread-safety: not thread-safe; make, poll and destroy it on the main thread (GLFW's rule).
 class GlfwSession {
  public:
   GlfwSession();
@@ -30,6 +31,7 @@ struct WindowInput {
   bool resized = false;      // the framebuffer changed size
 };
 
+// Thread-safety: not thread-safe; use it on the main thread only, as GLFW requires.
 class DisplayWindow {
  public:
   DisplayWindow(const WindowPlan& plan, const std::string& title);

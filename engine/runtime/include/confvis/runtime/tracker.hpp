@@ -14,6 +14,8 @@
 
 namespace confvis {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct TrackedPose {
   HeadPose head;
   double seconds = 0.0;  // when the pose was measured, on the tracker's clock

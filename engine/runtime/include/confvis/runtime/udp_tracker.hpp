@@ -18,6 +18,9 @@ namespace confvis {
 
 enum class TrackerProtocol { DTrack, JsonLines };
 
+// Thread-safety: latest() and status() may be called from any number of threads at once
+// (a short lock; the receiver thread is the tracker's own); construction and destruction from
+// one thread.
 class UdpTracker : public Tracker {
  public:
   // Binds UDP `port` on every interface (0: an ephemeral port, see port()) and starts the

@@ -21,6 +21,8 @@ struct Screenshot {
   std::vector<std::uint8_t> rgba;
 };
 
+// Thread-safety: not thread-safe; one thread presents (the one that owns the window and the
+// PresentContext's queue).
 class WindowPresenter {
  public:
   // vsync: FIFO; otherwise MAILBOX, else IMMEDIATE, where the surface offers them (else FIFO).

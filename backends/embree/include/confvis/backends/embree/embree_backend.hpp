@@ -9,6 +9,7 @@
 
 namespace confvis {
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct EmbreeOptions {
   // Exact stereo rays: straight segments marched before the curve's straight asymptote.
   int curvedRaySegments = 12;

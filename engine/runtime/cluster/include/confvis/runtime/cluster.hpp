@@ -40,6 +40,7 @@
 namespace confvis {
 
 // A rank lost or refused (config mismatch); the message names rank, host and walls.
+// Thread-safety: an immutable value, as Error.
 class ClusterError : public Error {
  public:
   using Error::Error;
@@ -50,6 +51,7 @@ struct ClusterOptions {
   std::size_t mapChunkBytes = std::size_t{1} << 20;  // a new map travels in pieces of this size
 };
 
+// Thread-safety: not thread-safe: one thread per process makes every call (see above).
 class Cluster {
  public:
   // Collective. Checks that every rank runs the same confvis version on a display with the same
