@@ -19,11 +19,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/bake.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Thread-safety: a value (options): read it from any number of threads at once.
 struct BakeDisplayOptions {

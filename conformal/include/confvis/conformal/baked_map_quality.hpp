@@ -9,9 +9,10 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "confvis/base/cube_map.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 inline double texelAngle(int resolution) { return 2.0 / resolution; }
 

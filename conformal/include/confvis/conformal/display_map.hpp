@@ -16,9 +16,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A triangulated topological disk on the unit sphere with a per-vertex disk coordinate.
 struct SphereDiskMesh {

@@ -6,7 +6,10 @@
 #include <filesystem>
 #include <string>
 
-namespace confvis::conformal {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble>;
 using Vec3 = TriMesh::Point;
@@ -42,4 +45,5 @@ TriMesh readMesh(const std::filesystem::path& path);
 // Boundary loops as vertex index lists, each following the boundary half-edges.
 std::vector<std::vector<int>> boundaryLoops(const TriMesh& mesh);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

@@ -11,9 +11,10 @@
 #include <optional>
 
 #include "confvis/base/cube_map.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Thread-safety: a value: read it from any number of threads at once; change it from one
 // thread while no other reads it.

@@ -8,10 +8,12 @@
 #include <functional>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/circle_packing.hpp"
 #include "confvis/conformal/intrinsic_triangulation.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 // Thread-safety: a value: read it from any number of threads at once; change it from one
 // thread while no other reads it.
@@ -107,4 +109,5 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
                              const std::vector<double>& target,
                              const RicciFlowOptions& options = {});
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

@@ -18,6 +18,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/cube_map.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/base/png_io.hpp"

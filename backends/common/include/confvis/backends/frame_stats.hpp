@@ -20,9 +20,10 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Embree: one traced image (a wall for an eye).
 struct EmbreeImageStats {

@@ -11,13 +11,14 @@
 #include <nlohmann/json.hpp>
 
 #include "confvis/backends/frame_stats.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/scene.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class RenderMode { Plain, Conformal };
 // Stereo eyes in conformal mode (design note §5): Exact marches the bent virtual ray

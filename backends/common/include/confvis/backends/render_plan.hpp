@@ -4,9 +4,10 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/engine/view.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct PlannedImage {
   int wallIndex = 0;  // into config.walls

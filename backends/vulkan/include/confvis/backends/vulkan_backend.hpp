@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // How the eyes of a wall are drawn in stereo.
 enum class StereoPasses {

@@ -22,11 +22,12 @@
 #include <array>
 #include <filesystem>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/base/vec3.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class CubeFace { PosX, NegX, PosY, NegY, PosZ, NegZ };  // OpenEXR's and Vulkan's order
 

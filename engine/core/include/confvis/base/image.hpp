@@ -5,7 +5,9 @@
 #include <cstddef>
 #include <vector>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // Thread-safety: a value: read it from any number of threads at once; change it from one
 // thread while no other reads it.

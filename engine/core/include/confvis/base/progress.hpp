@@ -7,7 +7,9 @@
 #include <mutex>
 #include <string>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // Thread-safety: advance() may be called from any number of threads at once (workers);
 // construction, finish() and destruction from one thread.

@@ -8,9 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/scene.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Thread-safety: a value (options): read it from any number of threads at once.
 struct BuiltinSceneOptions {

@@ -30,10 +30,11 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/tracking_config.hpp"
 #include "confvis/engine/display_output.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Unlit frame inside a wall rectangle, metres from each edge. The wall's pixels cover only the
 // lit area, so a tiled wall is modelled by rectangles that share edges, with bezels inside them.

@@ -23,9 +23,10 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class DisplayFormat { Confvis, SgctJson, SgctXml, ParaViewPvx };
 

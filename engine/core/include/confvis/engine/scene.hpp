@@ -9,7 +9,9 @@
 #include <string>
 #include <vector>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // An RGBA image in linear colour (sRGB-encoded files are decoded on load).
 // Orientation follows glTF: row 0 is the top of the image and lies at uv v = 0; u grows to the

@@ -15,9 +15,10 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Length unit of the tracker's positions. ProtocolDefault: the protocol's own (ART DTrack sends
 // millimetres, the JSON-lines protocol metres).

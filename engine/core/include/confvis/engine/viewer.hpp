@@ -3,7 +3,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 enum class Eye { Left, Center, Right };
 

@@ -4,11 +4,12 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/window_plan.hpp"
 
 struct GLFWwindow;
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // glfwInit / glfwTerminate. Throws Error(DeviceUnsupported) when no display can be opened
 // (no DISPLAY / WAYLAND_DISPLAY), with GLFW's own reason.

@@ -7,7 +7,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 struct FrameRecord {
   double frameSeconds = 0.0;    // start of this frame to the start of the next (or the end)

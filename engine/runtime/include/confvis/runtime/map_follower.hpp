@@ -37,11 +37,12 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Bakes `config` (whose reference is already `reference`) into a map around `reference`.
 using BakeFunction =

@@ -10,7 +10,9 @@
 
 #include <vulkan/vulkan.h>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 struct PresentContextOptions {
   bool validation = false;  // VK_LAYER_KHRONOS_validation + messenger; an error if not installed

@@ -10,9 +10,10 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Thread-safety: a value: read it from any number of threads at once; change it from one
 // thread while no other reads it.

@@ -10,11 +10,12 @@
 #include <optional>
 #include <thread>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/tracking_config.hpp"
 #include "confvis/runtime/tracker.hpp"
 #include "confvis/runtime/tracker_packets.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class TrackerProtocol { DTrack, JsonLines };
 

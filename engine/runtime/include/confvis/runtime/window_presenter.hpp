@@ -9,11 +9,12 @@
 
 #include <vulkan/vulkan.h>
 
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/present_context.hpp"
 
 struct GLFWwindow;
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A presented frame read back from the swapchain image: RGBA 8-bit codes, top row first.
 struct Screenshot {

@@ -6,8 +6,9 @@
 #include <string>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Thread-safety: a value (options): read it from any number of threads at once.
 struct EmbreeOptions {

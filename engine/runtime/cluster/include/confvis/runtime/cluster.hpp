@@ -32,12 +32,13 @@
 
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/viewer.hpp"
 #include "confvis/runtime/frame_state.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A rank lost or refused (config mismatch); the message names rank, host and walls.
 // Thread-safety: an immutable value, as Error.
