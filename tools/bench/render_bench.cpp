@@ -216,7 +216,7 @@ int main(int argc, char** argv) {
                 "repeats (best), shading %s\n",
                 config.name.c_str(), config.walls.size(), scene.name.c_str(),
                 scene.triangleCount(), mapName.c_str(), scale, repeats,
-                warmUp.stats["shading_simd"].get<std::string>().c_str());
+                warmUp.stats.embree->shadingSimd.c_str());
     if (!profileMode.empty()) {
       RenderResult frame;  // a frame loop's images, rendered over (renderInto)
       if (profileMode == "conformal") backend.render(config, &map, conformal);  // builds tables
@@ -285,11 +285,12 @@ int main(int argc, char** argv) {
       raw16PlainTable = bench::rawIntersect16Loop(rawScene, config, scale, &plainRays);
       raw16PlainTableSeconds = std::min(raw16PlainTableSeconds, raw16PlainTable.seconds);
     }
-    const double rays = plainResult.stats["camera_rays"].get<double>();
+    const double rays = static_cast<double>(plainResult.stats.embree->cameraRays);
     const double plainRate = rays / plainSeconds, conformalRate = rays / conformalSeconds;
     const double rawRate = static_cast<double>(raw.rays) / rawSeconds;
     std::printf("\nplain      %8.4f s  %7.2f Mrays/s  (%.0f rays, %.0f retraced)\n", plainSeconds,
-                plainRate * 1e-6, rays, plainResult.stats["retraced_rays"].get<double>());
+                plainRate * 1e-6, rays,
+                static_cast<double>(plainResult.stats.embree->retracedRays));
     std::printf("conformal  %8.4f s  %7.2f Mrays/s  conformal/plain time %.3f (goal <= 1.05)\n",
                 conformalSeconds, conformalRate * 1e-6, conformalSeconds / plainSeconds);
     std::printf("raw rtcIntersect8 %8.4f s  %7.2f Mrays/s  plain %.0f %%, conformal %.0f %% of "
@@ -309,7 +310,7 @@ int main(int argc, char** argv) {
                 100 * conformalRate / raw16Rate);
     // The same loop over the conformal frame's own rays (they cross the squeezed parts of the
     // scene: the fair ceiling of a conformal render, beside the plain-ray loop the goal names).
-    const double conformalRayCount = conformalResult.stats["camera_rays"].get<double>();
+    const double conformalRayCount = static_cast<double>(conformalResult.stats.embree->cameraRays);
     const double rawConformalRate = static_cast<double>(rawConformal.rays) / rawConformalSeconds;
     std::printf("raw loop over the conformal rays %8.4f s (%.3f x the plain-ray loop): conformal "
                 "render %.0f %% of its rate (CPU: %.4f s, %.0f %%)\n",
@@ -343,16 +344,16 @@ int main(int argc, char** argv) {
     const RenderResult secondFrame = freshBackend.render(config, &map, conformal);
     std::printf("map: grids + tables built in %.4f s (first frame, %.4f s in all), table %.4f s "
                 "(second frame); a frame reads %.0f table samples\n",
-                firstFrame.stats["map_build_seconds"].get<double>(), firstFrameSeconds,
-                secondFrame.stats["map_build_seconds"].get<double>(),
-                conformalResult.stats["direction_table_samples"].get<double>());
+                firstFrame.stats.embree->mapBuildSeconds, firstFrameSeconds,
+                secondFrame.stats.embree->mapBuildSeconds,
+                static_cast<double>(conformalResult.stats.embree->directionTableSamples));
     nlohmann::json report = {
         {"display", config.name},
         {"scene", scene.name},
         {"triangles", scene.triangleCount()},
         {"map", mapName},
         {"scale", scale},
-        {"threads", plainResult.stats["threads"]},
+        {"threads", plainResult.stats.embree->threads},
         {"plain_seconds", plainSeconds},
         {"conformal_seconds", conformalSeconds},
         {"conformal_over_plain", conformalSeconds / plainSeconds},
@@ -370,8 +371,8 @@ int main(int argc, char** argv) {
         {"raw_rtcintersect16_rays_per_second", raw16Rate},
         {"raw_rtcintersect16_conformal_rays_per_second", raw16ConformalRate},
         {"conformal_fraction_of_raw_conformal", (conformalRayCount / conformalSeconds) / rawConformalRate},
-        {"first_frame_map_build_seconds", firstFrame.stats["map_build_seconds"]},
-        {"second_frame_map_build_seconds", secondFrame.stats["map_build_seconds"]}};
+        {"first_frame_map_build_seconds", firstFrame.stats.embree->mapBuildSeconds},
+        {"second_frame_map_build_seconds", secondFrame.stats.embree->mapBuildSeconds}};
     if (goalsOnly) {
       if (!jsonPath.empty()) writeTextAtomically(jsonPath, report.dump(2) + "\n");
       return 0;

@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
                        : std::filesystem::path(output);
     confvis::RenderSettings settings;
     settings.resolutionScale = options.resolutionScale;
-    result.stats["backend"] = "byo-vulkan-example";
+    result.stats.backend = "byo-vulkan-example";
     confvis::writeRenderOutput(directory, config, settings, result, {{"scene", sceneName}});
     std::fprintf(stderr, "wrote %s\n", directory.string().c_str());
     return 0;

@@ -188,8 +188,9 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     for (const PlannedImage& image : plan.images)
       impl_->wallGrid(*warp, mapFingerprint, *image.view.wall, settings.resolutionScale);
   }
-  double mapBuildSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
+  double mapBuildSeconds =  // a plain frame builds no map tables
+      warp ? std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count()
+           : 0.0;
   std::uint64_t tableSamples = 0;  // camera samples whose map direction came from a table
   double tableBuildSeconds = 0.0;  // inside the render loop, but not rendering
 
@@ -217,7 +218,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                         static_cast<std::size_t>(impl_->options.threads));
 
   embree::RayCounters counters;
-  nlohmann::json perImage = nlohmann::json::array();
+  EmbreeFrameStats stats;
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < plan.images.size(); ++i) {
     const PlannedImage& planned = plan.images[i];
@@ -259,11 +260,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     embree::renderTiles(scene, rays, job, out.image, progress, counters);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - imageStart).count();
-    perImage.push_back({{"wall", out.wall},
-                        {"eye", eyeName(out.eye)},
-                        {"width", job.width},
-                        {"height", job.height},
-                        {"seconds", seconds}});
+    stats.images.push_back({out.wall, out.eye, job.width, job.height, seconds});
     result.images.push_back(std::move(out));
   }
   const double seconds =
@@ -274,29 +271,26 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
   progress.finish();
   impl_->device.check("rendering");
 
-  const auto cameraRays = counters.camera.load(), occlusionRays = counters.occlusion.load();
-  result.stats = {{"backend", name()},
-                  {"threads", impl_->options.threads > 0
-                                  ? impl_->options.threads
-                                  : tbb::this_task_arena::max_concurrency()},
-                  {"scene_triangles", scene.scene().triangleCount()},
-                  {"bvh_build_seconds", scene.buildSeconds()},
-                  {"render_seconds", seconds},
-                  {"map_build_seconds", mapBuildSeconds},
-                  {"direction_table_samples", tableSamples},
-                  {"cached_direction_table_bytes", impl_->tableBytes},
-                  {"cached_wall_grids", impl_->grids.size()},
-                  {"camera_rays", cameraRays},
-                  {"occlusion_rays", occlusionRays},
-                  {"retraced_rays", counters.retraced.load()},
-                  {"shading_simd", embree::simdName(impl_->simd)},
-                  {"rays_per_second",
-                   seconds > 0.0 ? static_cast<double>(cameraRays + occlusionRays) / seconds : 0.0},
-                  {"images", perImage}};
+  stats.threads = impl_->options.threads > 0 ? impl_->options.threads
+                                              : tbb::this_task_arena::max_concurrency();
+  stats.bvhBuildSeconds = scene.buildSeconds();
+  stats.mapBuildSeconds = mapBuildSeconds;
+  stats.directionTableSamples = tableSamples;
+  stats.cachedDirectionTableBytes = impl_->tableBytes;
+  stats.cachedWallGrids = impl_->grids.size();
+  stats.cameraRays = counters.camera.load();
+  stats.occlusionRays = counters.occlusion.load();
+  stats.retracedRays = counters.retraced.load();
+  stats.shadingSimd = embree::simdName(impl_->simd);
+  stats.raysPerSecond =
+      seconds > 0.0 ? static_cast<double>(stats.cameraRays + stats.occlusionRays) / seconds : 0.0;
   if (settings.mode == RenderMode::Conformal && plan.hasOffCentreEyes)
-    result.stats["curved_ray_segments"] = settings.stereoRays == StereoRays::Exact
-                                              ? impl_->options.curvedRaySegments
-                                              : 1;
+    stats.curvedRaySegments =
+        settings.stereoRays == StereoRays::Exact ? impl_->options.curvedRaySegments : 1;
+  result.stats.backend = name();
+  result.stats.seconds = seconds;
+  result.stats.sceneTriangles = scene.scene().triangleCount();
+  result.stats.embree = std::move(stats);
 }
 
 }  // namespace confvis

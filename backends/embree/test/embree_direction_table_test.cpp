@@ -11,7 +11,7 @@ namespace confvis {
 namespace {
 
 std::uint64_t tableSamples(const RenderResult& result) {
-  return result.stats.at("direction_table_samples").get<std::uint64_t>();
+  return result.stats.embree.value().directionTableSamples;
 }
 
 TEST(EmbreeDirectionTable, SecondRenderReadsTheTableAndDrawsTheSamePixels) {

@@ -11,9 +11,7 @@
 namespace confvis {
 namespace {
 
-std::uint64_t stat(const RenderResult& result, const char* name) {
-  return result.stats.at(name).get<std::uint64_t>();
-}
+const EmbreeFrameStats& stats(const RenderResult& result) { return result.stats.embree.value(); }
 
 TEST(EmbreeMapCache, AWalkThroughManyMapsHoldsTheTablesOfTheRecentOnesOnly) {
   const DisplayConfig config = test::shippedConfig("cave5");
@@ -28,9 +26,9 @@ TEST(EmbreeMapCache, AWalkThroughManyMapsHoldsTheTablesOfTheRecentOnesOnly) {
     const RetargetMap map = ceilinglessDilationMap(1.2 + 0.01 * m, 16);
     for (int frame = 0; frame < 3; ++frame) {
       const RenderResult result = backend.render(config, &map, settings);
-      if (m == 0 && frame == 2) oneMapBytes = stat(result, "cached_direction_table_bytes");
-      mostBytes = std::max(mostBytes, stat(result, "cached_direction_table_bytes"));
-      mostGrids = std::max(mostGrids, stat(result, "cached_wall_grids"));
+      if (m == 0 && frame == 2) oneMapBytes = stats(result).cachedDirectionTableBytes;
+      mostBytes = std::max(mostBytes, stats(result).cachedDirectionTableBytes);
+      mostGrids = std::max(mostGrids, stats(result).cachedWallGrids);
     }
   }
   ASSERT_EQ(oneMapBytes, 5u * 16 * 16 * 3 * sizeof(float))
@@ -53,8 +51,8 @@ TEST(EmbreeMapCache, MapsRenderedInTurnKeepTheirTables) {
     const RenderResult ra = backend.render(config, &a, settings);
     const RenderResult rb = backend.render(config, &b, settings);
     if (frame >= 1) {  // from the second render of each on, its tables are read
-      EXPECT_EQ(stat(ra, "direction_table_samples"), 5u * 16 * 16) << frame;
-      EXPECT_EQ(stat(rb, "direction_table_samples"), 5u * 16 * 16) << frame;
+      EXPECT_EQ(stats(ra).directionTableSamples, 5u * 16 * 16) << frame;
+      EXPECT_EQ(stats(rb).directionTableSamples, 5u * 16 * 16) << frame;
     }
   }
 }

@@ -76,33 +76,31 @@ class VulkanBackend final : public RenderBackend {
     progress.finish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    result.stats = {{"backend", "vulkan"},
-                    {"device", context_.capabilities().name},
-                    {"mode", conformal ? "conformal" : "plain"},
-                    {"walls", plan.walls.size()},
-                    {"views_per_pass", onePass ? plan.eyes.size() : 1},
-                    {"stereo_passes", multiview_ ? "multiview" : "per-eye"},
-                    {"triangles", scene_->triangleCount()},
-                    {"seconds", seconds}};
-    if (const auto gpu = frames_.gpuSeconds()) result.stats["gpu_seconds"] = *gpu;
+    result.stats.backend = "vulkan";
+    result.stats.seconds = seconds;
+    result.stats.sceneTriangles = scene_->triangleCount();
+    VulkanFrameStats& stats = result.stats.vulkan.emplace();
+    stats.device = context_.capabilities().name;
+    stats.conformal = conformal;
+    stats.walls = plan.walls.size();
+    stats.viewsPerPass = onePass ? static_cast<int>(plan.eyes.size()) : 1;
+    stats.multiview = multiview_;
+    stats.gpuSeconds = frames_.gpuSeconds();
     if (conformal) {
-      result.stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
-      result.stats["tessellation"] = options_.tessellate;
-      result.stats["triangles_split_before_warp"] = split_ ? split_->trianglesSplit : 0;
       const auto counts = frames_.prepassCounts(drawn);
-      result.stats["triangles_drawn_flat"] = counts.flat;
-      result.stats["triangles_tessellated"] = counts.tessellated + counts.dropping;
-      result.stats["triangles_through_geometry_shader"] = counts.dropping;
-      result.stats["triangles_split_along_cut"] = counts.splitAlongCut;
-      result.stats["prepass_seconds"] = counts.seconds;
-      if (counts.gpuSeconds) result.stats["prepass_gpu_seconds"] = *counts.gpuSeconds;
-      result.stats["prepass_reused"] = counts.reused;
-      if (!counts.passGpuSeconds.empty()) {
-        nlohmann::json passes = nlohmann::json::object();
-        for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
-          passes[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
-        result.stats["prepass_pass_gpu_seconds"] = passes;
-      }
+      VulkanConformalStats& prepass = stats.conformalPrepass.emplace();
+      prepass.tessellationErrorPixels = options_.tessellationErrorPixels;
+      prepass.tessellation = options_.tessellate;
+      prepass.trianglesSplitBeforeWarp = split_ ? split_->trianglesSplit : 0;
+      prepass.trianglesDrawnFlat = counts.flat;
+      prepass.trianglesTessellated = counts.tessellated + counts.dropping;
+      prepass.trianglesThroughGeometryShader = counts.dropping;
+      prepass.trianglesSplitAlongCut = counts.splitAlongCut;
+      prepass.prepassSeconds = counts.seconds;
+      prepass.prepassGpuSeconds = counts.gpuSeconds;
+      prepass.prepassReused = counts.reused;
+      for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
+        prepass.passGpuSeconds[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
     }
     return result;
   }

@@ -16,10 +16,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 #include "confvis/conformal/display_template.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A triangulated topological disk on the unit sphere with a per-vertex disk coordinate.
 struct SphereDiskMesh {
@@ -35,6 +36,8 @@ struct SphereDiskMesh {
   std::vector<std::uint8_t> lit;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct DisplayMap {
   SphereDiskMesh source;  // S: the virtual field of view shown (sphere cut open, or hemisphere)
   SphereDiskMesh target;  // D: the directions covered by the display's lit walls

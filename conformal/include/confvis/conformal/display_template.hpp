@@ -46,9 +46,10 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct TemplateMesh {
   std::vector<glm::dvec3> points;             // metres, physical frame

@@ -7,9 +7,11 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/mesh.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 struct DistortionStats {
   int faces = 0;
@@ -27,4 +29,5 @@ DistortionStats measureDistortion(const TriMesh& mesh, const std::vector<std::co
 
 nlohmann::json toJson(const DistortionStats& stats);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

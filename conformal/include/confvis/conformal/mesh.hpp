@@ -6,11 +6,16 @@
 #include <filesystem>
 #include <string>
 
-namespace confvis::conformal {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble>;
 using Vec3 = TriMesh::Point;
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct MeshTopology {
   int vertices = 0;
   int edges = 0;
@@ -41,4 +46,5 @@ TriMesh readMesh(const std::filesystem::path& path);
 // Boundary loops as vertex index lists, each following the boundary half-edges.
 std::vector<std::vector<int>> boundaryLoops(const TriMesh& mesh);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

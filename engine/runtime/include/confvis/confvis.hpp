@@ -18,6 +18,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/cube_map.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/base/png_io.hpp"
@@ -95,7 +96,7 @@
 #include "confvis/runtime/window_presenter.hpp"
 
 // Rendering through the map (backends: Embree, Vulkan): render plans and eyeName(), typed frame
-// statistics (frameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).
+// statistics (FrameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).
 #include "confvis/backends/analytic_maps.hpp"
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/frame_stats.hpp"

@@ -34,10 +34,11 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/tracking_config.hpp"
 #include "confvis/engine/display_output.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Unlit frame inside a wall rectangle, metres from each edge. The wall's pixels cover only the
 // lit area, so a tiled wall is modelled by rectangles that share edges, with bezels inside them.
@@ -45,6 +46,8 @@ struct Bezel {
   double left = 0, right = 0, bottom = 0, top = 0;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct Wall {
   std::string name;
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
@@ -84,6 +87,8 @@ struct EdgeBlend {
   double gamma = 2.2;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct DisplayConfig {
   std::string name;
   std::vector<Wall> walls;

@@ -25,14 +25,16 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class DisplayFormat { Confvis, SgctJson, SgctXml, ParaViewPvx };
 
 const char* toString(DisplayFormat format) noexcept;
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct ImportOptions {
   std::string name;                       // display name; empty: the file name without extension
   std::optional<glm::dvec3> reference;    // overrides the file's viewer position (metres)

@@ -10,7 +10,9 @@
 
 #include <vulkan/vulkan.h>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 struct PresentContextOptions {
   bool validation = false;  // VK_LAYER_KHRONOS_validation + messenger; an error if not installed
@@ -22,6 +24,8 @@ struct ValidationReport {
   std::vector<std::string> messages;  // the first few, for the report
 };
 
+// Thread-safety: not thread-safe; one thread uses it and the presenters made with it
+// (validation() may be read from any thread: the messenger's count is locked).
 class PresentContext {
  public:
   // GLFW must be initialised (GlfwSession). Throws Error(DeviceUnsupported) when no device can
