@@ -18,13 +18,14 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
-namespace detail {
+namespace detail CONFVIS_API {
 class SphereLocator;
 class DiskLocator;
 }  // namespace detail

@@ -7,9 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/mesh.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 struct MeshSource {
   std::filesystem::path path;
@@ -41,4 +43,5 @@ TriMesh readMesh(const std::filesystem::path& path, MeshSource& source);
 // boundary loop (a hole) by vertices on it, as well as the counts.
 void requireDisk(const TriMesh& mesh, const MeshSource& source);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

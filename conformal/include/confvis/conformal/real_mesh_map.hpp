@@ -5,10 +5,12 @@
 #include <complex>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/mesh_source.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 struct RealMeshMap {
   DiskMap map;
@@ -47,4 +49,5 @@ int mollifyDegenerateFaces(TriMesh& mesh);
 RealMeshMap computeRealMeshDiskMap(const TriMesh& mesh, const MeshSource& source,
                                    const DiskMapOptions& options);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

@@ -11,9 +11,10 @@
 #include <unordered_map>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/backends/render_backend.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 class EdgeBlender {
  public:

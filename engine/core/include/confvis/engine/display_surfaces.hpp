@@ -20,9 +20,10 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct DisplaySurface {
   Wall rectangle;          // a lone wall as it is; a group: the union, named "a+b+...", no bezel
@@ -49,7 +50,7 @@ double edgeBlendWeight(const DisplayConfig& config, const std::vector<DisplaySur
 // overlaps no other).
 std::vector<float> edgeBlendSignal(const DisplayConfig& config, int wall, int width, int height);
 
-namespace detail {
+namespace detail CONFVIS_API {
 // Whether `inner` lies on the plane of `outer`, within its outline (the preview test).
 bool wallCovers(const Wall& outer, const Wall& inner);
 

@@ -5,7 +5,10 @@
 
 #include <vulkan/vulkan.h>
 
-namespace confvis::vulkan {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 // Handles the application owns and keeps alive longer than every helper object made with them.
 // The device must be Vulkan 1.1 or newer; `queue` (of `queueFamily`) must support graphics and
@@ -22,4 +25,5 @@ struct AppDevice {
   std::uint32_t queueFamily = 0;
 };
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis

@@ -8,9 +8,11 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/backends/render_backend.hpp"
 
-namespace confvis::vulkan {
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 struct WarpTolerances {
   // A bent edge is subdivided until its drawn polyline is within this many pixels of the exact
@@ -59,4 +61,5 @@ glm::dmat4 wallViewProjection(const Wall& wall, const glm::dvec3& eye);
 glm::dvec3 headlightPosition(const glm::dvec3& eye, const DisplayConfig& config,
                              const RetargetMap* map, const VirtualCamera& camera);
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis

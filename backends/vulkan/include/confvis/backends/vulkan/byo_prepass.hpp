@@ -23,11 +23,13 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
+#include "confvis/base/export.hpp"
 #include "confvis/backends/vulkan/byo_device.hpp"
 #include "confvis/backends/vulkan/byo_frame.hpp"
 #include "confvis/backends/vulkan/byo_upload.hpp"
 
-namespace confvis::vulkan {
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 inline constexpr std::uint32_t kNoAttribute = std::numeric_limits<std::uint32_t>::max();
 
@@ -144,4 +146,5 @@ class ConformalPrepassStep {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis

@@ -12,11 +12,13 @@
 #include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
 
+#include "confvis/base/export.hpp"
 #include "confvis/backends/vulkan/byo_device.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/scene.hpp"
 
-namespace confvis::vulkan {
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 // A RetargetMap on the device: both cube maps as R32G32B32A32_SFLOAT cube images (kGeomMapFormat,
 // faces in Vulkan's order, converted by toVulkanLayout) with cube views, and the warp's sampler
@@ -73,4 +75,5 @@ class UploadedTexture {
 };
 UploadedTexture uploadTexture(const AppDevice& app, const Texture& texture);
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis
