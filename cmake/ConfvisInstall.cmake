@@ -35,9 +35,12 @@ foreach(target IN LISTS confvis_install_targets)
   string(REGEX REPLACE "^confvis_" "" component ${target})
   list(APPEND CONFVIS_COMPONENTS ${component})
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${component})
+  # Each library is also an install component of its own name (cmake --install --component
+  # engine), so a partial build installs what it built: headers, configs and the package files
+  # are the component Unspecified, the CLI the component cli.
   install(TARGETS ${target} EXPORT confvis-${component}-targets
-    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ${component}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT ${component}
     INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
   install(EXPORT confvis-${component}-targets NAMESPACE confvis::
     DESTINATION ${confvis_package_dir})
@@ -64,7 +67,7 @@ foreach(dir IN LISTS confvis_install_include_dirs)
   install(DIRECTORY ${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endforeach()
 if(TARGET confvis)
-  install(TARGETS confvis RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(TARGETS confvis RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT cli)
 endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/configs/ DESTINATION ${CONFVIS_DATA_INSTALL_DIR}/configs)
 install(FILES ${confvis_install_shaders} DESTINATION ${CONFVIS_DATA_INSTALL_DIR}/shaders)

@@ -1,4 +1,5 @@
-# confvis_module(NAME DIR DEPS...): a static library from DIR/src/**.cpp with public headers in
+# confvis_module(NAME DIR DEPS...): a library (static, or shared with CONFVIS_SHARED_LIBS: the
+# root CMakeLists.txt sets CONFVIS_LIBRARY_TYPE) from DIR/src/**.cpp with public headers in
 # DIR/include. Unit tests live beside each module in DIR/test/*_test.cpp and are collected into
 # the single test binary by tests/CMakeLists.txt (pbrt-v4 style: one binary, tests near code).
 set_property(GLOBAL PROPERTY CONFVIS_TEST_SOURCES "")
@@ -33,7 +34,7 @@ endfunction()
 
 function(confvis_module name dir)
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${dir}/src/*.cpp)
-  add_library(${name} STATIC ${sources})
+  add_library(${name} ${CONFVIS_LIBRARY_TYPE} ${sources})
   target_include_directories(${name} PUBLIC
     $<BUILD_INTERFACE:${dir}/include> $<INSTALL_INTERFACE:include>)
   target_link_libraries(${name} PUBLIC ${ARGN})
@@ -49,7 +50,7 @@ endfunction()
 # src/engine); sources from DIR/src/SUBDIR, tests from DIR/test/SUBDIR.
 function(confvis_module_sources name dir subdir)
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${dir}/src/${subdir}/*.cpp)
-  add_library(${name} STATIC ${sources})
+  add_library(${name} ${CONFVIS_LIBRARY_TYPE} ${sources})
   target_include_directories(${name} PUBLIC
     $<BUILD_INTERFACE:${dir}/include> $<INSTALL_INTERFACE:include>)
   target_link_libraries(${name} PUBLIC ${ARGN})

@@ -5,6 +5,9 @@ set -euo pipefail
 packages=(
   # toolchain
   build-essential cmake ninja-build pkg-config git
+  # the sanitizer and fuzzing builds (tools/sanitize.sh, tests/fuzz): clang with its ASan, UBSan,
+  # TSan and libFuzzer runtimes
+  clang-14 libclang-rt-14-dev
   # rendering: Vulkan (lavapipe for headless CI), shader compiler, Embree
   mesa-vulkan-drivers libvulkan-dev vulkan-validationlayers glslang-tools glslang-dev spirv-tools
   libembree-dev libtbb-dev

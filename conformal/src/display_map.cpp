@@ -86,8 +86,9 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, Progres
   // triangle near the display's centre, made a round hole) bends the map around it: on
   // flat-wall at 20 cm, mirrored points then differ by 59 px (median) against 0.0000 px
   // (tools/bench/alignment_bench.cpp), for about 1.5 x the flow time (conformal/README.md).
-  options.geometry = route == DisplayMapRoute::Spherical ? conformal::Geometry::Spherical
-                                                         : conformal::Geometry::Euclidean;
+  options.geometry = route == DisplayMapRoute::Spherical    ? conformal::Geometry::Spherical
+                     : route == DisplayMapRoute::Hyperbolic ? conformal::Geometry::Hyperbolic
+                                                            : conformal::Geometry::Euclidean;
   // Continuation reaches the hemisphere for cut sources (cave3's) in a stall or two; a display it
   // cannot reach after 3 (a thin band of monitors) takes the Euclidean route instead of minutes.
   options.maxStalledStages = 3;
@@ -125,7 +126,7 @@ nlohmann::json meshStats(const SphereDiskMesh& mesh, const FlowResult& flow) {
 DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOptions& options) {
   Progress progress("display map " + config.name, 4, options.showProgress);
   auto start = Clock::now();
-  const DisplayTemplates templates = buildDisplayTemplates(config, options.edgeLength);
+  const DisplayTemplates templates = buildDisplayTemplates(config, options.edgeLength, options.grading);
   DisplayMap map;
   map.source = projectToSphere(templates.source, config.reference);
   map.target = projectToSphere(templates.target, config.reference);

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "confvis/base/error.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 #include "display_template_parts.hpp"
 #include "display_template_sources.hpp"
 
@@ -132,6 +133,18 @@ bool inLoopOrder(const std::vector<int>& loop, const std::array<int, 3>& markers
   return descents == 1;
 }
 
+SizeField gradedSize(const DisplayConfig& config, double h, const TemplateGrading& grading,
+                     const std::vector<glm::dvec3>& points) {
+  SizeField size;
+  size.maxEdge = h;
+  if (grading.radiusDegrees <= 0) return size;
+  size.radius = grading.radiusDegrees * std::numbers::pi / 180;
+  size.exponent = grading.exponent;
+  size.minScale = grading.minScale;
+  for (const glm::dvec3& p : points) size.centres.push_back(glm::normalize(p - config.reference));
+  return size;
+}
+
 int uniqueCopy(const std::vector<int>& origin, int coarse) {
   int found = -1;
   for (int v = 0; v < static_cast<int>(origin.size()); ++v)
@@ -146,10 +159,12 @@ int uniqueCopy(const std::vector<int>& origin, int coarse) {
 // The refined target; a closed display is opened along the star of closedDisplayStar and
 // `leaves` gets the star's leaf vertices.
 TemplateMesh refinedTarget(const DisplayConfig& config, const CoarseDisplay& display, double h,
-                           std::vector<int>& leaves, DisplayTemplates& out) {
+                           std::vector<int>& leaves, DisplayTemplates& out,
+                           const SizeField& size = {}) {
   TemplateBuild mesh = display.mesh;
   if (!display.closed()) {
-    refineTemplate(mesh, config.reference, h);
+    if (size.graded()) refineTemplate(mesh, config.reference, size);
+    else refineTemplate(mesh, config.reference, h);
     return toTemplateMesh(mesh, true, "target");
   }
   const StarCut star = closedDisplayStar(config, display, h);
@@ -166,13 +181,20 @@ TemplateMesh refinedTarget(const DisplayConfig& config, const CoarseDisplay& dis
 }
 
 DisplayTemplates hemisphereTemplates(const DisplayConfig& config, const CoarseDisplay& display,
-                                     double h) {
+                                     double h, const TemplateGrading& grading) {
   const glm::dvec3 c = config.reference;
   const glm::dvec3 axis = glm::normalize(config.hemisphereAxis);
   DisplayTemplates out;
   out.sourceKind = SourceKind::Hemisphere;
   std::vector<int> candidates;
-  out.target = refinedTarget(config, display, h, candidates, out);
+  // Graded toward the display's boundary corners, on both meshes (the rim points at their
+  // azimuths are the source's images of them).
+  std::vector<glm::dvec3> corners;
+  if (!display.closed())
+    for (int v : boundaryCorners(c, display.mesh, display.topology.boundaryLoops.front(), false))
+      corners.push_back(display.mesh.points[v]);
+  const SizeField size = gradedSize(config, h, grading, corners);
+  out.target = refinedTarget(config, display, h, candidates, out, size);
   auto hasAzimuth = [&](int v) {
     return std::abs(glm::dot(glm::normalize(out.target.points[v] - c), axis)) < 1 - 1e-6;
   };
@@ -210,7 +232,11 @@ DisplayTemplates hemisphereTemplates(const DisplayConfig& config, const CoarseDi
     const auto at = std::find(rimCorners.begin(), rimCorners.end(), out.targetMarkers[k]);
     out.sourceMarkers[k] = findVertex(source, cube.rimPoints[at - rimCorners.begin()]);
   }
-  refineTemplate(source, c, h);
+  SizeField sourceSize = size;
+  for (const glm::dvec3& p : cube.rimPoints)
+    if (sourceSize.graded()) sourceSize.centres.push_back(glm::normalize(p - c));
+  if (sourceSize.graded()) refineTemplate(source, c, sourceSize);
+  else refineTemplate(source, c, h);
   out.source = toTemplateMesh(source, false, "hemisphere source");
   const auto& m = out.sourceMarkers;
   if (m[0] == m[1] || m[1] == m[2] || m[0] == m[2] || !inLoopOrder(out.source.boundary, m))
@@ -236,7 +262,7 @@ DisplayTemplates closedTemplates(const DisplayConfig& config, const CoarseDispla
 }
 
 DisplayTemplates closureTemplates(const DisplayConfig& config, const CoarseDisplay& display,
-                                  const SourceCap& cap, double h) {
+                                  const SourceCap& cap, double h, const TemplateGrading& grading) {
   const glm::dvec3 c = config.reference;
   std::vector<FanCell> cells = display.cells;
   cells.insert(cells.end(), cap.cells.begin(), cap.cells.end());
@@ -249,7 +275,10 @@ DisplayTemplates closureTemplates(const DisplayConfig& config, const CoarseDispl
   for (const auto& [a, b] : cap.cutEdges) addCutEdge(closed, a, b);
   std::vector<int> coarseLeaves;
   for (const glm::dvec3& leaf : cap.leaves) coarseLeaves.push_back(findVertex(closed, leaf));
-  refineTemplate(closed, c, h);
+  // Graded toward the cut's leaves: the display corners where the map is singular.
+  const SizeField size = gradedSize(config, h, grading, cap.leaves);
+  if (size.graded()) refineTemplate(closed, c, size);
+  else refineTemplate(closed, c, h);
   DisplayTemplates out;
   out.sourceKind = cap.kind;
   out.cutCentres = cap.centres;
@@ -274,23 +303,30 @@ DisplayTemplates closureTemplates(const DisplayConfig& config, const CoarseDispl
 
 }  // namespace
 
-bool displayMapIsIdentity(const DisplayConfig& config) {
+bool displayMapIsIdentity(const DisplayConfig& displayConfig) {
+  const DisplayConfig config = surfaceConfig(displayConfig);  // projector overlaps count once
   if (config.source != SourceField::FullSphere) return false;
   if (std::any_of(config.walls.begin(), config.walls.end(), hasBezel)) return false;
   // Without bezels every wall is one fan cell, whatever the edge length: the topology is cheap.
   return assembleDisplay(config, resolveEdgeLength(config, 0.0)).closed();
 }
 
-DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength) {
+DisplayTemplates buildDisplayTemplates(const DisplayConfig& displayConfig, double edgeLength,
+                                       const TemplateGrading& grading) {
+  // The map sees display surfaces: projector walls overlapping on one plane are one rectangle,
+  // previews none (display_surfaces.hpp).
+  const DisplayConfig config = surfaceConfig(displayConfig);
   const double h = resolveEdgeLength(config, edgeLength);
   // The source of a sphere field is about as large as the display again (more for small ones).
   // Checked before anything is built: assembling a huge display at edge length h is itself slow.
   guardSize(config, wallArea(config) * (config.source == SourceField::Hemisphere ? 2 : 4), h);
   const CoarseDisplay display = assembleDisplay(config, h);
-  if (config.source == SourceField::Hemisphere) return hemisphereTemplates(config, display, h);
+  if (config.source == SourceField::Hemisphere)
+    return hemisphereTemplates(config, display, h, grading);
   if (display.closed()) return closedTemplates(config, display, h);
-  if (const auto cap = boxCap(config, display)) return closureTemplates(config, display, *cap, h);
-  return closureTemplates(config, display, coneCap(config, display, h), h);
+  if (const auto cap = boxCap(config, display))
+    return closureTemplates(config, display, *cap, h, grading);
+  return closureTemplates(config, display, coneCap(config, display, h), h, grading);
 }
 
 }  // namespace confvis

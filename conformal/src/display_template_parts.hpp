@@ -75,6 +75,19 @@ std::vector<EdgeSides> edgeSides(const TemplateBuild& mesh);
 // others at the straight mid-point, so walls stay exactly planar. Cut edges stay cut.
 void refineTemplate(TemplateBuild& mesh, const glm::dvec3& reference, double maxEdge);
 
+// The edge length allowed at a point: maxEdge, graded toward `centres` (unit directions from the
+// reference) by TemplateGrading's power law.
+struct SizeField {
+  double maxEdge = 0;
+  std::vector<glm::dvec3> centres;
+  double radius = 0, exponent = 1, minScale = 1;  // radians; radius 0: uniform
+  double at(const glm::dvec3& direction) const;
+  bool graded() const { return radius > 0 && !centres.empty(); }
+};
+// The same with a graded size field; the edge split is always the longest of both its triangles
+// (a shorter one waits for the longer: longest-edge propagation), so shapes stay bounded.
+void refineTemplate(TemplateBuild& mesh, const glm::dvec3& reference, const SizeField& size);
+
 // The triangles with keep[t] != 0, reindexed; vertexMap (optional) gets old -> new (-1 if gone).
 TemplateBuild extractTriangles(const TemplateBuild& mesh, const std::vector<std::uint8_t>& keep,
                                std::vector<int>* vertexMap = nullptr);

@@ -3,6 +3,7 @@
 // the longest of both its triangles, so triangle shapes stay bounded (Rivara), and every final
 // triangle keeps its longest edge above maxEdge / 2 (no over-refinement). Triangles keep their
 // neighbours across each edge, so a split is a constant-time update.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -25,8 +26,8 @@ struct Candidate {
 
 class Refiner {
  public:
-  Refiner(TemplateBuild& mesh, const glm::dvec3& reference, double maxEdge)
-      : mesh_(mesh), reference_(reference), maxEdge_(maxEdge) {
+  Refiner(TemplateBuild& mesh, const glm::dvec3& reference, const SizeField& size)
+      : mesh_(mesh), reference_(reference), size_(size) {
     const std::size_t n = mesh.triangles.size();
     neighbour_.assign(n, {-1, -1, -1});
     cut_.assign(n, {0, 0, 0});
@@ -48,6 +49,15 @@ class Refiner {
       queue_.pop();
       const int k = cornerOf(top.triangle, top.a, top.b);
       if (k < 0) continue;  // already split
+      // Graded: the popped edge need not be the longest of its triangles; split those first.
+      if (size_.graded()) {
+        const int n = neighbour_[top.triangle][k];
+        if (queueLonger(top.triangle, top.length) ||
+            (n >= 0 && queueLonger(n, top.length))) {
+          queue_.push(top);
+          continue;
+        }
+      }
       // An isosceles triangle whose two equal sides are its longest (a fan triangle between
       // mirror-image corners) is split at its base first, into two mirror-image halves: bisecting
       // one equal side before the other would break the mirror symmetry of the display in its
@@ -73,7 +83,24 @@ class Refiner {
  private:
   void consider(int a, int b, int t) {
     const double length = glm::length(mesh_.points[a] - mesh_.points[b]);
-    if (length > maxEdge_) queue_.push({length, std::min(a, b), std::max(a, b), t});
+    if (length <= size_.maxEdge * size_.minScale) return;
+    double allowed = size_.maxEdge;
+    if (size_.graded())
+      allowed = size_.at(glm::normalize(0.5 * (mesh_.points[a] + mesh_.points[b]) - reference_));
+    if (length > allowed) queue_.push({length, std::min(a, b), std::max(a, b), t});
+  }
+
+  // Queues t's longest edge if it is longer than `length` (beyond rounding); true if queued.
+  bool queueLonger(int t, double length) {
+    int longest = 0;
+    for (int k = 1; k < 3; ++k)
+      if (edgeLength(t, k) > edgeLength(t, longest)) longest = k;
+    const double l = edgeLength(t, longest);
+    if (l <= length * (1 + 1e-9)) return false;
+    const auto& v = mesh_.triangles[t];
+    const int a = v[longest], b = v[(longest + 1) % 3];
+    queue_.push({l, std::min(a, b), std::max(a, b), t});
+    return true;
   }
 
   // Corner k of t where the edge {a, b} starts, -1 if t has no such edge.
@@ -184,7 +211,7 @@ class Refiner {
 
   TemplateBuild& mesh_;
   glm::dvec3 reference_;
-  double maxEdge_;
+  const SizeField& size_;
   std::vector<std::array<int, 3>> neighbour_;  // across the edge starting at each corner
   std::vector<std::array<std::uint8_t, 3>> cut_;
   std::priority_queue<Candidate> queue_;
@@ -192,8 +219,22 @@ class Refiner {
 
 }  // namespace
 
+double SizeField::at(const glm::dvec3& direction) const {
+  double nearest = 1e300;
+  for (const glm::dvec3& c : centres)
+    nearest = std::min(nearest, std::acos(std::clamp(glm::dot(c, direction), -1.0, 1.0)));
+  if (nearest >= radius) return maxEdge;
+  return maxEdge * std::max(minScale, std::pow(nearest / radius, exponent));
+}
+
 void refineTemplate(TemplateBuild& mesh, const glm::dvec3& reference, double maxEdge) {
-  Refiner(mesh, reference, maxEdge).run();
+  SizeField size;
+  size.maxEdge = maxEdge;
+  Refiner(mesh, reference, size).run();
+}
+
+void refineTemplate(TemplateBuild& mesh, const glm::dvec3& reference, const SizeField& size) {
+  Refiner(mesh, reference, size).run();
 }
 
 }  // namespace confvis::detail

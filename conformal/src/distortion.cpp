@@ -47,8 +47,12 @@ DistortionStats measureDistortion(const TriMesh& mesh, const std::vector<std::co
     const double qa = Q[1][0] - Q[0][0], qb = Q[2][0] - Q[0][0];
     const double qc = Q[1][1] - Q[0][1], qd = Q[2][1] - Q[0][1];
     const double detQ = qa * qd - qb * qc;
-    if (!(detQ > 0) || !(detP > 0)) {
+    if (!(detQ > 0)) {
       ++s.flippedFaces;
+      continue;
+    }
+    if (!(detP > 0)) {  // zero area in space (scans have them): no orientation or ratio to measure
+      ++s.degenerateFaces;
       continue;
     }
     const double j11 = (qa * pd - qb * pc) / detP, j12 = (-qa * pb + qb * pa) / detP;
@@ -94,6 +98,7 @@ nlohmann::json toJson(const DistortionStats& s) {
           {"singular_value_ratio",
            {{"mean", s.ratioMean}, {"p50", s.ratioP50}, {"p99", s.ratioP99}, {"max", s.ratioMax}}},
           {"flipped_faces", s.flippedFaces},
+          {"degenerate_faces", s.degenerateFaces},
           {"boundary_roundness", s.boundaryRoundness},
           {"log_angle_ratio",
            {{"std", s.logAngleRatioStd},

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "confvis/base/error.hpp"
-#include "mesh_files.hpp"
+#include "confvis/conformal/mesh_source.hpp"
 
 namespace confvis::conformal {
 
@@ -70,45 +70,8 @@ void requireDisk(const TriMesh& mesh, const std::string& what) {
 }
 
 TriMesh readMesh(const std::filesystem::path& path) {
-  if (!std::filesystem::exists(path))
-    throw Error(ErrorCode::FileNotFound, "mesh file '" + path.string() + "' does not exist");
-  // Our own readers (mesh_files.hpp), not OpenMesh's: those hang or crash on small malformed
-  // files. Polygons are fanned into triangles, as OpenMesh's TriMesh reader does.
-  const detail::PolygonSoup soup = detail::readPolygonFile(path);
-  TriMesh mesh;
-  mesh.reserve(soup.points.size(), 3 * soup.starts.size(), soup.starts.size());
-  for (const auto& p : soup.points) mesh.add_vertex(Vec3(p[0], p[1], p[2]));
-  for (std::size_t f = 0; f < soup.starts.size(); ++f) {
-    const std::size_t begin = soup.starts[f];
-    const std::size_t end = f + 1 < soup.starts.size() ? soup.starts[f + 1] : soup.corners.size();
-    for (std::size_t c = begin + 1; c + 1 < end; ++c) {
-      const auto v = [&](std::size_t i) { return TriMesh::VertexHandle(soup.corners[i]); };
-      if (soup.corners[begin] == soup.corners[c] || soup.corners[c] == soup.corners[c + 1] ||
-          soup.corners[begin] == soup.corners[c + 1])
-        throw Error(ErrorCode::InvalidInput, "mesh '" + path.string() + "': face " +
-                                                 std::to_string(f) + " repeats a vertex");
-      if (!mesh.add_face(v(begin), v(c), v(c + 1)).is_valid())
-        throw Error(ErrorCode::InvalidInput,
-                    "mesh '" + path.string() + "': face " + std::to_string(f) +
-                        " cannot be added (a non-manifold edge or vertex, or a flipped face)");
-    }
-  }
-  if (mesh.n_faces() == 0)
-    throw Error(ErrorCode::InvalidInput, "mesh '" + path.string() + "' has no faces");
-  for (auto v : mesh.vertices()) {
-    const auto& p = mesh.point(v);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-      throw Error(ErrorCode::InvalidInput, "mesh '" + path.string() + "' vertex " +
-                                               std::to_string(v.idx()) +
-                                               " has a non-finite coordinate");
-  }
-  for (auto e : mesh.edges()) {
-    if (mesh.calc_edge_length(e) <= 0.0)
-      throw Error(ErrorCode::InvalidInput,
-                  "mesh '" + path.string() + "' has a zero-length edge between vertices " +
-                      std::to_string(e.v0().idx()) + " and " + std::to_string(e.v1().idx()));
-  }
-  return mesh;
+  MeshSource source;
+  return readMesh(path, source);
 }
 
 }  // namespace confvis::conformal

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <signal.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <fstream>
@@ -216,3 +217,83 @@ TEST(ClusterCli, ARankThatDiesEndsEveryRankAtOnce) {
 }
 
 }  // namespace
+
+// Frames split too: two groups of two ranks take turns at frames, each dealing cave5's walls
+// over its ranks; the follower decides every frame in each group's root, so the re-bake (head
+// out of the 5 cm radius at t = 1.5 s, frame 6) swaps in on the same frame as in one process.
+TEST(ClusterCli, WalkSplitOverTwoFrameGroupsEqualsOneProcess) {
+  const std::string common = "walk --frames 8 --fps 4 --scale 0.02 --radius 0.05 "
+                             "--bake-resolution 32 --no-pacing --wait-for-bakes -q ";
+  const fs::path single = scratch("groups-single"), cluster = scratch("groups-cluster");
+  const CliRun one = runCli(common + "-o " + single.string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CliRun many = runMpi(4, common + "--cluster --frame-groups 2 -o " + cluster.string());
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+  expectSameImages(single, cluster);
+
+  const nlohmann::json walk = readJson(cluster / "walk.json");
+  const nlohmann::json reference = readJson(single / "walk.json");
+  EXPECT_EQ(walk.at("cluster").at("frame_groups"), 2);
+  ASSERT_EQ(walk.at("frames").size(), 8u);
+  for (std::size_t i = 0; i < 8; ++i)
+    EXPECT_EQ(walk["frames"][i]["map"], reference["frames"][i]["map"]) << i;
+  EXPECT_GE(walk["frames"][7]["map"]["generation"].get<int>(), 1);  // the re-bake swapped in
+  // Group g (ranks g and g + 2) saw exactly frames g, g + 2, ... and both its ranks the same.
+  for (int group = 0; group < 2; ++group) {
+    const nlohmann::json a = readJson(cluster / ("cluster-rank-" + std::to_string(group) + ".json"));
+    const nlohmann::json b =
+        readJson(cluster / ("cluster-rank-" + std::to_string(group + 2) + ".json"));
+    EXPECT_EQ(a.at("frames"), b.at("frames")) << "group " << group;
+    ASSERT_EQ(a.at("frames").size(), 4u);
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(a["frames"][k]["frame"], group + 2 * k);
+    EXPECT_EQ(a.at("walls").size() + b.at("walls").size(), 5u);  // the walls split too
+  }
+}
+
+// More ranks than walls: a one-wall display on two ranks splits the frames by default.
+TEST(ClusterCli, WalkWithMoreRanksThanWallsSplitsFramesByDefault) {
+  const std::string common = "walk " + std::string(CONFVIS_SOURCE_DIR) +
+                             "/configs/flat-wall.json --frames 4 --fps 4 --scale 0.02 "
+                             "--radius 1 --bake-resolution 32 --no-pacing -q ";
+  const fs::path single = scratch("split-single"), cluster = scratch("split-cluster");
+  const CliRun one = runCli(common + "-o " + single.string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CliRun many = runMpi(2, common + "--cluster -o " + cluster.string());
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+  expectSameImages(single, cluster);
+  EXPECT_EQ(readJson(cluster / "walk.json").at("cluster").at("frame_groups"), 2);
+  EXPECT_EQ(readJson(cluster / "cluster-rank-1.json").at("frames").size(), 2u);
+}
+
+// `confvis view --cluster` under xvfb-run: three ranks show cave5's five walls live, rank 0
+// tracking a recorded head path; every rank's frame log holds the same frame states (head,
+// camera, map generation), and the last one ends every rank.
+TEST(ClusterCli, LiveViewOnThreeRanksShowsTheSameFrameStatesOnEveryRank) {
+  if (::access("/usr/bin/xvfb-run", X_OK) != 0) GTEST_SKIP() << "no xvfb-run (Debian: xvfb)";
+  const fs::path out = scratch("view-cluster");
+  const std::string command =
+      "xvfb-run -a env " + kMpiEnvironment + " " + CONFVIS_MPIEXEC + " --oversubscribe -np 3 " +
+      CONFVIS_CLI_PATH + " view --cluster --frames 6 --scale 0.05 --bake-resolution 32 " +
+      "--no-vsync -q --tracker path:" + CONFVIS_SOURCE_DIR + "/configs/paths/cave-walk.csv -o " +
+      out.string() + " 2>&1";
+  const CliRun run = finish(popen(command.c_str(), "r"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const nlohmann::json rank0 = readJson(out / "cluster-rank-0.json");
+  const nlohmann::json& frames = rank0.at("frames");
+  ASSERT_EQ(frames.size(), 6u);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    EXPECT_EQ(frames[i].at("frame"), i);
+    EXPECT_EQ(frames[i].at("quit"), i + 1 == frames.size());
+  }
+  // Rank 0's clock went on: the states are not all the same default.
+  for (std::size_t i = 1; i < frames.size(); ++i)
+    EXPECT_GT(frames[i].at("seconds").get<double>(), frames[i - 1].at("seconds").get<double>());
+  std::set<std::string> walls;
+  for (int r = 0; r < 3; ++r) {
+    const nlohmann::json log = readJson(out / ("cluster-rank-" + std::to_string(r) + ".json"));
+    EXPECT_EQ(log.at("frames"), frames) << "rank " << r << " showed other frames";
+    for (const auto& w : log.at("walls")) walls.insert(w.get<std::string>());
+  }
+  EXPECT_EQ(walls.size(), 5u);  // every wall shown by some rank
+  EXPECT_EQ(readJson(out / "view.json").at("frame_count"), 6);
+}

@@ -95,6 +95,53 @@ double sharpness(const std::vector<WallImage>& images, const std::vector<WallIma
   return gradient(images) / gradient(reference);
 }
 
+struct StereoSeconds {
+  double plain = 1e30, exact = 1e30, fast = 1e30, exactMoving = 1e30, fastMoving = 1e30;
+};
+
+// Stereo frames (both eyes of every wall) as a frame loop renders them (renderInto, interleaved
+// repeats, best of each): plain, conformal with exact and with fast stereo rays, each with the
+// head still (from the second frame on the eyes' ray tables are read) and with a head that moves
+// every frame (by 0.1 mm: no table is ever reused, every ray is computed per sample).
+StereoSeconds stereoFigures(EmbreeBackend& backend, const DisplayConfig& config,
+                            const RetargetMap& map, const RenderSettings& plain,
+                            const RenderSettings& conformal, int repeats) {
+  RenderSettings plainStereo = plain, exactStereo = conformal, fastStereo = conformal;
+  plainStereo.eyes = exactStereo.eyes = fastStereo.eyes = {Eye::Left, Eye::Right};
+  fastStereo.stereoRays = StereoRays::Fast;
+  RenderResult plainFrame, exactFrame, fastFrame, movingFrame;
+  // Warm-up: the still head's tables are built on its second frame.
+  for (int i = 0; i < 2; ++i) {
+    backend.renderInto(config, &map, exactStereo, exactFrame);
+    backend.renderInto(config, &map, fastStereo, fastFrame);
+  }
+  backend.renderInto(config, nullptr, plainStereo, plainFrame);
+  StereoSeconds best;
+  const auto timed = [](double& seconds, const std::function<void()>& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    seconds = std::min(seconds, secondsSince(start));
+  };
+  for (int i = 0; i < repeats; ++i) {
+    timed(best.plain, [&] { backend.renderInto(config, nullptr, plainStereo, plainFrame); });
+    timed(best.exact, [&] { backend.renderInto(config, &map, exactStereo, exactFrame); });
+    timed(best.fast, [&] { backend.renderInto(config, &map, fastStereo, fastFrame); });
+    RenderSettings exactMoving = exactStereo, fastMoving = fastStereo;
+    exactMoving.head.position.x += 1e-4 * (i + 1);
+    fastMoving.head.position.x -= 1e-4 * (i + 1);
+    timed(best.exactMoving, [&] { backend.renderInto(config, &map, exactMoving, movingFrame); });
+    timed(best.fastMoving, [&] { backend.renderInto(config, &map, fastMoving, movingFrame); });
+  }
+  std::printf("stereo     plain %.4f s, conformal exact %.4f s (x%.3f, goal <= 1.10), fast %.4f s "
+              "(x%.3f, goal <= 1.05)\n",
+              best.plain, best.exact, best.exact / best.plain, best.fast, best.fast / best.plain);
+  std::printf("           a head moving every frame (rays per sample, no table): exact %.4f s "
+              "(x%.3f), fast %.4f s (x%.3f)\n",
+              best.exactMoving, best.exactMoving / best.plain, best.fastMoving,
+              best.fastMoving / best.plain);
+  return best;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -120,11 +167,14 @@ int main(int argc, char** argv) {
   bool goalsOnly = false;
   app.add_flag("--goals-only", goalsOnly,
                "Only the goal figures (conformal/plain, % of raw); skip stereo and image-based");
+  bool stereoOnly = false;
+  app.add_flag("--stereo-only", stereoOnly, "Only the stereo figures (exact and fast stereo rays "
+               "against plain stereo)");
   std::string profileMode;
   app.add_option("--profile", profileMode,
                  "Only render `repeats` frames of one kind (plain, conformal or raw) after the "
                  "warm-up, for a profiler (perf, callgrind); prints nothing else")
-      ->check(CLI::IsMember({"plain", "conformal", "raw"}));
+      ->check(CLI::IsMember({"plain", "conformal", "raw", "plain-stereo", "exact-stereo", "exact-moving"}));
   EmbreeOptions embreeOptions;
   app.add_flag("--baseline-shading", embreeOptions.baselineShading,
                "The baseline (SSE2) shading code even where the CPU has AVX2");
@@ -166,15 +216,30 @@ int main(int argc, char** argv) {
                 "repeats (best), shading %s\n",
                 config.name.c_str(), config.walls.size(), scene.name.c_str(),
                 scene.triangleCount(), mapName.c_str(), scale, repeats,
-                warmUp.stats["shading_simd"].get<std::string>().c_str());
+                warmUp.stats.embree->shadingSimd.c_str());
     if (!profileMode.empty()) {
       RenderResult frame;  // a frame loop's images, rendered over (renderInto)
       if (profileMode == "conformal") backend.render(config, &map, conformal);  // builds tables
+      RenderSettings plainStereo = plain, exactStereo = conformal;
+      plainStereo.eyes = exactStereo.eyes = {Eye::Left, Eye::Right};
+      if (profileMode == "exact-stereo")
+        for (int i = 0; i < 2; ++i) backend.render(config, &map, exactStereo);  // builds tables
       for (int i = 0; i < repeats; ++i) {
         if (profileMode == "plain") backend.renderInto(config, nullptr, plain, frame);
         if (profileMode == "conformal") backend.renderInto(config, &map, conformal, frame);
         if (profileMode == "raw") bench::rawIntersectLoop(rawScene, config, scale);
+        if (profileMode == "plain-stereo") backend.renderInto(config, nullptr, plainStereo, frame);
+        if (profileMode == "exact-stereo") backend.renderInto(config, &map, exactStereo, frame);
+        if (profileMode == "exact-moving") {  // a new head place every frame: no table
+          exactStereo.head.position.x += 1e-4;
+          backend.renderInto(config, &map, exactStereo, frame);
+        }
       }
+      return 0;
+    }
+
+    if (stereoOnly) {
+      stereoFigures(backend, config, map, plain, conformal, repeats);
       return 0;
     }
 
@@ -220,11 +285,12 @@ int main(int argc, char** argv) {
       raw16PlainTable = bench::rawIntersect16Loop(rawScene, config, scale, &plainRays);
       raw16PlainTableSeconds = std::min(raw16PlainTableSeconds, raw16PlainTable.seconds);
     }
-    const double rays = plainResult.stats["camera_rays"].get<double>();
+    const double rays = static_cast<double>(plainResult.stats.embree->cameraRays);
     const double plainRate = rays / plainSeconds, conformalRate = rays / conformalSeconds;
     const double rawRate = static_cast<double>(raw.rays) / rawSeconds;
     std::printf("\nplain      %8.4f s  %7.2f Mrays/s  (%.0f rays, %.0f retraced)\n", plainSeconds,
-                plainRate * 1e-6, rays, plainResult.stats["retraced_rays"].get<double>());
+                plainRate * 1e-6, rays,
+                static_cast<double>(plainResult.stats.embree->retracedRays));
     std::printf("conformal  %8.4f s  %7.2f Mrays/s  conformal/plain time %.3f (goal <= 1.05)\n",
                 conformalSeconds, conformalRate * 1e-6, conformalSeconds / plainSeconds);
     std::printf("raw rtcIntersect8 %8.4f s  %7.2f Mrays/s  plain %.0f %%, conformal %.0f %% of "
@@ -244,7 +310,7 @@ int main(int argc, char** argv) {
                 100 * conformalRate / raw16Rate);
     // The same loop over the conformal frame's own rays (they cross the squeezed parts of the
     // scene: the fair ceiling of a conformal render, beside the plain-ray loop the goal names).
-    const double conformalRayCount = conformalResult.stats["camera_rays"].get<double>();
+    const double conformalRayCount = static_cast<double>(conformalResult.stats.embree->cameraRays);
     const double rawConformalRate = static_cast<double>(rawConformal.rays) / rawConformalSeconds;
     std::printf("raw loop over the conformal rays %8.4f s (%.3f x the plain-ray loop): conformal "
                 "render %.0f %% of its rate (CPU: %.4f s, %.0f %%)\n",
@@ -278,16 +344,16 @@ int main(int argc, char** argv) {
     const RenderResult secondFrame = freshBackend.render(config, &map, conformal);
     std::printf("map: grids + tables built in %.4f s (first frame, %.4f s in all), table %.4f s "
                 "(second frame); a frame reads %.0f table samples\n",
-                firstFrame.stats["map_build_seconds"].get<double>(), firstFrameSeconds,
-                secondFrame.stats["map_build_seconds"].get<double>(),
-                conformalResult.stats["direction_table_samples"].get<double>());
+                firstFrame.stats.embree->mapBuildSeconds, firstFrameSeconds,
+                secondFrame.stats.embree->mapBuildSeconds,
+                static_cast<double>(conformalResult.stats.embree->directionTableSamples));
     nlohmann::json report = {
         {"display", config.name},
         {"scene", scene.name},
         {"triangles", scene.triangleCount()},
         {"map", mapName},
         {"scale", scale},
-        {"threads", plainResult.stats["threads"]},
+        {"threads", plainResult.stats.embree->threads},
         {"plain_seconds", plainSeconds},
         {"conformal_seconds", conformalSeconds},
         {"conformal_over_plain", conformalSeconds / plainSeconds},
@@ -305,26 +371,14 @@ int main(int argc, char** argv) {
         {"raw_rtcintersect16_rays_per_second", raw16Rate},
         {"raw_rtcintersect16_conformal_rays_per_second", raw16ConformalRate},
         {"conformal_fraction_of_raw_conformal", (conformalRayCount / conformalSeconds) / rawConformalRate},
-        {"first_frame_map_build_seconds", firstFrame.stats["map_build_seconds"]},
-        {"second_frame_map_build_seconds", secondFrame.stats["map_build_seconds"]}};
+        {"first_frame_map_build_seconds", firstFrame.stats.embree->mapBuildSeconds},
+        {"second_frame_map_build_seconds", secondFrame.stats.embree->mapBuildSeconds}};
     if (goalsOnly) {
       if (!jsonPath.empty()) writeTextAtomically(jsonPath, report.dump(2) + "\n");
       return 0;
     }
 
-    // Stereo: exact curved rays and fast straight rays against plain stereo.
-    RenderSettings plainStereo = plain, exactStereo = conformal, fastStereo = conformal;
-    plainStereo.eyes = exactStereo.eyes = fastStereo.eyes = {Eye::Left, Eye::Right};
-    fastStereo.stereoRays = StereoRays::Fast;
-    const double plainStereoSeconds =
-        bestSeconds(repeats, [&] { backend.render(config, nullptr, plainStereo); });
-    const double exactStereoSeconds =
-        bestSeconds(repeats, [&] { backend.render(config, &map, exactStereo); });
-    const double fastStereoSeconds =
-        bestSeconds(repeats, [&] { backend.render(config, &map, fastStereo); });
-    std::printf("stereo     plain %.4f s, conformal exact %.4f s (x%.2f), fast %.4f s (x%.2f)\n",
-                plainStereoSeconds, exactStereoSeconds, exactStereoSeconds / plainStereoSeconds,
-                fastStereoSeconds, fastStereoSeconds / plainStereoSeconds);
+    const StereoSeconds stereo = stereoFigures(backend, config, map, plain, conformal, repeats);
 
     // Sharpness against a 16-spp reference, at equal output resolution.
     RenderSettings reference = conformal;
@@ -373,8 +427,11 @@ int main(int argc, char** argv) {
                             {"psnr_db", value},
                             {"sharpness", crisp}});
     }
-    report["stereo_seconds"] = {
-        {"plain", plainStereoSeconds}, {"exact", exactStereoSeconds}, {"fast", fastStereoSeconds}};
+    report["stereo_seconds"] = {{"plain", stereo.plain},
+                                {"exact", stereo.exact},
+                                {"fast", stereo.fast},
+                                {"exact_moving_head", stereo.exactMoving},
+                                {"fast_moving_head", stereo.fastMoving}};
     report["reference_spp"] = 16;
     report["direct_psnr_db"] = directPsnr;
     report["direct_sharpness"] = directSharpness;

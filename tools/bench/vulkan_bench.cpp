@@ -49,6 +49,16 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The conformal pre-pass's figures of a Vulkan frame (all zero for another frame).
+VulkanConformalStats prepassOf(const RenderResult& result) {
+  const std::optional<VulkanFrameStats>& vulkan = result.stats.vulkan;
+  return vulkan && vulkan->conformalPrepass ? *vulkan->conformalPrepass : VulkanConformalStats{};
+}
+
+std::string deviceOf(const RenderResult& result) {
+  return result.stats.vulkan ? result.stats.vulkan->device : "?";
+}
+
 struct Timing {
   double seconds = 0, cpu = 0, gpu = 0;  // medians per frame (gpu: 0 without timestamps)
   std::vector<double> wall, cpuFrames, gpuFrames;  // every timed frame, in order
@@ -93,13 +103,16 @@ std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const Dis
       wall[r].push_back(std::chrono::duration<double>(Clock::now() - start).count());
       // The device's own time (timestamps around the pre-pass and the render passes): on a GPU
       // the host's submissions, waits and readback dominate the wall clock.
-      gpu[r].push_back(timings[r].last.stats.value("gpu_seconds", 0.0));
-      if (const auto passes = timings[r].last.stats.find("prepass_pass_gpu_seconds");
-          passes != timings[r].last.stats.end()) {
+      const std::optional<VulkanFrameStats>& vulkan = timings[r].last.stats.vulkan;
+      gpu[r].push_back(vulkan ? vulkan->gpuSeconds.value_or(0.0) : 0.0);
+      if (const auto passes = prepassOf(timings[r].last).passGpuSeconds; !passes.empty()) {
         auto& frames = timings[r].passFrames;
         if (frames.empty())
-          for (const auto& [pass, seconds] : passes->items()) frames.push_back({pass, {}});
-        for (auto& [pass, seconds] : frames) seconds.push_back(passes->value(pass, 0.0));
+          for (const auto& [pass, seconds] : passes) frames.push_back({pass, {}});
+        for (auto& [pass, seconds] : frames) {
+          const auto found = passes.find(pass);
+          seconds.push_back(found != passes.end() ? found->second : 0.0);
+        }
       }
     }
   for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -278,11 +291,11 @@ std::string bakedMapSweep(const VulkanOptions& options, const DisplayConfig& con
                 thresholdName(error).c_str(), t.seconds, t.seconds / plain.seconds, t.cpu,
                 t.cpu / plain.cpu, t.gpu, plain.gpu > 0.0 ? t.gpu / plain.gpu : 0.0, offEmbree,
                 100.0 * gapFraction(t.last),
-                t.last.stats.value("triangles_tessellated", std::size_t{0}),
-                t.last.stats.value("triangles_through_geometry_shader", std::size_t{0}));
+                prepassOf(t.last).trianglesTessellated,
+                prepassOf(t.last).trianglesThroughGeometryShader);
     std::fflush(stdout);
   }
-  return plain.last.stats.value("device", "?");
+  return deviceOf(plain.last);
 }
 
 }  // namespace
@@ -320,6 +333,9 @@ int main(int argc, char** argv) {
                  "checker-sphere size of the baked-map sweep (about this many triangles)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--skip-sweep", skipSweep, "leave out the threshold sweeps");
+  bool stereo = false;
+  app.add_flag("--stereo", stereo,
+               "both stereo eyes in the timing table (conformal stereo against plain stereo)");
   app.add_flag("--skip-zoom-sweep", skipZoomSweep,
                "leave out the threshold sweeps under the zoom map (keep the baked-map one)");
   app.add_option("--thresholds", sweepThresholds,
@@ -356,6 +372,7 @@ int main(int argc, char** argv) {
     auto reuseBackend = makeVulkanBackend(reuseOptions);
     RenderSettings settings;
     settings.resolutionScale = scale;
+    if (stereo) settings.eyes = {Eye::Left, Eye::Right};
     const RetargetMap identity = RetargetMap::identity(256);
     const RetargetMap squeeze = test::azimuthSqueezeMap(256);
     constexpr double kZoom = 2.0;
@@ -370,10 +387,11 @@ int main(int argc, char** argv) {
     if (!skip20k) scenes.push_back({"sphere-20k", 20000});
     if (!skip1m) scenes.push_back({"sphere-1M", 1000000});
     for (std::size_t size : extraSizes) scenes.push_back({"sphere-" + std::to_string(size), size});
-    std::printf("config %s, %zu walls at scale %.3g (%d x %d px), median of %d frames\n",
+    std::printf("config %s, %zu walls at scale %.3g (%d x %d px)%s, median of %d frames\n",
                 config.name.c_str(), config.walls.size(), scale,
                 int(std::lround(config.walls[0].width * scale)),
-                int(std::lround(config.walls[0].height * scale)), repeats);
+                int(std::lround(config.walls[0].height * scale)),
+                stereo ? ", both stereo eyes" : "", repeats);
     std::printf("\n%-12s %10s %-9s %9s %9s %7s %9s %9s %7s %9s %9s %7s %9s %11s %9s %8s %14s "
                 "%9s\n",
                 "scene", "triangles", "map", "plain s", "conf s", "ratio", "plain cpu",
@@ -395,17 +413,17 @@ int main(int argc, char** argv) {
             {{backend.get(), nullptr}, {backend.get(), map}, {reuseBackend.get(), map}}, config,
             settings, repeats);
         const Timing &plain = t[0], &conformal = t[1], &reused = t[2];
-        device = plain.last.stats.value("device", "?");
+        device = deviceOf(plain.last);
         std::printf("%-12s %10zu %-9s %9.4f %9.4f %7.2f %9.4f %9.4f %7.2f %9.5f %9.5f %7.2f "
                     "%9.4f %11.5f %9zu %8zu %14.2f %9.2f\n",
                     name.c_str(), scene.triangleCount(), mapName, plain.seconds,
                     conformal.seconds, pairedRatio(conformal.wall, plain.wall), plain.cpu,
                     conformal.cpu, pairedRatio(conformal.cpuFrames, plain.cpuFrames), plain.gpu,
                     conformal.gpu, pairedRatio(conformal.gpuFrames, plain.gpuFrames),
-                    conformal.last.stats.value("prepass_seconds", 0.0),
-                    conformal.last.stats.value("prepass_gpu_seconds", 0.0),
-                    conformal.last.stats.value("triangles_tessellated", std::size_t{0}),
-                    conformal.last.stats.value("triangles_through_geometry_shader", std::size_t{0}),
+                    prepassOf(conformal.last).prepassSeconds,
+                    prepassOf(conformal.last).prepassGpuSeconds.value_or(0.0),
+                    prepassOf(conformal.last).trianglesTessellated,
+                    prepassOf(conformal.last).trianglesThroughGeometryShader,
                     pairedRatio(reused.wall, plain.wall),
                     pairedRatio(reused.gpuFrames, plain.gpuFrames));
         if (!conformal.passFrames.empty()) {
@@ -438,7 +456,7 @@ int main(int argc, char** argv) {
                     thresholdName(error).c_str(), t.seconds, t.seconds / plain.seconds, t.cpu,
                     t.cpu / plain.cpu, t.gpu, plain.gpu > 0.0 ? t.gpu / plain.gpu : 0.0,
                     100.0 * closedFormError(t.last, config, flat, kZoom),
-                    t.last.stats.value("triangles_tessellated", std::size_t{0}));
+                    prepassOf(t.last).trianglesTessellated);
         std::fflush(stdout);
       }
     }

@@ -26,6 +26,15 @@ void addClusterOptions(CLI::App& sub, ClusterCliOptions& options) {
                "(a lab's cluster config tried on one machine)");
 }
 
+void addFrameGroupOption(CLI::App& sub, ClusterCliOptions& options) {
+  options.frameGroups = 0;  // chosen from the ranks and walls unless given
+  sub.add_option("--frame-groups", options.frameGroups,
+                 "--cluster: split the ranks into N groups that take turns at frames (group g "
+                 "renders frames g, g+N, ...), each dealing the walls over its ranks; default: "
+                 "ranks / walls when there are more ranks than walls and no wall names its node")
+      ->check(CLI::Range(1, 1 << 20));
+}
+
 namespace {
 bool clusterFailed = false;  // a CliCluster was left by an exception
 }  // namespace
@@ -46,8 +55,27 @@ CliCluster::CliCluster(const DisplayConfig& display, const ClusterCliOptions& op
   DisplayConfig dealt = display;  // same hash on every rank: only the dealing changes
   if (options.ignoreNodes)
     for (Wall& wall : dealt.walls) wall.node.clear();
-  cluster_ = std::make_unique<Cluster>(MPI_COMM_WORLD, dealt,
+  int size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &worldRank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  const int walls = static_cast<int>(dealt.walls.size());
+  const bool nodesNamed = std::any_of(dealt.walls.begin(), dealt.walls.end(),
+                                      [](const Wall& w) { return !w.node.empty(); });
+  groups_ = options.frameGroups > 0 ? std::min(options.frameGroups, size)
+            : (size > walls && !nodesNamed) ? size / walls
+                                            : 1;
+  if (groups_ == 1) {
+    cluster_ = std::make_unique<Cluster>(MPI_COMM_WORLD, dealt,
+                                         ClusterOptions{.timeoutSeconds = options.timeoutSeconds});
+    return;
+  }
+  // Group g: ranks g, g + G, ...; rank 0 is the root of group 0. The Cluster keeps a duplicate.
+  group_ = worldRank_ % groups_;
+  MPI_Comm groupComm = MPI_COMM_NULL;
+  MPI_Comm_split(MPI_COMM_WORLD, group_, worldRank_, &groupComm);
+  cluster_ = std::make_unique<Cluster>(groupComm, dealt,
                                        ClusterOptions{.timeoutSeconds = options.timeoutSeconds});
+  MPI_Comm_free(&groupComm);
 }
 
 CliCluster::~CliCluster() {
@@ -60,7 +88,11 @@ CliCluster::~CliCluster() {
 }
 
 bool CliCluster::isRoot() const { return cluster_->isRoot(); }
-int CliCluster::rank() const { return cluster_->rank(); }
+bool CliCluster::isWorldRoot() const { return worldRank_ == 0; }
+Cluster& CliCluster::cluster() { return *cluster_; }
+int CliCluster::rank() const { return worldRank_; }
+int CliCluster::frameGroups() const { return groups_; }
+int CliCluster::frameGroup() const { return group_; }
 const std::vector<std::string>& CliCluster::walls() const { return cluster_->walls(); }
 void CliCluster::exchangeFrame(ClusterFrameState& state, double patienceSeconds) {
   cluster_->exchangeFrame(state, patienceSeconds);
@@ -108,9 +140,11 @@ std::optional<RenderResult> CliCluster::render(RenderBackend& backend,
 
 nlohmann::json CliCluster::report() const {
   nlohmann::json ranks = nlohmann::json::array();
-  for (int r = 0; r < cluster_->size(); ++r)
-    ranks.push_back({{"rank", r}, {"host", cluster_->host(r)}, {"walls", cluster_->wallsOf(r)}});
-  return {{"ranks", ranks}};
+  for (int r = 0; r < cluster_->size(); ++r)  // group rank r is job rank group + r * groups
+    ranks.push_back({{"rank", group_ + r * groups_},
+                     {"host", cluster_->host(r)},
+                     {"walls", cluster_->wallsOf(r)}});
+  return {{"ranks", ranks}, {"frame_groups", groups_}};
 }
 
 #else
@@ -122,7 +156,13 @@ CliCluster::CliCluster(const DisplayConfig&, const ClusterCliOptions&) {
 }
 CliCluster::~CliCluster() = default;
 bool CliCluster::isRoot() const { return true; }
+bool CliCluster::isWorldRoot() const { return true; }
+Cluster& CliCluster::cluster() {
+  throw Error(ErrorCode::InvalidInput, "--cluster: this confvis was built without MPI");
+}
 int CliCluster::rank() const { return 0; }
+int CliCluster::frameGroups() const { return 1; }
+int CliCluster::frameGroup() const { return 0; }
 const std::vector<std::string>& CliCluster::walls() const {
   static const std::vector<std::string> none;
   return none;

@@ -21,8 +21,14 @@ struct ClusterCliOptions {
   bool enabled = false;
   double timeoutSeconds = 5.0;
   bool ignoreNodes = false;  // deal every wall in config order (trying a lab's config on one host)
+  // Walks: the ranks split into this many groups, group g rendering frames g, g + G, ... (its
+  // walls dealt over its ranks). 0: one group per full set of walls when there are more ranks
+  // than walls and no wall names its node, else 1 (addFrameGroupOption makes 0 the default).
+  int frameGroups = 1;
 };
 void addClusterOptions(CLI::App& sub, ClusterCliOptions& options);
+// --frame-groups, for the commands that render frames (walk).
+void addFrameGroupOption(CLI::App& sub, ClusterCliOptions& options);
 
 // After an error in a --cluster run: waits a moment before the process exits, because the first
 // rank to exit makes mpirun end the others, which may not have printed their own message yet.
@@ -34,14 +40,18 @@ void lingerAfterClusterError();
 // (mpirun then ends the others).
 class CliCluster {
  public:
-  // Error(InvalidInput) when confvis was built without MPI.
+  // Error(InvalidInput) when confvis was built without MPI. With frame groups (walks), the
+  // Cluster spans this rank's group: its root decides and writes the group's frames.
   CliCluster(const DisplayConfig& display, const ClusterCliOptions& options);
   ~CliCluster();
   CliCluster(const CliCluster&) = delete;
   CliCluster& operator=(const CliCluster&) = delete;
 
-  bool isRoot() const;
-  int rank() const;
+  bool isRoot() const;       // root of this rank's group (of the job without frame groups)
+  bool isWorldRoot() const;  // rank 0 of the job: writes the run's report
+  int rank() const;          // in the job (MPI_COMM_WORLD)
+  int frameGroups() const;   // 1 without frame groups
+  int frameGroup() const;    // this rank's group: it renders frames i with i % frameGroups() == it
   const std::vector<std::string>& walls() const;  // this rank's
   // Rank 0's state to every rank; the map of state.mapGeneration is then map().
   void exchangeFrame(ClusterFrameState& state, double patienceSeconds);
@@ -55,11 +65,14 @@ class CliCluster {
   // order one process would render them, the other ranks nullopt.
   std::optional<RenderResult> render(RenderBackend& backend, const DisplayConfig& display,
                                      const RetargetMap* map, const RenderSettings& settings);
-  // A summary for the report: ranks and their walls.
+  // The Cluster itself, for loops of their own (view --cluster); Error(InvalidInput) without MPI.
+  Cluster& cluster();
+  // A summary for the report: the frame groups and the ranks of this rank's group, their walls.
   nlohmann::json report() const;
 
  private:
   std::unique_ptr<Cluster> cluster_;
+  int worldRank_ = 0, groups_ = 1, group_ = 0;
 };
 
 }  // namespace confvis::cli

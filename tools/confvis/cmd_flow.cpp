@@ -1,4 +1,5 @@
 // confvis flow: conformal map of a disk-shaped mesh onto the unit disk by Ricci flow.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/distortion.hpp"
+#include "confvis/conformal/real_mesh_map.hpp"
 #include "confvis/conformal/obj_output.hpp"
 
 namespace confvis::cli {
@@ -25,16 +27,22 @@ struct FlowArgs {
   bool quiet = false;
 };
 
-std::array<int, 3> parseMarkers(const std::string& text, const TriMesh& mesh) {
+// Marker indices count the file's vertices from 0; the mesh may have welded or left some out.
+std::array<int, 3> parseMarkers(const std::string& text, const TriMesh& mesh,
+                                const MeshSource& source) {
   std::array<int, 3> m{};
   if (std::sscanf(text.c_str(), "%d,%d,%d", &m[0], &m[1], &m[2]) != 3)
     throw Error(ErrorCode::InvalidInput, "--markers expects three vertex indices i,j,k");
-  for (int v : m) {
-    if (v < 0 || v >= static_cast<int>(mesh.n_vertices()))
-      throw Error(ErrorCode::InvalidInput, "marker vertex " + std::to_string(v) + " does not exist");
+  for (int& v : m) {
+    const auto it = std::find(source.fileVertex.begin(), source.fileVertex.end(), v);
+    if (it == source.fileVertex.end())
+      throw Error(ErrorCode::InvalidInput, "marker vertex " + std::to_string(v) +
+                                               " does not exist or is used by no face");
+    const int fileIndex = v;
+    v = static_cast<int>(it - source.fileVertex.begin());
     if (!mesh.is_boundary(TriMesh::VertexHandle(v)))
       throw Error(ErrorCode::InvalidInput,
-                  "marker vertex " + std::to_string(v) + " is not on the boundary");
+                  "marker vertex " + std::to_string(fileIndex) + " is not on the boundary");
   }
   if (m[0] == m[1] || m[1] == m[2] || m[0] == m[2])
     throw Error(ErrorCode::InvalidInput, "--markers must name three different vertices");
@@ -55,12 +63,20 @@ int runFlow(const FlowArgs& args) {
     options.onIteration = [](int it, double err) {
       std::fprintf(stderr, "flow: iteration %d, max curvature error %.3g\n", it, err);
     };
-  const TriMesh mesh = readMesh(args.input);
+  MeshSource source;
+  const TriMesh mesh = readMesh(args.input, source);
+  requireDisk(mesh, source);
+  if (!args.quiet && (source.weldedVertices > 0 || source.unreferencedVertices > 0))
+    std::fprintf(stderr,
+                 "flow: note: %d vertices at the position of an earlier one welded into it, %d "
+                 "vertices used by no face left out; the output numbers the %zu vertices left\n",
+                 source.weldedVertices, source.unreferencedVertices, mesh.n_vertices());
   std::array<int, 3> markers{};
-  if (!args.markers.empty()) markers = parseMarkers(args.markers, mesh);
+  if (!args.markers.empty()) markers = parseMarkers(args.markers, mesh, source);
 
   const auto start = std::chrono::steady_clock::now();
-  DiskMap map = computeDiskMap(mesh, options);
+  const RealMeshMap real = computeRealMeshDiskMap(mesh, source, options);
+  DiskMap map = real.map;
   if (!args.markers.empty()) alignDiskMap(map.uv, markers[0], markers[1], markers[2]);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -83,6 +99,11 @@ int runFlow(const FlowArgs& args) {
                            {"used_flips", map.usedFlips},
                            {"removed_face", map.removedFace},
                            {"boundary_updates", map.boundaryUpdates},
+                           {"welded_vertices", source.weldedVertices},
+                           {"mollified_faces", real.mollifiedFaces},
+                           {"untangled_vertices", real.untangledVertices},
+                           {"largest_untangle_shift", real.largestUntangleShift},
+                           {"unreferenced_vertices", source.unreferencedVertices},
                            {"seconds", seconds},
                            {"distortion", toJson(stats)}};
   if (!args.report.empty()) writeTextAtomically(args.report, report.dump(2) + "\n");

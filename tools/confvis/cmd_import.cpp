@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "command.hpp"
@@ -15,7 +16,8 @@ namespace {
 struct ImportArgs {
   std::string input, output, name, resolution, source;
   std::vector<double> reference;
-  double scale = 1.0;
+  std::vector<std::string> skipWindows;
+  std::optional<double> scale, edgeBlend;
 };
 
 std::pair<int, int> parseResolution(const std::string& text) {
@@ -31,6 +33,8 @@ int runImport(const ImportArgs& a) {
   ImportOptions options;
   options.name = a.name;
   options.scale = a.scale;
+  options.skipWindows = a.skipWindows;
+  options.edgeBlendGamma = a.edgeBlend;
   if (!a.reference.empty()) options.reference = glm::dvec3(a.reference[0], a.reference[1], a.reference[2]);
   if (!a.resolution.empty()) options.fallbackResolution = parseResolution(a.resolution);
   if (a.source == "sphere") options.source = SourceField::FullSphere;
@@ -72,9 +76,17 @@ const RegisterCommand registration{Command{
                      "the room origin)")
           ->delimiter(',')
           ->expected(3);
-      sub.add_option("--scale", args->scale, "Metres per file unit, e.g. 0.3048 for feet")
-          ->check(kPositiveNumber)
-          ->capture_default_str();
+      sub.add_option("--scale", args->scale,
+                     "Metres per file unit, e.g. 0.3048 for feet (default: 1, or 0.001 when the "
+                     "display spans over 100 units: millimetres, with a note)")
+          ->check(kPositiveNumber);
+      sub.add_option("--skip-window", args->skipWindows,
+                     "Leave out the window (wall) of this name, e.g. a master's preview window; "
+                     "repeatable");
+      sub.add_option("--edge-blend", args->edgeBlend,
+                     "Blend overlapping projector walls, for projectors of this gamma (2.2 "
+                     "typical; configs/README.md, \"edge_blend\")")
+          ->check(kPositiveNumber);
       sub.add_option("--resolution", args->resolution,
                      "WIDTHxHEIGHT for .pvx machines without Geometry");
       sub.add_option("--source", args->source,

@@ -12,6 +12,7 @@
 #include "backend_factory.hpp"
 #include "cluster_cli.hpp"
 #include "command.hpp"
+#include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/base/error.hpp"
@@ -119,6 +120,7 @@ int runRender(const RenderArgs& args) {
       cluster ? cluster->render(*backend, config, renderMap, settings)
               : backend->render(config, renderMap, settings);
   if (!rendered) return 0;  // a cluster rank other than 0: rank 0 writes every image
+  EdgeBlender(config).apply(rendered->images);  // overlapping projectors, when configured
   const RenderResult& result = *rendered;
   const double renderSeconds = secondsSince(stage);
 
@@ -140,11 +142,12 @@ int runRender(const RenderArgs& args) {
                    {"seconds_before_writing", secondsSince(start)}}}};
   writeRenderOutput(output, config, settings, result, extra);  // adds write_seconds
   // Rays per second only where rays were traced (a rasterizer reports none).
-  const double raysPerSecond = result.stats.value("rays_per_second", 0.0);
+  const double raysPerSecond = result.stats.embree ? result.stats.embree->raysPerSecond : 0.0;
   char rate[48] = "";
   if (raysPerSecond > 0) std::snprintf(rate, sizeof rate, ", %.1f Mrays/s", raysPerSecond * 1e-6);
   // The device's own time where it was measured (Vulkan: timestamps; readback excluded).
-  if (const double gpu = result.stats.value("gpu_seconds", 0.0); gpu > 0)
+  if (const double gpu = result.stats.vulkan ? result.stats.vulkan->gpuSeconds.value_or(0.0) : 0.0;
+      gpu > 0)
     std::snprintf(rate, sizeof rate, ", %.1f ms on the device", gpu * 1e3);
   std::printf("%s: %zu images (%s, %s) of '%s' in %.2f s%s -> %s\n", config.name.c_str(),
               result.images.size(), modeName(settings.mode), args.eyes.c_str(),

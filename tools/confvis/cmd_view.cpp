@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "backend_factory.hpp"
+#include "cluster_cli.hpp"
+#include "cluster_view.hpp"
 #include "command.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
@@ -36,6 +38,7 @@ struct ViewArgs {
   int frames = 0, bakeResolution = 0;
   double scale = 1.0, radius = 0.10;
   bool noVsync = false, validate = false, quiet = false;
+  ClusterCliOptions cluster;
 };
 
 // --eyes unset: stereo where some wall's output shows a stereo pair, mono otherwise.
@@ -51,8 +54,12 @@ int runView(const ViewArgs& args) {
                                   ? shippedFile("configs/cave5.json", "display config")
                                   : fs::path(args.config);
   const DisplayConfig config = loadDisplayConfig(configPath);
+  // --cluster: rank 0 tracks, navigates and bakes; every rank shows its walls (cluster_view.hpp).
+  std::optional<CliCluster> cluster;
+  if (args.cluster.enabled) cluster.emplace(config, args.cluster);
+  const bool root = !cluster || cluster->isRoot();
   std::unique_ptr<Tracker> tracker;
-  if (!args.tracker.empty()) tracker = openTracker(args.tracker, config);
+  if (!args.tracker.empty() && root) tracker = openTracker(args.tracker, config);
   const Scene scene = sceneByNameOrFile(args.scene);
   // Made on the presenting device: the Vulkan backend's frames then stay on the GPU.
   const LiveBackendFactory makeRenderer = [&](const PresentContext& context) {
@@ -70,15 +77,18 @@ int runView(const ViewArgs& args) {
   const BakeFunction bake = followerBake(args.bakeResolution, 0.0);
   const MapFollowerOptions followerOptions{.radius = args.radius};
   std::string mapOrigin = "baked now at " + std::to_string(args.bakeResolution) + " texels";
-  std::optional<RetargetMap> firstMap;
-  if (args.bakeResolution > 0) {
-    firstMap = bake(config, config.reference);
-  } else {
-    MapSource first = retargetMapFor(config, "", !args.quiet);
-    mapOrigin = first.origin;
-    firstMap = std::move(first.map);
+  std::optional<MapFollower> follower;
+  if (root) {
+    std::optional<RetargetMap> firstMap;
+    if (args.bakeResolution > 0) {
+      firstMap = bake(config, config.reference);
+    } else {
+      MapSource first = retargetMapFor(config, "", !args.quiet);
+      mapOrigin = first.origin;
+      firstMap = std::move(first.map);
+    }
+    follower.emplace(config, std::move(*firstMap), inBackground(bake), followerOptions);
   }
-  MapFollower follower(config, std::move(*firstMap), inBackground(bake), followerOptions);
 
   LiveViewOptions options;
   options.stereo = stereoRun(args, config);
@@ -93,7 +103,26 @@ int runView(const ViewArgs& args) {
   options.showProgress = !args.quiet;
   options.renderOnPresentingDevice = args.backend == "vulkan";
   options.renderDevice = args.device;
-  nlohmann::json report = runLiveView(config, makeRenderer, follower, tracker.get(), options);
+  const fs::path output = args.output.empty() ? fs::path("out") / ("view-" + config.name)
+                                              : fs::path(args.output);
+  nlohmann::json report;
+  if (cluster) {
+    // Each rank's frames go through the CPU to its windows (the backend made beforehand).
+    const std::unique_ptr<RenderBackend> backend = makeBackend(args.backend, {args.device, {}});
+    backend->setScene(scene);
+    ClusterViewResult run = runClusterView(*cluster, config, *backend,
+                                           follower ? &*follower : nullptr, tracker.get(), options);
+    // Every rank's frame states, to show they all showed the same frames.
+    const nlohmann::json log = {
+        {"rank", cluster->rank()}, {"walls", cluster->walls()}, {"frames", run.frames}};
+    writeTextAtomically(output / ("cluster-rank-" + std::to_string(cluster->rank()) + ".json"),
+                        log.dump(2) + "\n");
+    if (!root) return 0;
+    report = std::move(run.report);
+    report["backend"] = backend->name();
+  } else {
+    report = runLiveView(config, makeRenderer, *follower, tracker.get(), options);
+  }
 
   report["display"] = {{"name", config.name}, {"config", configPath.string()}};
   report["scene"] = args.scene;
@@ -103,8 +132,6 @@ int runView(const ViewArgs& args) {
   report["vsync"] = options.vsync;
   report["map"] = mapOrigin;
   report["tracker"]["spec"] = args.tracker;
-  const fs::path output = args.output.empty() ? fs::path("out") / ("view-" + config.name)
-                                              : fs::path(args.output);
   writeTextAtomically(output / "view.json", report.dump(2) + "\n");
   const nlohmann::json& time = report["frame_time"];
   std::printf("%s: %d frames (%s), %.1f ms mean, %.1f ms p99; re-bakes %d started, %d swapped; "
@@ -167,6 +194,7 @@ const RegisterCommand registration{Command{
                    "Khronos validation on the presenting device; messages counted in view.json");
       sub.add_option("-o,--output", args->output, "Directory of view.json (default: out/view-NAME)");
       sub.add_flag("-q,--quiet", args->quiet, "No progress lines");
+      addClusterOptions(sub, args->cluster);
       return [args] { return runView(*args); };
     }}};
 

@@ -19,6 +19,7 @@
 #include "cluster_cli.hpp"
 #include "command.hpp"
 #include "confvis/runtime/map_follower.hpp"
+#include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
@@ -104,14 +105,25 @@ int runWalk(const WalkArgs& args) {
   // The map's render config: the display with its reference at the map's, rebuilt when a new map
   // is swapped in (a --cluster rank other than 0 has no follower to hand it out).
   DisplayConfig frameConfig = config;
-  std::uint64_t frameConfigGeneration = 0;
+  const EdgeBlender blender(config);  // masks once: they do not depend on the head
+  bool haveFrameConfig = false, haveShared = false;
+  std::uint64_t frameConfigGeneration = 0, sharedGeneration = 0;
+  // --cluster with frame groups: this rank's group renders frames index % groups == group. Its
+  // root still decides every frame (the follower sees the whole path, so maps swap on the same
+  // frames as in one process) and rank 0 reports them all.
+  const int groups = cluster ? cluster->frameGroups() : 1;
+  const int group = cluster ? cluster->frameGroup() : 0;
+  const bool reporter = !cluster || cluster->isWorldRoot();
   nlohmann::json frames = nlohmann::json::array(), errors = nlohmann::json::array();
   int previousBakesStarted = 0;
   const auto loopStart = Clock::now();
   RenderResult result;  // one frame's images, rendered over by the next (renderInto)
   for (int index = 0; index < frameCount; ++index) {
+    const bool mine = index % groups == group;  // this rank's group renders the frame
+    if (!mine && !root) continue;
     const double walkSeconds = index / args.fps;
-    if (!args.noPacing)  // a live loop: frame i begins no earlier than i / fps after the first
+    // A live loop: frame i begins no earlier than i / fps after the first.
+    if (!args.noPacing && mine)
       std::this_thread::sleep_until(loopStart + std::chrono::duration_cast<Clock::duration>(
                                                     std::chrono::duration<double>(walkSeconds)));
     frameSeconds = path.keys().front().seconds + walkSeconds;
@@ -129,10 +141,13 @@ int runWalk(const WalkArgs& args) {
       // Offline determinism: a bake started now is swapped in at the next frame, whatever it costs.
       if (args.waitForBakes && frame.baking) follower->waitForBake();
     }
-    if (cluster) {
-      if (root && (index == 0 || frame.swapped))  // every rank holds the map before the frame
+    if (cluster && mine) {
+      if (root && (!haveShared || sharedGeneration != frame.generation)) {  // before the frame
         cluster->shareFrameMap(frame.map, frame.generation);
-      cluster->exchangeFrame(state, index == 0 ? kClusterBakeSeconds : kFrameSeconds);
+        sharedGeneration = frame.generation;
+        haveShared = true;
+      }
+      cluster->exchangeFrame(state, rankLog.empty() ? kClusterBakeSeconds : kFrameSeconds);
       frame.map = cluster->map();
       frame.generation = state.mapGeneration;
       rankLog.push_back({{"frame", state.frame}, {"seconds", state.seconds},
@@ -143,17 +158,21 @@ int runWalk(const WalkArgs& args) {
     const HeadPose head = state.head;
     const glm::dvec3 reference(frame.map->reference.x, frame.map->reference.y,
                                frame.map->reference.z);
-    if (index == 0 || frame.generation != frameConfigGeneration) {
+    if (!haveFrameConfig || frameConfigGeneration != frame.generation) {
       frameConfig = withReference(config, reference);
       frameConfigGeneration = frame.generation;
+      haveFrameConfig = true;
     }
+    const fs::path directory = fs::path(args.output) / frameName(index);
 
     // The centre eye at the tracked head; the virtual camera sits at the map's reference point,
     // so the virtual world (camera + (p - reference)) stays put when the reference moves.
     settings.head = head;
     settings.camera.position = reference;
     try {  // into the previous frame's images (written out already): no fresh output memory
-      if (!cluster) {
+      if (!mine) {
+        // another group renders it; this root only kept the follower in step
+      } else if (!cluster) {
         backend->renderInto(frameConfig, frame.map.get(), settings, result);
       } else if (auto all = cluster->render(*backend, frameConfig, frame.map.get(), settings)) {
         result = std::move(*all);
@@ -164,14 +183,17 @@ int runWalk(const WalkArgs& args) {
       throw Error(error.code(), "frame " + std::to_string(index) + " (t = " +
                                     std::to_string(frameSeconds) + " s): " + error.what());
     }
-    const fs::path directory = fs::path(args.output) / frameName(index);
-    writeRenderOutput(directory, frameConfig, settings, result,
-                      {{"walk", {{"frame", index}, {"seconds", frameSeconds}}}});
+    if (mine) {
+      blender.apply(result.images);  // overlapping projectors, when configured
+      writeRenderOutput(directory, frameConfig, settings, result,
+                        {{"walk", {{"frame", index}, {"seconds", frameSeconds}}}});
+    }
 
     for (const std::string& message : follower->takeErrors()) {
       errors.push_back({{"frame", index}, {"message", message}});
-      std::fprintf(stderr, "walk: frame %d: re-bake failed, keeping the old map: %s\n", index,
-                   message.c_str());
+      if (reporter)
+        std::fprintf(stderr, "walk: frame %d: re-bake failed, keeping the old map: %s\n",
+                     index, message.c_str());
     }
     frames.push_back({{"frame", index},
                       {"seconds", frameSeconds},
@@ -184,7 +206,7 @@ int runWalk(const WalkArgs& args) {
                       {"head_to_reference_m", glm::length(head.position - reference)},
                       {"bake_started", bakeStarted},
                       {"baking", frame.baking}});
-    if (!args.quiet)
+    if (!args.quiet && reporter)
       std::fprintf(stderr,
                    "frame %d/%d  t %.2f s  head (%.2f, %.2f, %.2f)  map %llu around (%.2f, %.2f, "
                    "%.2f)%s%s\n",
@@ -201,7 +223,7 @@ int runWalk(const WalkArgs& args) {
     writeTextAtomically(fs::path(args.output) /
                             ("cluster-rank-" + std::to_string(cluster->rank()) + ".json"),
                         log.dump(2) + "\n");
-    if (!root) return 0;
+    if (!reporter) return 0;
   }
   // No waiting for a running bake before the report: it is counted as still running.
   const MapFollowerStats stats = follower->stats();
@@ -277,6 +299,7 @@ const RegisterCommand registration{Command{
       sub.add_option("-o,--output", args->output, "Output directory")->capture_default_str();
       sub.add_flag("-q,--quiet", args->quiet, "No per-frame progress lines");
       addClusterOptions(sub, args->cluster);
+      addFrameGroupOption(sub, args->cluster);
       return [args] { return runWalk(*args); };
     }}};
 

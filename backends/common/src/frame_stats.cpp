@@ -1,57 +1,68 @@
 #include "confvis/backends/frame_stats.hpp"
 
-#include <type_traits>
+#include <nlohmann/json.hpp>
 
-#include "confvis/base/error.hpp"
+#include "confvis/backends/render_plan.hpp"
 
 namespace confvis {
 namespace {
 
-template <typename T>
-std::optional<T> optionalKey(const nlohmann::json& stats, const char* key) {
-  const auto it = stats.find(key);
-  if (it == stats.end() || it->is_null()) return std::nullopt;
-  if constexpr (std::is_same_v<T, bool>) {
-    if (!it->is_boolean()) return std::nullopt;
-  } else if constexpr (std::is_same_v<T, std::string>) {
-    if (!it->is_string()) return std::nullopt;
-  } else {
-    if (!it->is_number()) return std::nullopt;
-  }
-  return it->get<T>();
+void addEmbree(const EmbreeFrameStats& e, nlohmann::json& json) {
+  nlohmann::json images = nlohmann::json::array();
+  for (const EmbreeImageStats& image : e.images)
+    images.push_back({{"wall", image.wall},
+                      {"eye", eyeName(image.eye)},
+                      {"width", image.width},
+                      {"height", image.height},
+                      {"seconds", image.seconds}});
+  json.update({{"threads", e.threads},
+               {"bvh_build_seconds", e.bvhBuildSeconds},
+               {"map_build_seconds", e.mapBuildSeconds},
+               {"direction_table_samples", e.directionTableSamples},
+               {"cached_direction_table_bytes", e.cachedDirectionTableBytes},
+               {"cached_wall_grids", e.cachedWallGrids},
+               {"camera_rays", e.cameraRays},
+               {"occlusion_rays", e.occlusionRays},
+               {"retraced_rays", e.retracedRays},
+               {"shading_simd", e.shadingSimd},
+               {"rays_per_second", e.raysPerSecond},
+               {"images", images}});
+  if (e.curvedRaySegments) json["curved_ray_segments"] = *e.curvedRaySegments;
 }
 
-template <typename T>
-T requiredKey(const nlohmann::json& stats, const char* key) {
-  if (const std::optional<T> value = optionalKey<T>(stats, key)) return *value;
-  throw Error(ErrorCode::InvalidInput,
-              std::string("frame statistics: no valid \"") + key + "\" (not a backend's result)");
+void addVulkan(const VulkanFrameStats& v, nlohmann::json& json) {
+  json.update({{"device", v.device},
+               {"mode", v.conformal ? "conformal" : "plain"},
+               {"walls", v.walls},
+               {"views_per_pass", v.viewsPerPass},
+               {"stereo_passes", v.multiview ? "multiview" : "per-eye"}});
+  if (v.gpuSeconds) json["gpu_seconds"] = *v.gpuSeconds;
+  if (!v.conformalPrepass) return;
+  const VulkanConformalStats& c = *v.conformalPrepass;
+  json.update({{"tessellation_error_pixels", c.tessellationErrorPixels},
+               {"tessellation", c.tessellation},
+               {"triangles_split_before_warp", c.trianglesSplitBeforeWarp},
+               {"triangles_drawn_flat", c.trianglesDrawnFlat},
+               {"triangles_tessellated", c.trianglesTessellated},
+               {"triangles_through_geometry_shader", c.trianglesThroughGeometryShader},
+               {"triangles_split_along_cut", c.trianglesSplitAlongCut},
+               {"prepass_seconds", c.prepassSeconds},
+               {"prepass_reused", c.prepassReused}});
+  if (c.prepassGpuSeconds) json["prepass_gpu_seconds"] = *c.prepassGpuSeconds;
+  if (!c.passGpuSeconds.empty()) json["prepass_pass_gpu_seconds"] = c.passGpuSeconds;
 }
 
 }  // namespace
 
-FrameStats frameStats(const RenderResult& result) {
-  const nlohmann::json& s = result.stats;
-  if (!s.is_object())
-    throw Error(ErrorCode::InvalidInput, "frame statistics: not a JSON object");
-  FrameStats stats;
-  stats.backend = requiredKey<std::string>(s, "backend");
-  const bool embree = stats.backend == "embree";
-  stats.seconds = requiredKey<double>(s, embree ? "render_seconds" : "seconds");
-  stats.sceneTriangles =
-      optionalKey<std::uint64_t>(s, embree ? "scene_triangles" : "triangles").value_or(0);
-  stats.gpuSeconds = optionalKey<double>(s, "gpu_seconds");
-  stats.device = optionalKey<std::string>(s, "device").value_or("");
-  stats.mapBuildSeconds = optionalKey<double>(s, "map_build_seconds");
-  stats.cameraRays = optionalKey<std::uint64_t>(s, "camera_rays");
-  stats.retracedRays = optionalKey<std::uint64_t>(s, "retraced_rays");
-  stats.occlusionRays = optionalKey<std::uint64_t>(s, "occlusion_rays");
-  stats.raysPerSecond = optionalKey<double>(s, "rays_per_second");
-  stats.threads = optionalKey<int>(s, "threads");
-  stats.prepassSeconds = optionalKey<double>(s, "prepass_seconds");
-  stats.prepassGpuSeconds = optionalKey<double>(s, "prepass_gpu_seconds");
-  stats.prepassReused = optionalKey<bool>(s, "prepass_reused");
-  return stats;
+nlohmann::json toJson(const FrameStats& stats) {
+  nlohmann::json json = {{"backend", stats.backend}};
+  // The keys render.json has always had: each backend names the shared figures its own way.
+  const bool embree = stats.embree.has_value();
+  json[embree ? "render_seconds" : "seconds"] = stats.seconds;
+  json[embree ? "scene_triangles" : "triangles"] = stats.sceneTriangles;
+  if (stats.embree) addEmbree(*stats.embree, json);
+  if (stats.vulkan) addVulkan(*stats.vulkan, json);
+  return json;
 }
 
 }  // namespace confvis

@@ -101,7 +101,7 @@ nlohmann::json writeRenderOutput(const std::filesystem::path& directory,
       {"display", {{"name", config.name}, {"hash", config.hash}, {"walls", config.walls.size()}}},
       {"settings", settingsJson(settings)},
       {"overview_eye", eyeName(overviewEye)},
-      {"backend", result.stats},
+      {"backend", toJson(result.stats)},
       {"files", files}};
   report["write_seconds"] =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -126,7 +126,8 @@ TEST(RenderOutput, FilesPerEyeCombinationAndReport) {
     for (WallImage& image : positionImages(config, eye))
       if (image.wall == "front") result.images.push_back(std::move(image));
   result.images[1].image.at(0, 0)[0] = 0.25f;  // tell the centre eye from the others
-  result.stats = {{"backend", "test"}, {"rays_per_second", 123.0}};
+  result.stats.backend = "test";
+  result.stats.embree.emplace().raysPerSecond = 123.0;
   const auto dir = freshDir("eyes");
   const nlohmann::json report =
       writeRenderOutput(dir, config, settings, result, {{"scene", {{"name", "s"}}}});

@@ -34,9 +34,10 @@ void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples
   rays.plainDirections().at(px, py, ray.dir_x, ray.dir_y, ray.dir_z);
 }
 
-// Conformal centre eye with a direction table: the map directions turned by the camera and
-// normalised, as CameraRays::centreDirection does (glm's order of operations), for the whole
-// packet at once. Unlit samples hold F = 0.
+// Rays from a table (DirectionTable): the stored directions turned by the camera and normalised,
+// as CameraRays::centreDirection does (glm's order of operations), and, for tables with origins,
+// the stored origins placed as CameraRays::placeOffset does, for the whole packet at once (tables
+// without origins: the rays' origins are set already). Unlit samples hold a zero direction.
 void tablePacket(const CameraRays& rays, const DirectionTable& table,
                  const PacketSamples& samples, PacketHits& hits) {
   // Copied into locals, which the compiler knows alias nothing (the loop then vectorises).
@@ -60,6 +61,17 @@ void tablePacket(const CameraRays& rays, const DirectionTable& table,
     ray.dir_y[lane] = y * inverseLength;
     ray.dir_z[lane] = z * inverseLength;
     hits.valid[lane] = lit ? -1 : 0;
+  }
+  if (!table.hasOrigins()) return;
+  alignas(32) Lanes ox, oy, oz;
+  std::memcpy(ox.data(), run + 3 * kPacketSize, sizeof ox);
+  std::memcpy(oy.data(), run + 4 * kPacketSize, sizeof oy);
+  std::memcpy(oz.data(), run + 5 * kPacketSize, sizeof oz);
+  const glm::vec3& c = rays.placedCentre();
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    ray.org_x[lane] = c.x + (m[0][0] * ox[lane] + m[1][0] * oy[lane] + m[2][0] * oz[lane]);
+    ray.org_y[lane] = c.y + (m[0][1] * ox[lane] + m[1][1] * oy[lane] + m[2][1] * oz[lane]);
+    ray.org_z[lane] = c.z + (m[0][2] * ox[lane] + m[1][2] * oy[lane] + m[2][2] * oz[lane]);
   }
 }
 
@@ -93,6 +105,12 @@ void setUpStraightPacket(const CameraRays& rays, const TileJob& job, const Packe
 // rays and true is returned, so that they trace as plain rays do.
 bool setUpPaths(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
                 std::array<RayPath, kPacketSize>& paths, PacketHits& hits) {
+  // A table of the tails, where every curve of the packet bends inside the empty ball.
+  if (job.directions && job.directions->hasOrigins() &&
+      job.directions->reach(samples.x, samples.y, samples.sample) < rays.emptyRadius()) {
+    tablePacket(rays, *job.directions, samples, hits);
+    return true;
+  }
   bool straight = true;
   for (int lane = 0; lane < samples.count; ++lane) {
     const glm::dvec2 p = lanePosition(job, samples, lane);

@@ -1,6 +1,7 @@
 #include "camera_rays.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "confvis/base/error.hpp"
 
@@ -86,9 +87,24 @@ CameraRays::CameraRays(const WallView& view, const OverrideRays& rays,
       cameraPosition_(camera.position),
       rotation_(camera.rotation()),
       placedEye_(place(view.eye_position)),
+      placedCentre_(camera.position),
       rotationF_(rotation_),
       plain_{rotation_ * directionBase_, rotation_ * directionStepX_,
-             rotation_ * directionStepY_} {}
+             rotation_ * directionStepY_} {
+  // Rows of the view matrix's rotation: the wall's right, up and normal.
+  const glm::dmat4& v = view.view;
+  wallRight_ = {v[0][0], v[1][0], v[2][0]};
+  wallUp_ = {v[0][1], v[1][1], v[2][1]};
+  wallNormal_ = {v[0][2], v[1][2], v[2][2]};
+  const glm::dvec3 fromEye = reference - view.eye_position;
+  cRight_ = glm::dot(fromEye, wallRight_);
+  cUp_ = glm::dot(fromEye, wallUp_);
+  cNormal_ = glm::dot(fromEye, wallNormal_);
+  if (view.wall) {
+    pixelsPerMetreX_ = view.wall->width / (view.right - view.left);
+    pixelsPerMetreY_ = view.wall->height / (view.top - view.bottom);
+  }
+}
 
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
                        const ConformalWarp& warp, const WallMapGrid& grid, StereoRays stereoRays,
@@ -117,18 +133,28 @@ bool CameraRays::straightDirection(double px, double py, glm::vec3& direction) c
     direction = plain_.at(fx, fy);
     return true;
   }
+  if (!eyeAtReference_) {
+    glm::vec3 physical;
+    if (!fastDirection(px, py, physical)) return false;
+    direction = centreDirection(physical);
+    return true;
+  }
   glm::dvec3 wallPoint;
   const WallMapGrid::Sample pixel = mapSample(px, py, wallPoint);
   if (!(pixel.alpha >= 0.5f)) return false;
-  if (eyeAtReference_) {
-    direction = centreDirection(pixel.direction);
-    return true;
-  }
-  // Fast stereo: from the eye towards W(p), p on the wall.
+  direction = centreDirection(pixel.direction);
+  return true;
+}
+
+bool CameraRays::fastDirection(double px, double py, glm::vec3& physicalDirection) const {
+  glm::dvec3 wallPoint;
+  const WallMapGrid::Sample pixel = mapSample(px, py, wallPoint);
+  if (!(pixel.alpha >= 0.5f)) return false;
+  // From the eye towards W(p), p on the wall.
   const glm::dvec3 eye = view_.eye_position;
   const glm::dvec3 target = reference_ + glm::length(wallPoint - reference_) *
                                              glm::normalize(glm::dvec3(pixel.direction));  // W(p)
-  direction = turn(glm::normalize(target - eye));
+  physicalDirection = glm::vec3(glm::normalize(target - eye));
   return true;
 }
 
@@ -138,18 +164,15 @@ WallMapGrid::Sample CameraRays::mapSample(double px, double py, glm::dvec3& wall
     wallPoint = view_.eye_position + toWall;
     return grid_->at(static_cast<float>(px), static_cast<float>(py));
   }
-  // Rows of the view matrix's rotation: the wall's right, up and normal (WallView::rayDirection).
-  const glm::dmat4& v = view_.view;
-  const glm::dvec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]),
-      normal(v[0][2], v[1][2], v[2][2]);
-  const double towardWall = glm::dot(toWall, normal);
+  // Where the override's ray meets the wall's plane (gridDirection's plane), in wall pixels.
+  const double towardWall = glm::dot(toWall, wallNormal_);
   const double t = towardWall < 0.0 ? -view_.nearDistance / towardWall : -1.0;
   wallPoint = view_.eye_position + (t > 0.0 ? t : 1.0) * toWall;
   if (t > 0.0) {
     const glm::dvec3 onWall = t * toWall;
     const Wall& wall = *view_.wall;
-    const double wx = (glm::dot(onWall, right) - view_.left) / (view_.right - view_.left) * wall.width;
-    const double wy = (view_.top - glm::dot(onWall, up)) / (view_.top - view_.bottom) * wall.height;
+    const double wx = (glm::dot(onWall, wallRight_) - view_.left) * pixelsPerMetreX_;
+    const double wy = (view_.top - glm::dot(onWall, wallUp_)) * pixelsPerMetreY_;
     if (wx >= 0.0 && wy >= 0.0 && wx <= wall.width && wy <= wall.height)
       return grid_->at(static_cast<float>(wx), static_cast<float>(wy));
   }
@@ -158,39 +181,57 @@ WallMapGrid::Sample CameraRays::mapSample(double px, double py, glm::dvec3& wall
 }
 
 bool CameraRays::gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const {
-  // Rows of the view matrix's rotation: the wall's right, up and normal (WallView::rayDirection).
-  const glm::dmat4& v = view_.view;
-  const glm::dvec3 right(v[0][0], v[1][0], v[2][0]), up(v[0][1], v[1][1], v[2][1]),
-      normal(v[0][2], v[1][2], v[2][2]);
-  const glm::dvec3 fromEye = reference_ - view_.eye_position;
-  const double towardWall = glm::dot(fromC, normal);
+  const double towardWall = glm::dot(fromC, wallNormal_);
   if (!(towardWall < 0.0)) return false;
-  const double t = (-view_.nearDistance - glm::dot(fromEye, normal)) / towardWall;
+  const double t = (-view_.nearDistance - cNormal_) / towardWall;
   if (!(t > 0.0)) return false;
-  const glm::dvec3 onWall = fromEye + t * fromC;  // relative to the eye
+  // Where c + t fromC meets the wall, relative to the eye, in wall pixels.
+  const double px = (cRight_ + t * glm::dot(fromC, wallRight_) - view_.left) * pixelsPerMetreX_;
+  const double py = (view_.top - (cUp_ + t * glm::dot(fromC, wallUp_))) * pixelsPerMetreY_;
   const Wall& wall = *view_.wall;
-  const double px = (glm::dot(onWall, right) - view_.left) / (view_.right - view_.left) * wall.width;
-  const double py = (view_.top - glm::dot(onWall, up)) / (view_.top - view_.bottom) * wall.height;
   if (!(px >= 0.0 && py >= 0.0 && px <= wall.width && py <= wall.height)) return false;
   direction = glm::normalize(
       glm::dvec3(grid_->at(static_cast<float>(px), static_cast<float>(py)).direction));
   return true;
 }
 
-bool CameraRays::tailOnly(const glm::dvec3& u, RayPath& path) const {
+float CameraRays::tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& offset) const {
+  constexpr float kUnbounded = std::numeric_limits<float>::infinity();
   const glm::dvec3 a = view_.eye_position - reference_;
   const double along = glm::dot(a, u);
   const glm::dvec3 perpendicular = a - along * u;
   const double h = glm::length(perpendicular);
+  // The angle between u and dir(e - c), atan2(h, along), at most kAsymptoteAngle: a line through
+  // c (curvedRay).
+  static const double tanAsymptote = std::tan(kAsymptoteAngle);
+  static const double sinAsymptote = std::sin(kAsymptoteAngle);
+  if (!(h > along * tanAsymptote)) return kUnbounded;
   // The curve's vertices lie between |e - c| and h / sin(kAsymptoteAngle) from c (curvedRay).
-  if (!(glm::length(a) < emptyRadius_ && h / std::sin(kAsymptoteAngle) < emptyRadius_)) return false;
-  if (!(std::atan2(h, along) > kAsymptoteAngle)) return false;  // on a line through c: curvedRay
-  const glm::dvec3 last = perpendicular + (h / std::tan(kAsymptoteAngle)) * u;  // relative to c
-  glm::dvec3 lastDirection, tail;
-  if (!gridDirection(last, lastDirection) || !gridDirection(u, tail)) return false;
-  path.vertexCount = 1;
-  path.vertices[0] = place(reference_ + glm::length(last) * lastDirection);
-  path.tail = turn(tail);
+  const double lastDistance = h / sinAsymptote;
+  const double reach = std::max(glm::length(a), lastDistance);
+  const glm::dvec3 last = perpendicular + (h / tanAsymptote) * u;  // relative to c
+  // Where the ray from c misses this wall (near its edges), the cube map itself (the grid
+  // reproduces it to ~1e-5 rad).
+  const auto mapDirection = [this](const glm::dvec3& fromC) {
+    glm::dvec3 mapped;
+    if (!gridDirection(fromC, mapped)) mapped = glm::normalize(warp_->direction(fromC));
+    return mapped;
+  };
+  const glm::dvec3 lastDirection = mapDirection(last), tailDirection = mapDirection(u);
+  offset = glm::vec3(lastDistance * lastDirection);  // |last| = h / sin(kAsymptoteAngle)
+  direction = glm::vec3(tailDirection);
+  // Rounded up: the float never claims a smaller ball than the curve needs.
+  return std::nextafter(static_cast<float>(reach), kUnbounded);
+}
+
+bool CameraRays::tailRay(double px, double py, glm::vec3& direction, glm::vec3& offset,
+                         float& reach) const {
+  glm::dvec3 wallPoint;
+  if (!(mapSample(px, py, wallPoint).alpha >= 0.5f)) return false;
+  // eye + toWall lies on the wall's plane (WallView::rayDirection, affine in px, py; an
+  // override's ray points the same way)
+  const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
+  reach = tail(glm::normalize(toWall), direction, offset);
   return true;
 }
 
@@ -205,20 +246,23 @@ void CameraRays::make(double px, double py, RayPath& path) const {
     path.lit = straightDirection(px, py, path.tail);
     return;
   }
-  glm::dvec3 wallPoint;
-  path.lit = mapSample(px, py, wallPoint).alpha >= 0.5f;
+  glm::vec3 direction, offset;
+  float reach = 0.0f;
+  path.lit = tailRay(px, py, direction, offset, reach);
   if (!path.lit) return;
-  const glm::dvec3 eye = view_.eye_position;
-  // eye + toWall lies on the wall (WallView::rayDirection, which is affine in px, py)
+  // The whole bent part lies in the empty ball: the tail alone (as the table packets trace it).
+  if (reach < emptyRadius_) {
+    path.vertices[0] = placeOffset(offset);
+    path.tail = centreDirection(direction);
+    return;
+  }
   const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
-  if (tailOnly(glm::normalize(toWall), path)) return;
   std::array<glm::dvec3, kMaxCurvedSegments + 2> vertices;
-  glm::dvec3 tail;
-  path.vertexCount =
-      curvedRay(*warp_, eye, glm::normalize(toWall), curvedSegments_, vertices.data(), tail,
-                emptyRadius_);
+  glm::dvec3 tailDirection;
+  path.vertexCount = curvedRay(*warp_, view_.eye_position, glm::normalize(toWall), curvedSegments_,
+                               vertices.data(), tailDirection, emptyRadius_);
   for (int i = 0; i < path.vertexCount; ++i) path.vertices[i] = place(vertices[i]);
-  path.tail = turn(tail);
+  path.tail = turn(tailDirection);
 }
 
 }  // namespace confvis::embree

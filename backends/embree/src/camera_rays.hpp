@@ -69,6 +69,22 @@ class CameraRays {
   // The farthest any curve's vertex lies from the warp's centre (beyond, every ray is straight).
   double curvedReach() const;
 
+  double emptyRadius() const { return emptyRadius_; }
+
+  // Fast stereo rays: the unit direction from the eye towards W(p), in the physical frame
+  // (before the camera; straightDirection turns it with centreDirection); false where unlit.
+  bool fastDirection(double px, double py, glm::vec3& physicalDirection) const;
+  // Exact stereo rays: the straight tail of the bent ray through (px, py) in the physical frame:
+  // its start relative to the warp's centre and its unit direction F(u), with `reach`, the
+  // farthest from c the curve bends (the eye's distance included): where the scene keeps beyond
+  // it (setEmptyRadius), the tail alone is traced (placed with placeOffset and
+  // centreDirection). Infinite reach: the curve needs curvedRay. False where unlit.
+  bool tailRay(double px, double py, glm::vec3& direction, glm::vec3& offset, float& reach) const;
+  // A point given relative to the warp's centre, placed by the camera (in float, as the table
+  // packets do: camera position + rotation x offset).
+  glm::vec3 placeOffset(const glm::vec3& offset) const { return placedCentre_ + rotationF_ * offset; }
+  const glm::vec3& placedCentre() const { return placedCentre_; }
+
   // Straight cameras trace one unbounded ray per sample, from origin(): plain, conformal centre
   // eye and fast stereo rays (exact stereo rays bend).
   bool straight() const { return !warp_ || eyeAtReference_ || stereoRays_ == StereoRays::Fast; }
@@ -98,10 +114,11 @@ class CameraRays {
   // (bilinear over samples half a map texel apart: within ~1e-5 rad of the cube map's lookup,
   // at a fraction of its cost); false where it meets the wall's plane outside the wall.
   bool gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const;
-  // Exact stereo rays whose whole bent part lies in the empty ball: the tail alone, from the
-  // curve's last vertex, both looked up in the grid (curvedRay's vertex and tail up to the
-  // grid's accuracy). False where the curve leaves the ball or a lookup misses the wall.
-  bool tailOnly(const glm::dvec3& unitDirection, RayPath& path) const;
+  // tailRay's tail for the unit physical direction u: its start W(last vertex) relative to c and
+  // direction F(u), both looked up in the grid (curvedRay's vertex and tail up to the grid's
+  // accuracy), in the cube map where the ray from c misses the wall. Returns the reach, infinite
+  // where the ray lies on a line through c (curvedRay).
+  float tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& offset) const;
   glm::vec3 turn(const glm::dvec3& physicalDirection) const;
   // The map at the wall point that the ray through (px, py) meets (`wallPoint`, physical
   // frame): the grid's sample of that wall pixel; for an override's ray that meets the wall's
@@ -115,9 +132,14 @@ class CameraRays {
   glm::dvec3 cameraPosition_;
   glm::dmat3 rotation_;
   glm::vec3 placedEye_;
+  glm::vec3 placedCentre_;  // the camera position: where the warp's centre is placed
   glm::mat3 rotationF_;
   // The same affine direction, turned by the camera, in float: plain rays need nothing else.
   AffineDirections plain_;
+  // gridDirection's wall plane, from the view matrix (WallView::rayDirection): the wall's right,
+  // up and normal, the eye-to-c offset along each, and wall pixels per metre across and down.
+  glm::dvec3 wallRight_, wallUp_, wallNormal_;
+  double cRight_ = 0.0, cUp_ = 0.0, cNormal_ = 0.0, pixelsPerMetreX_ = 0.0, pixelsPerMetreY_ = 0.0;
   const ConformalWarp* warp_ = nullptr;
   const WallMapGrid* grid_ = nullptr;
   StereoRays stereoRays_ = StereoRays::Exact;

@@ -1,17 +1,24 @@
 #pragma once
-// The conformal centre-eye directions of one image, one per camera sample: F(dir(p)) at every
-// sample position the tile renderer draws, read once from the WallMapGrid and kept across
-// frames, so a conformal frame does no map lookup at all (only a rotation by the virtual
-// camera, as a plain frame does). Unlit samples hold the zero vector.
+// The straight camera rays of one image, one per camera sample, kept across frames so that a
+// conformal frame does no map lookup at all (only the rotation and translation by the virtual
+// camera, as a plain frame does):
+//   - conformal centre eye: F(dir(p)) read from the WallMapGrid;
+//   - fast stereo rays: the direction from the eye towards W(p) (CameraRays::fastDirection);
+//   - exact stereo rays: the straight tail of the bent ray, its start relative to the warp's
+//     centre and its direction (CameraRays::tailRay), with each packet's reach: the farthest
+//     from c any of its curves bends, so that a render whose scene keeps farther than that
+//     (CameraRays::setEmptyRadius) traces the packet as straight rays from the table.
+// Unlit samples hold the zero direction. All in the physical frame, before the camera.
 //
 // Stored in the order the tile renderer reads it: tile by tile, within a tile sample by sample,
 // then its packets (blocks of 4 x 2 pixels, PacketSamples) row of blocks by row of blocks, each
 // as structure of arrays: 8 x, 8 y, 8 z (lanes in PacketSamples' order; zeros past the block's
-// pixels inside the tile). A frame streams the table once (12 bytes a sample, far beyond the
-// caches at full resolution), so each tile reads one contiguous block, and a packet loads its
-// three components as vectors.
+// pixels inside the tile), then, for tables with origins, 8 x, 8 y, 8 z of the origin. A frame
+// streams the table once (12 or 24 bytes a sample, far beyond the caches at full resolution),
+// so each tile reads one contiguous block, and a packet loads its components as vectors.
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -25,19 +32,34 @@ namespace confvis::embree {
 
 class DirectionTable {
  public:
-  // Samples job.width x job.height pixels x job.samplesPerPixel at samplePosition(job, ...),
-  // in tiles of job.tileSize.
+  // What one sample at wall-pixel position (px, py) holds: false = unlit (zero direction).
+  // `origin` (tables with origins only) relative to the warp's centre; `reach` (likewise): how
+  // far from c the sample's curve bends (infinity: the sample needs its whole curve traced).
+  using Sampler = std::function<bool(double px, double py, glm::vec3& direction,
+                                     glm::vec3& origin, float& reach)>;
+
+  // Conformal centre eye: F at job.width x job.height pixels x job.samplesPerPixel at
+  // samplePosition(job, ...), in tiles of job.tileSize.
   DirectionTable(const WallMapGrid& grid, const TileJob& job);
+  // Any straight rays, one per sample, from `sampler`; `withOrigins`: each its own origin.
+  DirectionTable(const TileJob& job, const Sampler& sampler, bool withOrigins);
 
   // The packet of sample `sample` of the block whose top-left pixel is (x, y) (a tile's corner
-  // plus multiples of the block size): unnormalised F (as WallMapGrid::at returns it), or zero
-  // where the map is unlit or past the tile, x components at [0, 8), y at [8, 16), z at [16, 24).
+  // plus multiples of the block size): the direction's x components at [0, 8), y at [8, 16), z at
+  // [16, 24), then (withOrigins) the origin's likewise at [24, 48); zeros where unlit or past the
+  // tile.
   const float* packet(int x, int y, int sample) const {
-    return &components_[3 * kPacketSize * packetIndex(x, y, sample)];
+    return &components_[stride() * packetIndex(x, y, sample)];
   }
+  // Tables with origins: the farthest from c any curve of the packet bends.
+  float reach(int x, int y, int sample) const { return reach_[packetIndex(x, y, sample)]; }
+  bool hasOrigins() const { return withOrigins_; }
   std::size_t sampleCount() const { return samples_; }
+  std::size_t bytes() const { return components_.size() * sizeof(float); }
 
  private:
+  std::size_t stride() const { return (withOrigins_ ? 6 : 3) * kPacketSize; }
+  void fill(const TileJob& job, const Sampler& sampler);
   // The packet holding sample `sample` of pixel (x, y), and the pixel's lane in it.
   std::size_t packetIndex(int x, int y, int sample) const {
     const int tileX = x / tileSize_, tileY = y / tileSize_;
@@ -61,9 +83,11 @@ class DirectionTable {
   }
 
   int width_ = 0, height_ = 0, samplesPerPixel_ = 1, tileSize_ = 1, tilesAcross_ = 1;
+  bool withOrigins_ = false;
   std::vector<std::size_t> tileFirstPacket_;  // per tile (row-major), its first packet
   std::size_t samples_ = 0;
   std::vector<float> components_;
+  std::vector<float> reach_;  // per packet, tables with origins only
 };
 
 }  // namespace confvis::embree

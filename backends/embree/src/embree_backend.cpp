@@ -29,35 +29,79 @@ struct EmbreeBackend::Impl {
                               const Wall& wall, double scale) {
     const std::uint64_t key = gridKey(warp, mapFingerprint, wall, scale);
     auto found = grids.find(key);
-    if (found != grids.end()) return *found->second;
+    if (found != grids.end()) {
+      found->second.lastUsed = renders;
+      return *found->second.grid;
+    }
     if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
     auto grid = std::make_unique<WallMapGrid>(warp, wall, spacingFor(warp, wall, scale));
-    return *grids.emplace(key, std::move(grid)).first->second;
+    return *grids.emplace(key, GridEntry{std::move(grid), renders}).first->second.grid;
   }
 
-  // The centre-eye directions of one image (see DirectionTable), or null. Built on the second
-  // render of the same image: a one-shot render would pay a full map lookup per sample for the
-  // table on top of the frame. Bounded to kMaxTableSamples in all; `buildSeconds` accumulates
-  // the build time.
-  const embree::DirectionTable* directionTable(const WallMapGrid& grid, std::uint64_t gridKey,
-                                               const embree::TileJob& job, double& buildSeconds) {
+  // Gives back the grids and tables of images not rendered in the last kIdleRenders renders:
+  // a walk that swaps in a new map every few seconds would otherwise keep every old map's
+  // tables, up to kMaxTableBytes (found by tools/soak/walk_soak.py: +0.7 MB per re-bake).
+  void dropIdleEntries() {
+    const auto idle = [&](std::uint64_t lastUsed) { return renders - lastUsed > kIdleRenders; };
+    std::erase_if(grids, [&](const auto& item) { return idle(item.second.lastUsed); });
+    std::erase_if(tables, [&](const auto& item) {
+      if (!idle(item.second.lastUsed)) return false;
+      if (item.second.table) tableBytes -= item.second.table->bytes();
+      return true;
+    });
+  }
+
+  // The straight rays of one image (see DirectionTable), or null: the centre eye's directions,
+  // or a stereo eye's (fast rays' directions, exact rays' tails). Built on the second render of
+  // the same image (the same map, wall, eye, output size and samples): a one-shot render, or a
+  // tracked head that moves every frame, would pay a full map lookup per sample for the table
+  // on top of the frame. Bounded to kMaxTableBytes in all; `buildSeconds` accumulates the build
+  // time.
+  const embree::DirectionTable* rayTable(const WallMapGrid& grid, std::uint64_t gridKey,
+                                         const glm::dvec3& reference,
+                                         const embree::CameraRays& rays, const WallView& view,
+                                         StereoRays stereoRays, const embree::TileJob& job,
+                                         double& buildSeconds) {
+    const bool centre = rays.centreEyeConformal();
+    const bool withOrigins = !centre && stereoRays == StereoRays::Exact;
     std::uint64_t key = gridKey;
-    for (int value : {job.width, job.height, job.samplesPerPixel, static_cast<int>(job.seed)})
+    for (int value : {job.width, job.height, job.samplesPerPixel, static_cast<int>(job.seed),
+                      centre ? 0 : 1 + static_cast<int>(stereoRays)})
       key = mixHash(key, static_cast<double>(value));
+    if (!centre)  // the eye's place relative to the warp's centre decides the rays
+      for (int i = 0; i < 3; ++i) key = mixHash(key, view.eye_position[i] - reference[i]);
     TableEntry& entry = tables[key];
+    entry.lastUsed = renders;
     if (entry.table || ++entry.renders < 2) return entry.table.get();
-    const std::size_t samples = static_cast<std::size_t>(job.width) *
-                                static_cast<std::size_t>(job.height) *
-                                static_cast<std::size_t>(job.samplesPerPixel);
-    if (samples > kMaxTableSamples) return nullptr;
-    if (tableSamples + samples > kMaxTableSamples) {  // make room: drop every built table
+    const std::size_t bytes = static_cast<std::size_t>(job.width) *
+                              static_cast<std::size_t>(job.height) *
+                              static_cast<std::size_t>(job.samplesPerPixel) *
+                              (withOrigins ? 6 : 3) * sizeof(float);
+    if (bytes > kMaxTableBytes) return nullptr;
+    if (tableBytes + bytes > kMaxTableBytes) {  // make room: drop every built table
       for (auto& [k, other] : tables) other.table.reset();
-      tableSamples = 0;
+      tableBytes = 0;
     }
     const auto start = std::chrono::steady_clock::now();
-    entry.table = std::make_unique<embree::DirectionTable>(grid, job);
+    if (centre) {
+      entry.table = std::make_unique<embree::DirectionTable>(grid, job);
+    } else if (withOrigins) {
+      entry.table = std::make_unique<embree::DirectionTable>(
+          job,
+          [&rays](double px, double py, glm::vec3& direction, glm::vec3& origin, float& reach) {
+            return rays.tailRay(px, py, direction, origin, reach);
+          },
+          true);
+    } else {
+      entry.table = std::make_unique<embree::DirectionTable>(
+          job,
+          [&rays](double px, double py, glm::vec3& direction, glm::vec3&, float&) {
+            return rays.fastDirection(px, py, direction);
+          },
+          false);
+    }
     buildSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    tableSamples += samples;
+    tableBytes += entry.table->bytes();
     return entry.table.get();
   }
 
@@ -77,12 +121,19 @@ struct EmbreeBackend::Impl {
     return key;
   }
 
-  // About 48M samples (576 MB): five 1920^2 walls at 2 spp, or one frame's worth of a large
-  // display at 1 spp.
-  static constexpr std::size_t kMaxTableSamples = std::size_t{48} << 20;
+  // 576 MB: 48M centre-eye samples (five 1920^2 walls at 2 spp, or one frame's worth of a large
+  // display at 1 spp), or 24M exact stereo samples (five 1920^2 walls' two eyes at 1 spp hold
+  // 37M: over the cap, so full-resolution exact stereo computes its tails every frame).
+  static constexpr std::size_t kMaxTableBytes = std::size_t{576} << 20;
+  static constexpr std::uint64_t kIdleRenders = 8;
   struct TableEntry {
     int renders = 0;
+    std::uint64_t lastUsed = 0;  // `renders` of Impl when last looked up
     std::unique_ptr<embree::DirectionTable> table;
+  };
+  struct GridEntry {
+    std::unique_ptr<WallMapGrid> grid;
+    std::uint64_t lastUsed = 0;
   };
 
   EmbreeOptions options;
@@ -90,9 +141,10 @@ struct EmbreeBackend::Impl {
       options.baselineShading ? embree::SimdLevel::Sse2 : embree::detectedSimdLevel();
   EmbreeDevice device;
   std::unique_ptr<EmbreeScene> scene;
-  std::map<std::uint64_t, std::unique_ptr<WallMapGrid>> grids;
+  std::map<std::uint64_t, GridEntry> grids;
   std::map<std::uint64_t, TableEntry> tables;
-  std::size_t tableSamples = 0;  // held by `tables`
+  std::size_t tableBytes = 0;  // held by `tables`
+  std::uint64_t renders = 0;   // renderInto calls so far
 };
 
 EmbreeBackend::EmbreeBackend(const EmbreeOptions& options)
@@ -128,6 +180,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
   result = RenderResult{};
   std::optional<ConformalWarp> warp;
   std::uint64_t mapFingerprint = 0;
+  ++impl_->renders;
   const auto setupStart = std::chrono::steady_clock::now();
   if (settings.mode == RenderMode::Conformal) {
     warp.emplace(*map);
@@ -135,8 +188,9 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     for (const PlannedImage& image : plan.images)
       impl_->wallGrid(*warp, mapFingerprint, *image.view.wall, settings.resolutionScale);
   }
-  double mapBuildSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count();
+  double mapBuildSeconds =  // a plain frame builds no map tables
+      warp ? std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count()
+           : 0.0;
   std::uint64_t tableSamples = 0;  // camera samples whose map direction came from a table
   double tableBuildSeconds = 0.0;  // inside the render loop, but not rendering
 
@@ -164,7 +218,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                         static_cast<std::size_t>(impl_->options.threads));
 
   embree::RayCounters counters;
-  nlohmann::json perImage = nlohmann::json::array();
+  EmbreeFrameStats stats;
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < plan.images.size(); ++i) {
     const PlannedImage& planned = plan.images[i];
@@ -179,9 +233,11 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     if (!rays.straight()) {
       // Exact stereo: the curves bend within the ball around the warp's centre that the scene
       // keeps out of (a margin for float rounding); only what leaves it is traced.
+      // The query's radius caps its answer: a little beyond the reach, so that a scene keeping
+      // farther than every curve bends gets a ball that holds them all (the margins below).
       const double reach = rays.curvedReach();
       const double empty = embree::clearance(scene, glm::vec3(settings.camera.position),
-                                             static_cast<float>(reach));
+                                             static_cast<float>(1.01 * reach));
       rays.setEmptyRadius((1.0 - 1e-4) * empty - 1e-6 * reach);
     }
     job.width = planned.width;
@@ -190,10 +246,12 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                        static_cast<double>(wall.height) / planned.height};
     job.seed = static_cast<std::uint32_t>(planned.wallIndex * 3 + static_cast<int>(planned.eye));
     job.directions = nullptr;
-    if (rays.centreEyeConformal() && !rays.overridden()) {
-      job.directions = impl_->directionTable(
-          *grid, Impl::gridKey(*warp, mapFingerprint, wall, settings.resolutionScale), job,
-          tableBuildSeconds);
+    // An override's pixel is not the wall's pixel at the same position: no per-wall-pixel table.
+    if (warp && !rays.overridden()) {
+      job.directions = impl_->rayTable(
+          *grid, Impl::gridKey(*warp, mapFingerprint, wall, settings.resolutionScale),
+          warp->reference(), rays,
+          planned.view, settings.stereoRays, job, tableBuildSeconds);
       if (job.directions) tableSamples += job.directions->sampleCount();
     }
     WallImage out;
@@ -204,41 +262,37 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     embree::renderTiles(scene, rays, job, out.image, progress, counters);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - imageStart).count();
-    perImage.push_back({{"wall", out.wall},
-                        {"eye", eyeName(out.eye)},
-                        {"width", job.width},
-                        {"height", job.height},
-                        {"seconds", seconds}});
+    stats.images.push_back({out.wall, out.eye, job.width, job.height, seconds});
     result.images.push_back(std::move(out));
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
       tableBuildSeconds;
   mapBuildSeconds += tableBuildSeconds;
+  impl_->dropIdleEntries();
   progress.finish();
   impl_->device.check("rendering");
 
-  const auto cameraRays = counters.camera.load(), occlusionRays = counters.occlusion.load();
-  result.stats = {{"backend", name()},
-                  {"threads", impl_->options.threads > 0
-                                  ? impl_->options.threads
-                                  : tbb::this_task_arena::max_concurrency()},
-                  {"scene_triangles", scene.scene().triangleCount()},
-                  {"bvh_build_seconds", scene.buildSeconds()},
-                  {"render_seconds", seconds},
-                  {"map_build_seconds", mapBuildSeconds},
-                  {"direction_table_samples", tableSamples},
-                  {"camera_rays", cameraRays},
-                  {"occlusion_rays", occlusionRays},
-                  {"retraced_rays", counters.retraced.load()},
-                  {"shading_simd", embree::simdName(impl_->simd)},
-                  {"rays_per_second",
-                   seconds > 0.0 ? static_cast<double>(cameraRays + occlusionRays) / seconds : 0.0},
-                  {"images", perImage}};
+  stats.threads = impl_->options.threads > 0 ? impl_->options.threads
+                                              : tbb::this_task_arena::max_concurrency();
+  stats.bvhBuildSeconds = scene.buildSeconds();
+  stats.mapBuildSeconds = mapBuildSeconds;
+  stats.directionTableSamples = tableSamples;
+  stats.cachedDirectionTableBytes = impl_->tableBytes;
+  stats.cachedWallGrids = impl_->grids.size();
+  stats.cameraRays = counters.camera.load();
+  stats.occlusionRays = counters.occlusion.load();
+  stats.retracedRays = counters.retraced.load();
+  stats.shadingSimd = embree::simdName(impl_->simd);
+  stats.raysPerSecond =
+      seconds > 0.0 ? static_cast<double>(stats.cameraRays + stats.occlusionRays) / seconds : 0.0;
   if (settings.mode == RenderMode::Conformal && plan.hasOffCentreEyes)
-    result.stats["curved_ray_segments"] = settings.stereoRays == StereoRays::Exact
-                                              ? impl_->options.curvedRaySegments
-                                              : 1;
+    stats.curvedRaySegments =
+        settings.stereoRays == StereoRays::Exact ? impl_->options.curvedRaySegments : 1;
+  result.stats.backend = name();
+  result.stats.seconds = seconds;
+  result.stats.sceneTriangles = scene.scene().triangleCount();
+  result.stats.embree = std::move(stats);
 }
 
 }  // namespace confvis

@@ -28,8 +28,9 @@ struct TileJob {
   int tileSize = 16;
   std::uint32_t seed = 0;             // distinguishes images (wall, eye) in the random streams
   ShadingOptions shading;
-  // Conformal centre eye: the map directions of every sample, precomputed (see DirectionTable);
-  // null = the CameraRays look the map up.
+  // Conformal rays of every sample, precomputed (see DirectionTable): the centre eye's map
+  // directions, fast stereo rays' directions, or exact stereo rays' tails; null = the
+  // CameraRays look the map up.
   const DirectionTable* directions = nullptr;
 };
 

@@ -1,6 +1,7 @@
-// The per-image direction table (conformal centre eye): built on the second render of the same
-// image, it must give exactly the pixels of a render that looks the map up per sample, and be
-// skipped where it cannot apply (stereo eyes, plain mode).
+// The per-image ray tables (conformal centre eye, fast and exact stereo eyes): built on the second
+// render of the same image, they must give exactly the pixels of a render that looks the map up
+// per sample, and be skipped where they cannot apply (plain mode, a moved head, exact curves
+// that bend near the scene).
 #include <gtest/gtest.h>
 
 #include "confvis/backends/analytic_maps.hpp"
@@ -10,7 +11,7 @@ namespace confvis {
 namespace {
 
 std::uint64_t tableSamples(const RenderResult& result) {
-  return result.stats.at("direction_table_samples").get<std::uint64_t>();
+  return result.stats.embree.value().directionTableSamples;
 }
 
 TEST(EmbreeDirectionTable, SecondRenderReadsTheTableAndDrawsTheSamePixels) {
@@ -43,18 +44,84 @@ TEST(EmbreeDirectionTable, SecondRenderReadsTheTableAndDrawsTheSamePixels) {
   }
 }
 
-TEST(EmbreeDirectionTable, StereoEyesAndPlainRendersUseNoTable) {
-  const DisplayConfig config = test::shippedConfig("cave5");
-  const RetargetMap dilation = ceilinglessDilationMap(1.5, 128);
-  EmbreeBackend& backend = test::checkerSphereBackend();
+RenderSettings stereoSettings(StereoRays rays) {
   RenderSettings stereo;
   stereo.mode = RenderMode::Conformal;
   stereo.eyes = {Eye::Left, Eye::Right};
-  stereo.resolutionScale = test::scaleFor(24);
-  for (int i = 0; i < 2; ++i) EXPECT_EQ(tableSamples(backend.render(config, &dilation, stereo)), 0u);
-  RenderSettings plain = stereo;
+  stereo.stereoRays = rays;
+  stereo.resolutionScale = test::scaleFor(42);
+  return stereo;
+}
+
+void expectSamePixels(const RenderResult& a, const RenderResult& b) {
+  ASSERT_EQ(a.images.size(), b.images.size());
+  for (std::size_t i = 0; i < a.images.size(); ++i) {
+    SCOPED_TRACE(a.images[i].wall + " " + eyeName(a.images[i].eye));
+    EXPECT_EQ(a.images[i].image.pixels, b.images[i].image.pixels);
+  }
+}
+
+// Stereo eyes keep a table of their own straight rays (fast rays: the directions; exact rays:
+// the tails beyond the bend, where the checker-sphere's 10 m keep beyond every curve's reach):
+// the same pixels as the per-sample rays, and a moved head gets no stale table.
+TEST(EmbreeDirectionTable, StereoEyesReadTheirOwnTableFromTheSecondRender) {
+  const DisplayConfig config = test::shippedConfig("cave5");
+  const RetargetMap dilation = ceilinglessDilationMap(1.5, 128);
+  EmbreeBackend backend;
+  backend.setScene(builtinScene("checker-sphere"));
+  for (StereoRays rays : {StereoRays::Fast, StereoRays::Exact}) {
+    SCOPED_TRACE(stereoRaysName(rays));
+    RenderSettings stereo = stereoSettings(rays);
+    const RenderResult first = backend.render(config, &dilation, stereo);
+    const RenderResult second = backend.render(config, &dilation, stereo);
+    EXPECT_EQ(tableSamples(first), 0u);
+    std::uint64_t samples = 0;
+    for (const WallImage& image : second.images) samples += image.image.pixelCount();
+    EXPECT_EQ(tableSamples(second), samples);
+    expectSamePixels(first, second);
+    // The head 2 cm to the right: the eyes' rays change, their tables must not be reused.
+    stereo.head.position += glm::dvec3(0.02, 0.0, 0.0);
+    const RenderResult moved = backend.render(config, &dilation, stereo);
+    EXPECT_EQ(tableSamples(moved), 0u);
+    EXPECT_NE(moved.images[0].image.pixels, second.images[0].image.pixels);
+    expectSamePixels(moved, backend.render(config, &dilation, stereo));  // its own table
+  }
+}
+
+// Where the scene comes within the curves' reach (a square 0.4 m from c), exact stereo packets
+// whose curves bend near it are marched as curves, not read as tails from the table (a tail
+// starts 8 m out and would miss the square).
+TEST(EmbreeDirectionTable, ExactStereoTablesGiveWayToCurvesNearTheScene) {
+  const DisplayConfig config = test::shippedConfig("cave5");
+  const RetargetMap dilation = ceilinglessDilationMap(1.5, 128);
+  Scene scene = builtinScene("checker-sphere");
+  scene.materials.push_back({"paint", glm::vec4(1, 1, 0, 1), -1});
+  scene.meshes.push_back(
+      test::facingSquare(0.4 * stereographicDilation({0, 0, -1}, 1.5), glm::dvec3(0.0), 0.2));
+  scene.meshes.back().material = static_cast<int>(scene.materials.size()) - 1;
+  EmbreeBackend backend;
+  backend.setScene(scene);
+  RenderSettings stereo = stereoSettings(StereoRays::Exact);
+  stereo.walls = {"front"};
+  const RenderResult first = backend.render(config, &dilation, stereo);
+  const RenderResult second = backend.render(config, &dilation, stereo);
+  EXPECT_GT(tableSamples(second), 0u);
+  expectSamePixels(first, second);
+  std::size_t yellow = 0;
+  const ImageRGBA& left = second.images[0].image;
+  for (std::size_t i = 0; i < left.pixelCount(); ++i)
+    yellow += left.pixels[4 * i] > 0.9f && left.pixels[4 * i + 1] > 0.9f &&
+              left.pixels[4 * i + 2] < 0.1f;
+  EXPECT_GT(yellow, 20u) << "the square is not in view";
+}
+
+TEST(EmbreeDirectionTable, PlainRendersUseNoTable) {
+  const DisplayConfig config = test::shippedConfig("cave5");
+  EmbreeBackend& backend = test::checkerSphereBackend();
+  RenderSettings plain;
   plain.mode = RenderMode::Plain;
-  plain.eyes = {Eye::Center};
+  plain.eyes = {Eye::Left, Eye::Right};
+  plain.resolutionScale = test::scaleFor(24);
   for (int i = 0; i < 2; ++i) EXPECT_EQ(tableSamples(backend.render(config, nullptr, plain)), 0u);
 }
 

@@ -47,7 +47,7 @@ TEST(EmbreeRenderInto, RendersOverThePreviousFramesStorageWithRendersPixels) {
   ASSERT_EQ(frame.images.size(), storage.size());
   for (std::size_t i = 0; i < storage.size(); ++i)
     EXPECT_EQ(frame.images[i].image.pixels.data(), storage[i]) << frame.images[i].wall;
-  EXPECT_GT(frame.stats["camera_rays"].get<double>(), 0.0);
+  EXPECT_GT(static_cast<double>(frame.stats.embree.value().cameraRays), 0.0);
 
   // Another size: new images of that size, still render()'s pixels.
   const RenderSettings smaller = settingsAt(RenderMode::Plain, 24);

@@ -53,8 +53,8 @@ TEST(EmbreeSimd, BaselineAndDefaultShadingRenderIdenticalPixels) {
     settings.ambientOcclusion = true;
     const RenderResult a = baseline.render(config, nullptr, settings);
     const RenderResult b = standard.render(config, nullptr, settings);
-    EXPECT_EQ(a.stats["shading_simd"], "sse2");
-    if (b.stats["shading_simd"] != "avx2")
+    EXPECT_EQ(a.stats.embree.value().shadingSimd, "sse2");
+    if (b.stats.embree.value().shadingSimd != "avx2")
       GTEST_SKIP() << "no AVX2 here: both renders ran the baseline build";
     expectIdenticalPixels(a, b);
     // The painted square is in view (red = 2 green = 4 blue), so untextured lanes are compared.

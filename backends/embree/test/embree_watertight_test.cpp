@@ -29,7 +29,7 @@ TEST(EmbreeWatertight, NoPixelSlipsThroughTheClosedSphere) {
     settings.resolutionScale = test::scaleFor(pixels);
     const RenderResult plain = backend.render(config, nullptr, settings);
     EXPECT_EQ(uncoveredPixels(plain), 0u);
-    retraced += plain.stats.at("retraced_rays").get<std::uint64_t>();
+    retraced += plain.stats.embree.value().retracedRays;
     settings.mode = RenderMode::Conformal;
     const RetargetMap identity = RetargetMap::identity(128);
     EXPECT_EQ(uncoveredPixels(backend.render(config, &identity, settings)), 0u);
@@ -47,8 +47,8 @@ TEST(EmbreeWatertight, RaysIntoEmptySpaceAreNotRetraced) {
   settings.mode = RenderMode::Plain;
   settings.resolutionScale = test::scaleFor(64);
   const RenderResult result = backend.render(test::shippedConfig("cave5"), nullptr, settings);
-  const auto retraced = result.stats.at("retraced_rays").get<std::uint64_t>();
-  const auto rays = result.stats.at("camera_rays").get<std::uint64_t>();
+  const auto retraced = result.stats.embree.value().retracedRays;
+  const auto rays = result.stats.embree.value().cameraRays;
   EXPECT_LT(retraced * 50, rays);
   std::size_t covered = 0;
   test::coverageCentroid(test::imageOf(result, "front", Eye::Center).image, &covered);

@@ -23,6 +23,22 @@ constexpr int kQueues = 4;
 
 }  // namespace
 
+PrepassThresholds prepassThresholds(const std::vector<glm::vec4>& viewParams,
+                                    const std::vector<ErrorWall>& errorWalls, bool splitAlongCut,
+                                    bool snapCutToRim) {
+  PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, splitAlongCut, snapCutToRim, {}};
+  for (const glm::vec4& params : viewParams) {
+    if (params.w != 0.0f) {  // tessellation on
+      thresholds.maxErrorAngle = std::min(thresholds.maxErrorAngle, params.x);
+      thresholds.maxSegmentAngle = params.y;
+    }
+    thresholds.minGap = std::min(thresholds.minGap, params.z);
+    thresholds.maxGap = std::max(thresholds.maxGap, params.z);
+  }
+  if (thresholds.maxErrorAngle < 1e30f) thresholds.errorWalls = errorWalls;
+  return thresholds;
+}
+
 ConformalPrepass::ConformalPrepass(VulkanContext& context, const Pipelines& pipelines)
     : context_(context), pipelines_(pipelines) {}
 

@@ -48,6 +48,13 @@ struct PrepassThresholds {
   bool operator==(const PrepassThresholds&) const = default;
 };
 
+// The thresholds for a frame whose views have these View::params (x: bend error, y: segment
+// angle, z: cut gap, radians; w: 1 to tessellate): the strictest wall's, so that no wall needs
+// more than the flat list gives. The frame renderer and the bring-your-own step share it.
+PrepassThresholds prepassThresholds(const std::vector<glm::vec4>& viewParams,
+                                    const std::vector<ErrorWall>& errorWalls, bool splitAlongCut,
+                                    bool snapCutToRim);
+
 class ConformalPrepass {
  public:
   ConformalPrepass(VulkanContext& context, const Pipelines& pipelines);

@@ -79,19 +79,21 @@ DeviceKind kindOf(VkPhysicalDeviceType type) {
   }
 }
 
+std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device) {
+  const std::vector<VkQueueFamilyProperties> families = queueFamilies(device);
+  for (std::uint32_t i = 0; i < families.size(); ++i)
+    if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) return i;
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<VkQueueFamilyProperties> queueFamilies(VkPhysicalDevice device) {
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
   return families;
-}
-
-std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device) {
-  const std::vector<VkQueueFamilyProperties> families = queueFamilies(device);
-  for (std::uint32_t i = 0; i < families.size(); ++i)
-    if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) return i;
-  return std::nullopt;
 }
 
 DeviceCapabilities capabilitiesOf(VkPhysicalDevice device) {
@@ -136,8 +138,6 @@ DeviceCapabilities capabilitiesOf(VkPhysicalDevice device) {
   return caps;
 }
 
-}  // namespace
-
 std::vector<DeviceCapabilities> queryDevices(VkInstance instance,
                                              std::vector<VkPhysicalDevice>* handles) {
   std::uint32_t count = 0;
@@ -166,41 +166,6 @@ VulkanContext::VulkanContext(const ContextOptions& options)
     createDevice(options);
   } catch (...) {
     release();  // the destructor does not run for a half-built object
-    throw;
-  }
-}
-
-VulkanContext::VulkanContext(const VulkanDeviceHandles& handles) : ownsDevice_(false) {
-  if (!handles.instance || !handles.physicalDevice || !handles.device || !handles.queue)
-    throw Error(ErrorCode::DeviceUnsupported,
-                "Vulkan backend on an application's device: a null instance, physical device, "
-                "device or queue handle");
-  instance_ = handles.instance;
-  physicalDevice_ = handles.physicalDevice;
-  device_ = handles.device;
-  queue_ = handles.queue;
-  queueFamily_ = handles.queueFamily;
-  capabilities_ = capabilitiesOf(physicalDevice_);
-  const std::vector<VkQueueFamilyProperties> families = queueFamilies(physicalDevice_);
-  if (queueFamily_ >= families.size() || !(families[queueFamily_].queueFlags & VK_QUEUE_GRAPHICS_BIT))
-    throw Error(ErrorCode::DeviceUnsupported,
-                "Vulkan backend on an application's device: queue family " +
-                    std::to_string(queueFamily_) + " of '" + capabilities_.name +
-                    "' is not a graphics queue family");
-  const std::vector<std::string> missing = missingRequirements(capabilities_);
-  if (!missing.empty()) {
-    std::string list;
-    for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
-    throw Error(ErrorCode::DeviceUnsupported, "Vulkan device '" + capabilities_.name +
-                                                  "' lacks what confvis renders with: " + list);
-  }
-  vkGetPhysicalDeviceProperties(physicalDevice_, &properties_);
-  vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memory_);
-  timestampValidBits_ = families[queueFamily_].timestampValidBits;
-  try {
-    createPoolAndFence();
-  } catch (...) {
-    release();
     throw;
   }
 }
@@ -303,10 +268,10 @@ void VulkanContext::createDevice(const ContextOptions& options) {
   info.ppEnabledExtensionNames = options.deviceExtensions.data();
   check(vkCreateDevice(physicalDevice_, &info, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
-  createPoolAndFence();
+  createCommandPool();
 }
 
-void VulkanContext::createPoolAndFence() {
+void VulkanContext::createCommandPool() {
   VkCommandPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   poolInfo.flags =
       VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -319,30 +284,20 @@ void VulkanContext::createPoolAndFence() {
 VulkanContext::~VulkanContext() { release(); }
 
 void VulkanContext::release() noexcept {
-  if (!ownsDevice_) {  // the application's device: only what this context made goes
-    if (device_) {
-      vkQueueWaitIdle(queue_);
-      if (fence_) vkDestroyFence(device_, fence_, nullptr);
-      if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
-    }
-    fence_ = VK_NULL_HANDLE;
-    commandPool_ = VK_NULL_HANDLE;
-    device_ = VK_NULL_HANDLE;
-    instance_ = VK_NULL_HANDLE;
-    return;
-  }
   if (device_) {
-    vkDeviceWaitIdle(device_);
+    // An application's device: its other queues may be busy on other threads (vkDeviceWaitIdle
+    // needs them all); this context's own submissions were waited for.
+    if (ownsDevice_) vkDeviceWaitIdle(device_);
     if (fence_) vkDestroyFence(device_, fence_, nullptr);
     if (commandPool_) vkDestroyCommandPool(device_, commandPool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
+    if (ownsDevice_) vkDestroyDevice(device_, nullptr);
   }
   if (messenger_) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
     if (destroy) destroy(instance_, messenger_, nullptr);
   }
-  if (instance_) vkDestroyInstance(instance_, nullptr);
+  if (instance_ && ownsDevice_) vkDestroyInstance(instance_, nullptr);  // else the application's
   fence_ = VK_NULL_HANDLE;
   commandPool_ = VK_NULL_HANDLE;
   device_ = VK_NULL_HANDLE;

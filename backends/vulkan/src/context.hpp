@@ -10,6 +10,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include "confvis/backends/vulkan/byo_device.hpp"
 #include "confvis/backends/vulkan/device_requirements.hpp"
 #include "confvis/backends/vulkan/external_device.hpp"
 
@@ -29,6 +30,10 @@ struct ContextOptions {
   bool requireRendering = true;
 };
 
+// One device's capabilities and queue families.
+DeviceCapabilities capabilitiesOf(VkPhysicalDevice device);
+std::vector<VkQueueFamilyProperties> queueFamilies(VkPhysicalDevice device);
+
 // The capabilities of every device the instance reports, in its order.
 std::vector<DeviceCapabilities> queryDevices(VkInstance instance,
                                              std::vector<VkPhysicalDevice>* handles = nullptr);
@@ -40,10 +45,14 @@ VkInstance createPlainInstance();
 class VulkanContext {
  public:
   explicit VulkanContext(const ContextOptions& options);
-  // On an application's instance and device (external_device.hpp): owns neither, makes only
-  // its command pool and fence. Error(DeviceUnsupported) for a null handle or a device that
-  // lacks a rendering requirement.
+  // On an application's device and queue (context_adopted.cpp): owns neither the device nor
+  // the instance, makes only its command pool and fence, and waits for nothing when destroyed
+  // (its own submissions were waited for; the application's other queues may be busy). The
+  // backend rendering on the device (external_device.hpp): the instance too, and every
+  // rendering requirement of the device.
   explicit VulkanContext(const VulkanDeviceHandles& handles);
+  // The same for the byo_* helpers (byo_device.hpp): no instance, no rendering requirement.
+  explicit VulkanContext(const AppDevice& app);
   ~VulkanContext();
   VulkanContext(const VulkanContext&) = delete;
   VulkanContext& operator=(const VulkanContext&) = delete;
@@ -79,7 +88,9 @@ class VulkanContext {
   void createInstance(const ContextOptions& options);
   void pickDevice(const ContextOptions& options);
   void createDevice(const ContextOptions& options);
-  void createPoolAndFence();
+  // Both adopting constructors: `forRendering` as the VulkanDeviceHandles one.
+  VulkanContext(const VulkanDeviceHandles& handles, bool forRendering);
+  void createCommandPool();  // and the fence: for submitAndWait
   void release() noexcept;
 
   std::function<void(const std::string&)> onMessage_;

@@ -9,6 +9,7 @@
 
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/vulkan/warp_interface.hpp"
+#include "map_images.hpp"
 #include "vk_check.hpp"
 
 namespace confvis::vulkan {
@@ -108,21 +109,9 @@ void FrameRenderer::uploadMap(const RetargetMap& map) {
   if (geomMap_.get() != VK_NULL_HANDLE && hash == mapHash_) return;
   // The ray map goes with it (the pre-pass's rim: where its alpha ends): a map is told by its
   // geom texels and reference point, as the bake makes both maps together.
-  const std::vector<float> data = geomMapUploadData(map);  // validates the map
-  const std::vector<float> coverage = rayMapUploadData(map);
-  const auto cubeImage = [&](int faceSize) {
-    ImageSpec spec;
-    spec.format = kGeomMapFormat;
-    spec.width = spec.height = static_cast<std::uint32_t>(faceSize);
-    spec.layers = 6;
-    spec.cube = true;
-    spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    return Image(context_, spec);
-  };
-  geomMap_ = cubeImage(map.geom.faceSize);
-  uploadFloatImage(context_, geomMap_, data.data());
-  coverageMap_ = cubeImage(map.ray.faceSize);
-  uploadFloatImage(context_, coverageMap_, coverage.data());
+  MapImages images = uploadMapImages(context_, map);  // validates the map
+  geomMap_ = std::move(images.geom);
+  coverageMap_ = std::move(images.coverage);
   writeImageDescriptor(context_.device(), warpSet_, kWarpBinding, warpSampler_.get(),
                        geomMap_.view());
   writeImageDescriptor(context_.device(), warpSet_, kCoverageBinding, warpSampler_.get(),
@@ -281,18 +270,10 @@ void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
   if (conformal) uploadMap(*map);
   uploadFrame(plan);
   if (conformal) {
-    // Thresholds of the strictest wall, so that no wall needs more than the flat list gives.
-    PrepassThresholds thresholds{1e30f, 1e30f, 1e30f, 0.0f, plan.splitAlongCut,
-                                 plan.snapCutToRim, {}};
-    for (const ViewData& view : plan.views) {
-      if (view.params.w != 0.0f) {  // tessellation on
-        thresholds.maxErrorAngle = std::min(thresholds.maxErrorAngle, view.params.x);
-        thresholds.maxSegmentAngle = view.params.y;
-      }
-      thresholds.minGap = std::min(thresholds.minGap, view.params.z);
-      thresholds.maxGap = std::max(thresholds.maxGap, view.params.z);
-    }
-    if (thresholds.maxErrorAngle < 1e30f) thresholds.errorWalls = plan.errorWalls;
+    std::vector<glm::vec4> viewParams;
+    for (const ViewData& view : plan.views) viewParams.push_back(view.params);
+    const PrepassThresholds thresholds =
+        prepassThresholds(viewParams, plan.errorWalls, plan.splitAlongCut, plan.snapCutToRim);
     const PrepassInputs inputs{scene.id(), mapHash_, plan.frame, thresholds};
     prepassReused_ = plan.reusePrepass && prepassCurrent_ && inputs == prepassInputs_;
     prepassSeconds_ = 0.0;

@@ -99,6 +99,24 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
     for (const glm::uvec3& t : mesh.triangles) indices.insert(indices.end(), {t.x, t.y, t.z});
     if (draw.indexCount > 0) draws_.push_back(draw);
   }
+  uploadGeometry(context, std::move(vertices), indices);
+}
+
+GpuScene::GpuScene(VulkanContext& context, std::vector<Vertex> vertices,
+                   const std::vector<std::uint32_t>& indices, std::vector<Draw> draws,
+                   const std::string& name)
+    : draws_(std::move(draws)) {
+  if (vertices.size() > std::numeric_limits<std::int32_t>::max() ||
+      indices.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Error(ErrorCode::InvalidInput, name + " is too large for 32-bit vertex indices");
+  if (indices.empty())
+    throw Error(ErrorCode::InvalidInput, name + " has no triangles to draw");
+  for (const Vertex& v : vertices) bounds_.extend(v.position);
+  uploadGeometry(context, std::move(vertices), indices);
+}
+
+void GpuScene::uploadGeometry(VulkanContext& context, std::vector<Vertex> vertices,
+                              const std::vector<std::uint32_t>& indices) {
   triangleCount_ = indices.size() / 3;
   vertexCount_ = vertices.size();
   static std::atomic<std::uint64_t> nextId{1};

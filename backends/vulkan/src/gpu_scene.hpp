@@ -8,6 +8,7 @@
 // of a vertex shader that assembles them (lavapipe: ~0.015 s a 20k-triangle frame under a baked
 // map).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -23,6 +24,13 @@ class GpuScene {
  public:
   // Validates the scene (Error(InvalidInput) naming the culprit) and uploads it.
   GpuScene(VulkanContext& context, const Pipelines& pipelines, const Scene& scene);
+
+  struct Draw;
+  // Geometry alone, without textures (the bring-your-own pre-pass step, byo_prepass.cpp): the
+  // draws' materials stay VK_NULL_HANDLE. `name` names the geometry in errors.
+  GpuScene(VulkanContext& context, std::vector<Vertex> vertices,
+           const std::vector<std::uint32_t>& indices, std::vector<Draw> draws,
+           const std::string& name);
 
   struct Draw {
     std::uint32_t firstIndex = 0, indexCount = 0;
@@ -57,6 +65,9 @@ class GpuScene {
   std::uint64_t id() const { return id_; }
 
  private:
+  // Everything but the textures: edges, midpoints, cut slots, the buffers (both constructors).
+  void uploadGeometry(VulkanContext& context, std::vector<Vertex> vertices,
+                      const std::vector<std::uint32_t>& indices);
   // Appends the edge midpoints and the cut-vertex slots to `vertices` (the layout above).
   void appendConformalVertices(std::vector<Vertex>& vertices, const std::vector<glm::uvec2>& edges);
 

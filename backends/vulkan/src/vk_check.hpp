@@ -5,8 +5,10 @@
 #include <vulkan/vulkan.h>
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis::vulkan {
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 const char* toString(VkResult result) noexcept;
 
@@ -14,4 +16,5 @@ const char* toString(VkResult result) noexcept;
 // and a lost device are reported as such (still Internal: nothing the input could fix).
 void check(VkResult result, const char* call);
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis

@@ -121,9 +121,9 @@ class VulkanBackend final : public VulkanRenderer {
     return result;
   }
 
-  nlohmann::json renderImages(const DisplayConfig& config, const RetargetMap* map,
-                              const RenderSettings& settings,
-                              const std::vector<VulkanImageTarget>& targets) override {
+  FrameStats renderImages(const DisplayConfig& config, const RetargetMap* map,
+                          const RenderSettings& settings,
+                          const std::vector<VulkanImageTarget>& targets) override {
     const RenderSettings chosen =
         settingsForTargets(config, settings, targets, context_->physicalDevice());
     return renderFrame(config, map, chosen, [&](const Frame& frame) {
@@ -151,9 +151,9 @@ class VulkanBackend final : public VulkanRenderer {
   };
 
   // Plans the frame, has `draw` render it, and returns its stats.
-  nlohmann::json renderFrame(const DisplayConfig& config, const RetargetMap* map,
-                             const RenderSettings& settings,
-                             const std::function<void(const Frame&)>& draw) {
+  FrameStats renderFrame(const DisplayConfig& config, const RetargetMap* map,
+                         const RenderSettings& settings,
+                         const std::function<void(const Frame&)>& draw) {
     if (!scene_) throw Error(ErrorCode::InvalidInput, "Vulkan backend: render before setScene");
     const auto start = std::chrono::steady_clock::now();
     const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
@@ -172,33 +172,32 @@ class VulkanBackend final : public VulkanRenderer {
     progress.finish();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    nlohmann::json stats = {{"backend", "vulkan"},
-                            {"device", context_->capabilities().name},
-                            {"mode", conformal ? "conformal" : "plain"},
-                            {"walls", plan.walls.size()},
-                            {"views_per_pass", onePass ? plan.eyes.size() : 1},
-                            {"stereo_passes", multiview_ ? "multiview" : "per-eye"},
-                            {"triangles", scene_->triangleCount()},
-                            {"seconds", seconds}};
-    if (const auto gpu = frames_.gpuSeconds()) stats["gpu_seconds"] = *gpu;
+    FrameStats stats;
+    stats.backend = "vulkan";
+    stats.seconds = seconds;
+    stats.sceneTriangles = scene_->triangleCount();
+    VulkanFrameStats& gpu = stats.vulkan.emplace();
+    gpu.device = context_->capabilities().name;
+    gpu.conformal = conformal;
+    gpu.walls = plan.walls.size();
+    gpu.viewsPerPass = onePass ? static_cast<int>(plan.eyes.size()) : 1;
+    gpu.multiview = multiview_;
+    gpu.gpuSeconds = frames_.gpuSeconds();
     if (conformal) {
-      stats["tessellation_error_pixels"] = options_.tessellationErrorPixels;
-      stats["tessellation"] = options_.tessellate;
-      stats["triangles_split_before_warp"] = split_ ? split_->trianglesSplit : 0;
       const auto counts = frames_.prepassCounts(drawn);
-      stats["triangles_drawn_flat"] = counts.flat;
-      stats["triangles_tessellated"] = counts.tessellated + counts.dropping;
-      stats["triangles_through_geometry_shader"] = counts.dropping;
-      stats["triangles_split_along_cut"] = counts.splitAlongCut;
-      stats["prepass_seconds"] = counts.seconds;
-      if (counts.gpuSeconds) stats["prepass_gpu_seconds"] = *counts.gpuSeconds;
-      stats["prepass_reused"] = counts.reused;
-      if (!counts.passGpuSeconds.empty()) {
-        nlohmann::json passes = nlohmann::json::object();
-        for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
-          passes[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
-        stats["prepass_pass_gpu_seconds"] = passes;
-      }
+      VulkanConformalStats& prepass = gpu.conformalPrepass.emplace();
+      prepass.tessellationErrorPixels = options_.tessellationErrorPixels;
+      prepass.tessellation = options_.tessellate;
+      prepass.trianglesSplitBeforeWarp = split_ ? split_->trianglesSplit : 0;
+      prepass.trianglesDrawnFlat = counts.flat;
+      prepass.trianglesTessellated = counts.tessellated + counts.dropping;
+      prepass.trianglesThroughGeometryShader = counts.dropping;
+      prepass.trianglesSplitAlongCut = counts.splitAlongCut;
+      prepass.prepassSeconds = counts.seconds;
+      prepass.prepassGpuSeconds = counts.gpuSeconds;
+      prepass.prepassReused = counts.reused;
+      for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
+        prepass.passGpuSeconds[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
     }
     return stats;
   }

@@ -177,13 +177,14 @@ TEST(VulkanConformal, TrianglesBentByTwoSegmentsAreDrawnInFlatPiecesThatMatchThe
   RenderSettings settings = settingsFor(config, RenderMode::Conformal);
   settings.resolutionScale = test::scaleFor(config, 96);
   const RenderResult result = vk->render(config, &zoom, settings);
-  const auto flat = result.stats.value("triangles_drawn_flat", std::size_t{0});
-  const auto tessellated = result.stats.value("triangles_tessellated", std::size_t{0});
+  const VulkanConformalStats& prepass = result.stats.vulkan.value().conformalPrepass.value();
+  const auto flat = prepass.trianglesDrawnFlat;
+  const auto tessellated = prepass.trianglesTessellated;
   // Split triangles count each piece (2-4): measured 1104 drawn flat (1524 when every wall
   // point had the bound of the walls' smallest pixel), none tessellated.
   EXPECT_GT(flat, scene.triangleCount() * 5 / 4) << "pieces of split triangles";
   EXPECT_LT(tessellated, scene.triangleCount() / 10);
-  EXPECT_EQ(result.stats.value("triangles_through_geometry_shader", std::size_t{1}), 0u);
+  EXPECT_EQ(prepass.trianglesThroughGeometryShader, 0u);
   for (const WallImage& image : result.images) {
     SCOPED_TRACE(image.wall);
     const test::AnalyticComparison a = compareAnalytic(

@@ -65,7 +65,7 @@ TEST(VulkanCutSplit, TrianglesAcrossTheCutAreDrawnUpToItOnEachSide) {
 
   const RenderResult split = render(true);
   // The sphere's rings of triangles around the half-meridian, between the poles.
-  EXPECT_GE(split.stats.value("triangles_split_along_cut", std::size_t{0}), 16u);
+  EXPECT_GE(split.stats.vulkan.value().conformalPrepass.value().trianglesSplitAlongCut, 16u);
   const Beside b = besideTheCut(split);
   EXPECT_GT(b.pixels, 500u);
   EXPECT_LE(b.holes, b.pixels / 100) << b.holes << " of " << b.pixels << " pixels beside the cut";
@@ -80,7 +80,7 @@ TEST(VulkanCutSplit, TrianglesAcrossTheCutAreDrawnUpToItOnEachSide) {
 
   // Without the split the same pixels lose a band (the comparison can fail).
   const RenderResult dropped = render(false);
-  EXPECT_EQ(dropped.stats.value("triangles_split_along_cut", std::size_t{1}), 0u);
+  EXPECT_EQ(dropped.stats.vulkan.value().conformalPrepass.value().trianglesSplitAlongCut, 0u);
   const Beside d = besideTheCut(dropped);
   EXPECT_GT(d.holes, d.pixels / 10) << d.holes << " of " << d.pixels;
 }

@@ -65,8 +65,9 @@ TEST(VulkanOnAppDevice, WritesTheApplicationsImagesAsRenderReadsBack) {
       {"left", Eye::Center, left, VK_FORMAT_R8G8B8A8_UNORM, {kSize, kSize}, 0, {},
        VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL}};
   settings.walls.clear();  // the targets name them
-  const nlohmann::json stats = vk->renderImages(config, nullptr, settings, targets);
-  EXPECT_EQ(stats["walls"], 2);
+  const FrameStats stats = vk->renderImages(config, nullptr, settings, targets);
+  ASSERT_TRUE(stats.vulkan.has_value());
+  EXPECT_EQ(stats.vulkan->walls, 2u);
   const VkRect2D whole{{0, 0}, {kSize, kSize}};
   const std::vector<std::uint8_t> frontTexels = app.read(front, kSize, kSize);
   const std::vector<std::uint8_t> leftTexels = app.read(left, kSize, kSize);

@@ -3,6 +3,9 @@
 // navigating or a new map runs it again, and every frame draws what a fresh backend draws.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 #include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_image_checks.hpp"
 #include "vulkan_test_maps.hpp"
@@ -40,7 +43,9 @@ TEST(VulkanPrepassReuse, HeadMovesReuseItNavigationAndMapsRunItAgain) {
     other->setScene(scene);
     return other->render(config, &map, s);
   };
-  const auto reused = [](const RenderResult& r) { return r.stats.value("prepass_reused", true); };
+  const auto reused = [](const RenderResult& r) {
+    return r.stats.vulkan.value().conformalPrepass.value().prepassReused;
+  };
 
   EXPECT_FALSE(reused(vk->render(config, &squeeze, settings)));
   RenderSettings headMoved = settings;
@@ -75,23 +80,29 @@ TEST(VulkanPrepassReuse, GpuTimeCountsThePrepassOnlyWhereItRan) {
   RenderSettings settings;
   settings.resolutionScale = test::scaleFor(config, 32);
   settings.mode = RenderMode::Plain;
-  const auto gpu = [](const RenderResult& r, const char* key) { return r.stats.value(key, -1.0); };
+  // -1 where the frame has no such time.
+  const auto gpu = [](const RenderResult& r) {
+    return r.stats.vulkan.value().gpuSeconds.value_or(-1.0);
+  };
+  const auto prepassGpu = [](const RenderResult& r) {
+    return r.stats.vulkan.value().conformalPrepass.value().prepassGpuSeconds.value_or(-1.0);
+  };
 
   const RenderResult plain = vk->render(config, nullptr, settings);
-  EXPECT_GT(gpu(plain, "gpu_seconds"), 0.0);
-  EXPECT_FALSE(plain.stats.contains("prepass_gpu_seconds"));
+  EXPECT_GT(gpu(plain), 0.0);
+  EXPECT_FALSE(plain.stats.vulkan.value().conformalPrepass);  // no pre-pass in plain mode
   settings.mode = RenderMode::Conformal;
   const RenderResult ran = vk->render(config, &squeeze, settings);
   const RenderResult reused = vk->render(config, &squeeze, settings);
-  ASSERT_TRUE(reused.stats.value("prepass_reused", false));
-  EXPECT_GT(gpu(ran, "prepass_gpu_seconds"), 0.0);
-  EXPECT_LT(gpu(ran, "prepass_gpu_seconds"), gpu(ran, "gpu_seconds"));
-  EXPECT_EQ(gpu(reused, "prepass_gpu_seconds"), 0.0);
-  EXPECT_GT(gpu(reused, "gpu_seconds"), 0.0);
+  ASSERT_TRUE(reused.stats.vulkan.value().conformalPrepass.value().prepassReused);
+  EXPECT_GT(prepassGpu(ran), 0.0);
+  EXPECT_LT(prepassGpu(ran), gpu(ran));
+  EXPECT_EQ(prepassGpu(reused), 0.0);
+  EXPECT_GT(gpu(reused), 0.0);
   // A pre-pass over 19k triangles takes longer than 1 µs, the frame less than a minute: the
   // timestamp period and valid bits are applied.
-  EXPECT_GT(gpu(ran, "prepass_gpu_seconds"), 1e-6);
-  EXPECT_LT(gpu(ran, "gpu_seconds"), 60.0);
+  EXPECT_GT(prepassGpu(ran), 1e-6);
+  EXPECT_LT(gpu(ran), 60.0);
   test::expectNoValidationMessages(vk);
 }
 
@@ -115,30 +126,35 @@ TEST(VulkanPrepassReuse, TimedPassesSplitThePrepassWithoutChangingTheImages) {
 
   const RenderResult ran = timed->render(config, &squeeze, settings);
   const RenderResult plainRun = untimed->render(config, &squeeze, settings);
-  EXPECT_FALSE(plainRun.stats.contains("prepass_pass_gpu_seconds"));
+  EXPECT_TRUE(plainRun.stats.vulkan.value().conformalPrepass.value().passGpuSeconds.empty());
   EXPECT_EQ(largestDifference(ran, plainRun), 0.0);
-  if (!ran.stats.contains("prepass_gpu_seconds")) GTEST_SKIP() << "no timestamps on this queue";
-  ASSERT_TRUE(ran.stats.contains("prepass_pass_gpu_seconds"));
-  const nlohmann::json& passes = ran.stats["prepass_pass_gpu_seconds"];
+  const VulkanConformalStats& ranPrepass = ran.stats.vulkan.value().conformalPrepass.value();
+  if (!ranPrepass.prepassGpuSeconds) GTEST_SKIP() << "no timestamps on this queue";
+  const std::map<std::string, double>& passes = ranPrepass.passGpuSeconds;
+  const auto listed = [&] {
+    std::string names;
+    for (const auto& [name, seconds] : passes) names += name + " ";
+    return names;
+  };
   const std::vector<std::string> expected = {
       "warp_vertices",       "warp_vertices_across_cut",    "classify_edges",
       "classify_edges_bent", "classify_edges_at_cut",       "classify_triangles",
       "classify_straight_triangles", "classify_bent_triangles", "split_triangles_at_cut"};
-  ASSERT_EQ(passes.size(), expected.size()) << passes.dump();
+  ASSERT_EQ(passes.size(), expected.size()) << listed();
   double sum = 0.0;
   for (const std::string& name : expected) {
-    ASSERT_TRUE(passes.contains(name)) << name << " in " << passes.dump();
-    EXPECT_GE(passes[name].get<double>(), 0.0) << name;
-    sum += passes[name].get<double>();
+    ASSERT_TRUE(passes.count(name)) << name << " in " << listed();
+    EXPECT_GE(passes.at(name), 0.0) << name;
+    sum += passes.at(name);
   }
   // Passes over every vertex, edge and triangle of 19k triangles take measurable time.
   for (const char* name : {"warp_vertices", "classify_edges", "classify_triangles"})
-    EXPECT_GT(passes[name].get<double>(), 0.0) << name;
-  const double total = ran.stats["prepass_gpu_seconds"].get<double>();
+    EXPECT_GT(passes.at(name), 0.0) << name;
+  const double total = *ranPrepass.prepassGpuSeconds;
   EXPECT_NEAR(sum, total, 1e-6 * total + 1e-9);
   const RenderResult reused = timed->render(config, &squeeze, settings);
-  ASSERT_TRUE(reused.stats.value("prepass_reused", false));
-  EXPECT_FALSE(reused.stats.contains("prepass_pass_gpu_seconds"));
+  ASSERT_TRUE(reused.stats.vulkan.value().conformalPrepass.value().prepassReused);
+  EXPECT_TRUE(reused.stats.vulkan.value().conformalPrepass.value().passGpuSeconds.empty());
   test::expectNoValidationMessages(timed);
   test::expectNoValidationMessages(untimed);
 }
@@ -153,8 +169,10 @@ TEST(VulkanPrepassReuse, SwitchedOffEveryFrameRunsIt) {
   RenderSettings settings;
   settings.mode = RenderMode::Conformal;
   settings.resolutionScale = test::scaleFor(config, 32);
-  for (int frame = 0; frame < 2; ++frame)
-    EXPECT_FALSE(vk->render(config, &zoom, settings).stats.value("prepass_reused", true));
+  for (int frame = 0; frame < 2; ++frame) {
+    const RenderResult result = vk->render(config, &zoom, settings);
+    EXPECT_FALSE(result.stats.vulkan.value().conformalPrepass.value().prepassReused);
+  }
   test::expectNoValidationMessages(vk);
 }
 

@@ -93,7 +93,7 @@ TEST(VulkanStereo, OneMultiviewPassShowsBothEyesWithTheClosedFormDisparity) {
     SCOPED_TRACE(mode == RenderMode::Plain ? "plain" : "conformal (identity map)");
     const RenderResult stereo =
         vk->render(config, &identity, frontWall(config, mode, {Eye::Left, Eye::Right}));
-    EXPECT_EQ(stereo.stats.at("views_per_pass"), 2);
+    EXPECT_EQ(stereo.stats.vulkan.value().viewsPerPass, 2);
     ASSERT_EQ(stereo.images.size(), 2u);
     EXPECT_EQ(stereo.images[0].eye, Eye::Left);
     EXPECT_EQ(stereo.images[1].eye, Eye::Right);
@@ -129,7 +129,7 @@ TEST(VulkanStereo, TheStartupProbeTellsWhetherMultiviewDrawsClippedTrianglesCorr
   automatic->setScene(nearSquare(true));
   const RenderResult probed = automatic->render(
       config, &identity, frontWall(config, RenderMode::Plain, {Eye::Left, Eye::Right}));
-  const bool probeTrustsMultiview = probed.stats.at("stereo_passes") == "multiview";
+  const bool probeTrustsMultiview = probed.stats.vulkan.value().multiview;
 
   VulkanOptions options;
   options.stereoPasses = StereoPasses::Multiview;
@@ -141,7 +141,7 @@ TEST(VulkanStereo, TheStartupProbeTellsWhetherMultiviewDrawsClippedTrianglesCorr
   for (std::size_t i = 0; i < 2; ++i)
     bad += test::comparePixels(stereo.images[i].image, probed.images[i].image, 1e-5f).bad;
   EXPECT_EQ(bad == 0, probeTrustsMultiview)
-      << bad << " pixels differ; device " << probed.stats.at("device");
+      << bad << " pixels differ; device " << probed.stats.vulkan.value().device;
   test::expectNoValidationMessages(automatic);
   test::expectNoValidationMessages(forced);
 }

@@ -18,10 +18,11 @@
 // the rest with the value of the nearest filled texel (breadth-first over the cube's texel grid,
 // across face edges). So bilinear lookups next to the boundary stay accurate and no texel is
 // ever NaN. Runs on `threads` threads.
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct BakeOptions {
   glm::dvec3 reference{};  // the reference point stored in the map (DisplayMap is relative to it)

@@ -19,12 +19,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/bake.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct BakeDisplayOptions {
   std::optional<int> resolution;      // texels per face; default: config.cubeResolution
   std::optional<double> edgeLength;   // metres; default: config.edgeLength
@@ -35,6 +37,8 @@ struct BakeDisplayOptions {
   bool showProgress = false;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct BakedDisplay {
   DisplayConfig config;  // the effective config the map was baked for
   RetargetMap map;

@@ -16,11 +16,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/bake.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct DisplayConfig;
 

@@ -9,11 +9,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct BakeVerdict {
   std::size_t flippedTriangles = 0;  // source and target disk triangles turned over (or flat)
   std::size_t flippedTexels = 0;     // ray texels whose Jacobian reverses orientation

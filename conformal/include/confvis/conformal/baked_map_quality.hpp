@@ -9,9 +9,10 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "confvis/base/cube_map.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 inline double texelAngle(int resolution) { return 2.0 / resolution; }
 
@@ -38,6 +39,8 @@ struct BakedConformality {
 BakedConformality measureBakedConformality(const CubeMap& map,
                                            const ConformalityOptions& options = {});
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct RoundTripErrors {
   std::size_t measured = 0;
   // Measured texels whose inverse lookup straddles a jump of the inverse map by more than

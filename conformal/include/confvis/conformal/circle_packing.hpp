@@ -7,7 +7,10 @@
 #include <string>
 #include <vector>
 
-namespace confvis::conformal {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 enum class Geometry { Euclidean, Hyperbolic, Spherical };
 enum class Scheme { Tangential, Thurston, InversiveDistance, Yamabe, VirtualRadius, Mixed };
@@ -53,4 +56,5 @@ void angleLengthDerivatives(Geometry g, const std::array<double, 3>& l,
 // the background curvature (0, -1, +1). Returns κ.
 double backgroundCurvature(Geometry g) noexcept;
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

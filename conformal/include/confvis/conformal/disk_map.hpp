@@ -17,18 +17,21 @@
 #include <functional>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 #include "confvis/conformal/intrinsic_triangulation.hpp"
 #include "confvis/conformal/mesh.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 // Auto: flips from the start where the target needs them (a boundary vertex in a single
 // triangle), else switched on mid-flow when steps degenerate triangles (no restart); only if
 // the flow still fails, a second run with flips throughout.
 enum class FlipPolicy { Off, On, Auto };
 
+// Thread-safety: a value (options); onIteration is called on the thread that computes the map.
 struct DiskMapOptions {
   Geometry geometry = Geometry::Euclidean;  // the route: background geometry of the flow
   Scheme scheme = Scheme::Yamabe;
@@ -88,4 +91,5 @@ std::vector<double> distanceToBoundary(const IntrinsicTriangulation& tri,
 // Applies a Möbius alignment sending boundary vertices a, b, c to 1, i, -1.
 void alignDiskMap(std::vector<std::complex<double>>& uv, int a, int b, int c);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

@@ -16,9 +16,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
+#include "confvis/conformal/display_template.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A triangulated topological disk on the unit sphere with a per-vertex disk coordinate.
 struct SphereDiskMesh {
@@ -34,6 +36,8 @@ struct SphereDiskMesh {
   std::vector<std::uint8_t> lit;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct DisplayMap {
   SphereDiskMesh source;  // S: the virtual field of view shown (sphere cut open, or hemisphere)
   SphereDiskMesh target;  // D: the directions covered by the display's lit walls
@@ -54,11 +58,14 @@ struct DisplayConfig;
 // Euclidean: the faster preset (cave5 at 20 cm, shared 2-core machine: 50 against 75 ms CPU for
 // the whole re-bake), but its removed face bends the map around the display's centre (0.7 px
 // median mirror asymmetry on cave3, 59 px on flat-wall).
-enum class DisplayMapRoute { Spherical, Euclidean };
+// Hyperbolic: iterated boundary curvature (disk_map.hpp); measured against the other two in
+// conformal/README.md ("Map accuracy"), Euclidean fallback like the spherical route.
+enum class DisplayMapRoute { Spherical, Euclidean, Hyperbolic };
 
 struct DisplayMapOptions {
   double edgeLength = 0.0;          // metres; <= 0 takes the config's edge_length
   DisplayMapRoute route = DisplayMapRoute::Spherical;
+  TemplateGrading grading;  // uniform edges unless radiusDegrees > 0 (display_template.hpp)
   bool showProgress = false;
 };
 

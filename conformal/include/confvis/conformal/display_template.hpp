@@ -46,9 +46,10 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct TemplateMesh {
   std::vector<glm::dvec3> points;             // metres, physical frame
@@ -76,7 +77,18 @@ struct DisplayTemplates {
 // disk (or a closed sphere for a sphere source), when walls hide or touch each other as seen from
 // the reference point without sharing an edge, or when a sphere source cannot be cut (see above).
 // edgeLength <= 0 takes config.edgeLength.
-DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength = 0.0);
+// Meshes graded toward the map's singular points (issue 22): within `radiusDegrees` (seen from
+// the reference) of a cut leaf or a display boundary corner, where the map behaves like a power
+// of the distance, the edge length falls as (angle / radius)^exponent, to at least minScale x
+// the edge length. radiusDegrees <= 0: uniform edges.
+struct TemplateGrading {
+  double radiusDegrees = 0;
+  double exponent = 0.75;
+  double minScale = 1.0 / 16;
+};
+
+DisplayTemplates buildDisplayTemplates(const DisplayConfig& config, double edgeLength = 0.0,
+                                       const TemplateGrading& grading = {});
 
 // True exactly when the display's conformal map is the identity and needs no bake: a sphere
 // source and a closed display (walls enclosing the reference point) without bezels. A closed

@@ -7,14 +7,17 @@
 
 #include <nlohmann/json_fwd.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/mesh.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 struct DistortionStats {
   int faces = 0;
   double ratioMean = 0, ratioP50 = 0, ratioP99 = 0, ratioMax = 0;  // σ_max / σ_min per face
-  int flippedFaces = 0;          // faces whose orientation the map reverses (or collapses)
+  int flippedFaces = 0;          // faces whose image is clockwise or collapsed
+  int degenerateFaces = 0;       // faces of zero area in space, left out of the ratios
   double boundaryRoundness = 0;  // max | |uv| - 1 | over boundary vertices
   double logAngleRatioStd = 0;   // of log(mapped angle / input angle) over all corners
   double histogramMin = -0.5, histogramMax = 0.5;
@@ -26,4 +29,5 @@ DistortionStats measureDistortion(const TriMesh& mesh, const std::vector<std::co
 
 nlohmann::json toJson(const DistortionStats& stats);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

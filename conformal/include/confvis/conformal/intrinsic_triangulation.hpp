@@ -6,12 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 
 #include "confvis/conformal/mesh.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct IntrinsicTriangulation {
   int vertexCount = 0;
   std::vector<std::array<int, 3>> faceVertices;  // counter-clockwise
@@ -63,4 +67,5 @@ std::vector<double> embeddedEdgeLengths(const IntrinsicTriangulation& tri,
 // every vertex a single fan of triangles. Throws Error(InvalidInput) naming `what`.
 void requireDisk(const IntrinsicTriangulation& tri, const std::string& what);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

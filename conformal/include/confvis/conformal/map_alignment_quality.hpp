@@ -7,11 +7,12 @@
 #include <optional>
 #include <string>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct GazeAlignment {
   // The wall point that shows the virtual forward direction (geom's lookup), in the wall's lit

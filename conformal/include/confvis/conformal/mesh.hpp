@@ -6,11 +6,16 @@
 #include <filesystem>
 #include <string>
 
-namespace confvis::conformal {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble>;
 using Vec3 = TriMesh::Point;
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct MeshTopology {
   int vertices = 0;
   int edges = 0;
@@ -33,11 +38,13 @@ void requireDisk(const TriMesh& mesh, const std::string& what);
 
 // Reads OBJ, OFF, PLY (ascii, binary) and STL (ascii, binary) with confvis's own bounded readers
 // (limits in the README). Throws FileNotFound / InvalidInput with the path (and line); rejects
-// malformed files, meshes with no faces, non-manifold faces, non-finite coordinates or
-// zero-length edges.
+// malformed files, meshes with no faces, non-manifold edges or vertices, inconsistently oriented
+// faces, non-finite coordinates or zero-length edges, naming them as the file numbers them; welds
+// vertices at equal positions and leaves out unused ones (mesh_source.hpp).
 TriMesh readMesh(const std::filesystem::path& path);
 
 // Boundary loops as vertex index lists, each following the boundary half-edges.
 std::vector<std::vector<int>> boundaryLoops(const TriMesh& mesh);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

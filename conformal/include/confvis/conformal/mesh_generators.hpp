@@ -3,9 +3,11 @@
 // tests (closed forms) and by tools/bench (large asymmetric disks).
 #include <cstdint>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/mesh.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 // An n×n-quad grid on [-1,1]², each quad split along a diagonal chosen at random, vertices
 // jittered by `jitter` × the spacing (boundary vertices only along the boundary).
@@ -29,4 +31,5 @@ TriMesh makeIcosphere(int levels);
 // A grid disk with two square holes: Euler characteristic -1 (a pair of pants).
 TriMesh makeDiskWithTwoHoles(int n);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

@@ -4,7 +4,10 @@
 // diskAutomorphism(a, t) = e^{it}(z - a)/(1 - conj(a) z) moves a to 0 and turns by t there.
 #include <complex>
 
-namespace confvis::conformal {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 using Complex = std::complex<double>;
 
@@ -32,4 +35,5 @@ class Mobius {
   Complex a_{1}, b_{0}, c_{0}, d_{1};
 };
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

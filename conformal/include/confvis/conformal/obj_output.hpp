@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 
 #include "confvis/conformal/mesh.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
 void writeObjWithDiskCoordinates(const std::filesystem::path& path, const TriMesh& mesh,
                                  const std::vector<std::complex<double>>& uv);
@@ -21,4 +23,5 @@ void writeObjWithDiskCoordinates(const std::filesystem::path& path,
                                  const std::vector<std::array<int, 3>>& triangles,
                                  const std::vector<std::complex<double>>& uv);
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

@@ -11,10 +11,14 @@
 #include <optional>
 
 #include "confvis/base/cube_map.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
+// toVirtual and toPhysical only read: a map in use by a renderer may be shared by many.
 struct RetargetMap {
   glm::dvec3 reference{0.0};  // c, metres, physical frame
   CubeMap ray;

@@ -8,11 +8,15 @@
 #include <functional>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/circle_packing.hpp"
 #include "confvis/conformal/intrinsic_triangulation.hpp"
 
-namespace confvis::conformal {
+namespace confvis CONFVIS_API {
+namespace conformal CONFVIS_API {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct CirclePackingMetric {
   Geometry geometry = Geometry::Euclidean;
   Scheme scheme = Scheme::Yamabe;
@@ -52,6 +56,8 @@ Eigen::SparseMatrix<double> curvatureJacobian(const IntrinsicTriangulation& tri,
 void checkTargetCurvature(const IntrinsicTriangulation& tri, Geometry geometry,
                           const std::vector<double>& target);
 
+// Thread-safety: a value (options); onIteration and updateTarget are called on the thread that
+// runs the flow.
 struct RicciFlowOptions {
   double tolerance = 1e-10;      // on max |K̄ - K|
   int maxIterations = 100;
@@ -103,4 +109,5 @@ RicciFlowReport runRicciFlow(IntrinsicTriangulation& tri, CirclePackingMetric& m
                              const std::vector<double>& target,
                              const RicciFlowOptions& options = {});
 
-}  // namespace confvis::conformal
+}  // namespace conformal
+}  // namespace confvis

@@ -23,6 +23,8 @@ inline constexpr long long kMaxExrPixels = 8192LL * 6 * 8192;
 // size (ZIP, the writers' compression, stays far below 2000:1 on real images).
 inline constexpr long long kMaxExrBytesUnchecked = 1LL << 30;
 inline constexpr long long kMaxExrExpansion = 2000;
+// Most tiles of a tiled EXR's first level: OpenEXR allocates 8 bytes per tile before reading any.
+inline constexpr long long kMaxExrTiles = 1LL << 22;
 
 // Throws Error(InvalidInput) naming `path` if the image is empty or has NaN/infinite values.
 void requireWritableImage(const std::filesystem::path& path, const ImageRGBA& image,
@@ -38,6 +40,11 @@ struct ExrLayer {
 // add header attributes (envmap, multiView). Validates the layers first.
 void writeExrLayers(const std::filesystem::path& path, const std::vector<ExrLayer>& layers,
                     ExrPixel pixel, const std::function<void(Imf::Header&)>& addAttributes);
+
+// Refuses, with Error(IoFailure) naming the file, an EXR header that would make OpenEXR allocate
+// more than the file can hold: an attribute larger than the rest of the file, a data window
+// beyond kMaxExrSide / kMaxExrPixels, more than kMaxExrTiles tiles (exr_header_check.cpp).
+void requirePlausibleExrHeader(const std::filesystem::path& path);
 
 // Opens `path` and runs `use(file)`, turning a missing file into Error(FileNotFound) and any
 // OpenEXR or system exception into Error(IoFailure); both messages name the file.

@@ -93,6 +93,7 @@ void withExrInput(const fs::path& path, const std::function<void(Imf::InputFile&
   std::error_code ec;
   if (!fs::is_regular_file(path, ec))
     throw Error(ErrorCode::FileNotFound, "cannot open EXR file " + quoted(path) + ": not found");
+  requirePlausibleExrHeader(path);
   try {
     Imf::InputFile file(path.c_str());
     use(file);

@@ -7,6 +7,7 @@
 #include <set>
 
 #include "confvis/base/error.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 
 namespace confvis::detail {
 namespace {
@@ -135,12 +136,8 @@ void checkWallSet(const DisplayConfig& config, const std::string& sourceName) {
     if (!names.insert(w.name).second)
       throw Error(ErrorCode::InvalidInput,
                   sourceName + ": wall name '" + w.name + "' is used more than once");
-  for (std::size_t i = 0; i < config.walls.size(); ++i)
-    for (std::size_t j = i + 1; j < config.walls.size(); ++j)
-      if (wallsOverlap(config.walls[i], config.walls[j]))
-        throw Error(ErrorCode::InvalidInput, sourceName + ": walls '" + config.walls[i].name +
-                                                 "' and '" + config.walls[j].name +
-                                                 "' overlap (they may share only an edge)");
+  // Overlaps: allowed only between projectors of one plane, which form one display surface.
+  groupSurfaces(config, sourceName);
 }
 
 }  // namespace confvis::detail

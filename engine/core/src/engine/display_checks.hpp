@@ -28,7 +28,8 @@ void checkFacesReference(const Wall& wall, const glm::dvec3& reference,
 // face, count as touching, not overlapping).
 bool wallsOverlap(const Wall& a, const Wall& b);
 
-// Duplicate names, then pairwise overlap, over all walls.
+// Duplicate names, then overlaps: walls may overlap only as projectors on one plane do, forming
+// one display surface (display_surfaces.hpp).
 void checkWallSet(const DisplayConfig& config, const std::string& sourceName);
 
 }  // namespace confvis::detail

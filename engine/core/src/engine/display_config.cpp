@@ -15,6 +15,7 @@
 #include "confvis/base/input_limits.hpp"
 #include "confvis/base/json_text.hpp"
 #include "confvis/engine/display_import.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 #include "display_checks.hpp"
 
 namespace confvis {
@@ -179,7 +180,7 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
   requireFileNameSafe(wall.name, byIndex.where() + ": wall name");  // it names output files
   const ObjectReader r(wallJson, sourceName + ": wall '" + wall.name + "'");
   r.rejectUnknownKeys({"name", "lower_left", "lower_right", "upper_left", "resolution", "bezel",
-                       "window", "stereo_output", "node"});
+                       "window", "stereo_output", "node", "preview"});
   wall.lowerLeft = r.vec3("lower_left");
   wall.lowerRight = r.vec3("lower_right");
   wall.upperLeft = r.vec3("upper_left");
@@ -195,6 +196,11 @@ Wall readWall(const json& wallJson, std::size_t index, const std::string& source
       wall.node = std::to_string(node.get<std::int64_t>());
     else if (node.is_string() && !node.get<std::string>().empty()) wall.node = node;
     else r.failKey("node", "must be a host name or a rank number (>= 0), got " + node.dump());
+  }
+  if (r.has("preview")) {
+    const json& preview = wallJson.at("preview");
+    if (!preview.is_boolean()) r.failKey("preview", "must be true or false, got " + preview.dump());
+    wall.preview = preview.get<bool>();
   }
   wall.output = detail::readWallOutput(wallJson, r.where());
   return wall;
@@ -217,12 +223,25 @@ void readSource(const ObjectReader& top, const json& root, DisplayConfig& config
 
 json vecJson(const glm::dvec3& v) { return json::array({v.x, v.y, v.z}); }
 
+EdgeBlend readEdgeBlend(const ObjectReader& top, const json& root) {
+  EdgeBlend blend;
+  if (!top.has("edge_blend")) return blend;
+  const ObjectReader r(root.at("edge_blend"), top.where() + ": edge_blend");
+  r.rejectUnknownKeys({"gamma"});
+  blend.enabled = true;
+  blend.gamma = r.number("gamma", blend.gamma);
+  if (!(blend.gamma >= 0.1 && blend.gamma <= 10.0))
+    r.failKey("gamma", "must be between 0.1 and 10 (a projector's response, 2.2 typical), got " +
+                           std::to_string(blend.gamma));
+  return blend;
+}
+
 }  // namespace
 
 DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName) {
   const ObjectReader top(root, sourceName);
   top.rejectUnknownKeys({"name", "reference", "source", "edge_length", "cube_resolution",
-                         "stereo", "tracking", "walls"});
+                         "stereo", "tracking", "edge_blend", "walls"});
   DisplayConfig config;
   config.name = top.string("name");
   if (config.name.empty()) top.failKey("name", "must not be empty");
@@ -254,6 +273,8 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
   if (top.has("tracking"))
     config.tracking = parseTrackingConfig(root.at("tracking"), sourceName + ": tracking");
 
+  config.edgeBlend = readEdgeBlend(top, root);
+
   const json& walls = top.required("walls");
   if (!walls.is_array()) top.failKey("walls", "must be an array of walls");
   if (walls.empty()) top.failKey("walls", "must hold at least one wall");
@@ -263,9 +284,11 @@ DisplayConfig parseDisplayConfig(const json& root, const std::string& sourceName
     detail::checkFacesReference(config.walls.back(), config.reference, sourceName);
   }
   detail::checkWallSet(config, sourceName);
-  if (!top.has("edge_length")) config.edgeLength = defaultEdgeLength(config.walls, config.reference);
+  if (!top.has("edge_length"))  // overlapping projector walls count once, as their surface
+    config.edgeLength = defaultEdgeLength(surfaceConfig(config).walls, config.reference);
   json hashed = detail::withoutWallOutputs(toJson(config));
   hashed.erase("tracking");  // the tracker does not change the map: its edits keep the bake cache
+  hashed.erase("edge_blend");  // nor does the blend of overlapping projectors
   config.hash = fnv1a64Hex(hashed.dump());
   return config;
 }
@@ -291,10 +314,11 @@ json toJson(const DisplayConfig& config) {
                        {"bottom", w.bezel.bottom},
                        {"top", w.bezel.top}}}});
     if (!w.node.empty()) walls.back()["node"] = w.node;
+    if (w.preview) walls.back()["preview"] = true;  // only when set: older hashes stay valid
     detail::writeWallOutput(w.output, walls.back());
   }
   const char* field = config.source == SourceField::Hemisphere ? "hemisphere" : "sphere";
-  return {{"name", config.name},
+  json result = {{"name", config.name},
           {"reference", vecJson(config.reference)},
           {"source", {{"field", field}, {"axis", vecJson(config.hemisphereAxis)}}},
           {"edge_length", config.edgeLength},
@@ -302,6 +326,8 @@ json toJson(const DisplayConfig& config) {
           {"stereo", {{"eye_separation", config.eyeSeparation}}},
           {"tracking", toJson(config.tracking)},
           {"walls", walls}};
+  if (config.edgeBlend.enabled) result["edge_blend"] = {{"gamma", config.edgeBlend.gamma}};
+  return result;
 }
 
 }  // namespace confvis

@@ -59,14 +59,19 @@ DisplayConfig importDisplayConfig(const std::filesystem::path& path, const Impor
   if (ext == ".xml") return parseSgctXml(text, source, options, report);
   if (looksLikeSgctJson(text)) return parseSgctJson(text, source, options, report);
   // A confvis config: the import options still apply, so `confvis import` can rename or move it.
-  if (options.scale != 1.0)
+  if (options.scale && *options.scale != 1.0)
     throw Error(ErrorCode::InvalidInput,
                 source + ": a confvis config is in metres already; a scale applies to imports only");
+  if (!options.skipWindows.empty())
+    throw Error(ErrorCode::InvalidInput,
+                source + ": a confvis config has walls, not windows; skipping windows applies to "
+                         "imports only (remove the wall from the config)");
   if (report) *report = ImportReport{};
   nlohmann::json json = toJson(loadDisplayConfig(path));
   if (!options.name.empty()) json["name"] = options.name;
   if (options.reference)
     json["reference"] = {options.reference->x, options.reference->y, options.reference->z};
+  if (options.edgeBlendGamma) json["edge_blend"] = {{"gamma", *options.edgeBlendGamma}};
   if (options.source)
     json["source"]["field"] = *options.source == SourceField::Hemisphere ? "hemisphere" : "sphere";
   return parseDisplayConfig(json, source);

@@ -1,9 +1,12 @@
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <limits>
 #include <filesystem>
 #include <sstream>
 
 #include "confvis/base/error.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 #include "import_parts.hpp"
 
 namespace confvis::detail {
@@ -76,13 +79,90 @@ void makeNamesUnique(std::vector<ImportedWall>& walls, const std::string& source
   }
 }
 
+
+// Drops the windows named in `names`; a name matching none is an error listing the windows.
+void skipWindows(ImportedDisplay& display, const std::vector<std::string>& names,
+                 const std::string& sourceName) {
+  for (const std::string& name : names) {
+    const auto matches = [&](const ImportedWall& w) { return w.name == name; };
+    if (std::none_of(display.walls.begin(), display.walls.end(), matches)) {
+      std::string known;
+      for (const ImportedWall& w : display.walls) known += (known.empty() ? "'" : ", '") + w.name + "'";
+      throw Error(ErrorCode::InvalidInput, sourceName + ": skipped window '" + name +
+                                               "' is not in the file (windows: " + known + ")");
+    }
+    for (const ImportedWall& w : display.walls)
+      if (matches(w))
+        display.notes.push_back(sourceName + ": " + w.element + " ('" + name +
+                                "') skipped as asked");
+    std::erase_if(display.walls, matches);
+  }
+}
+
+// Metres per file unit when none is given: 1, or 0.001 for a display that spans more than
+// kMillimetreSpan units (no CAVE or wall is 100 m across; SGCT files in millimetres are common).
+constexpr double kMillimetreSpan = 100.0;
+constexpr double kLargestMetres = 100.0;
+
+double unitScale(const std::vector<ImportedWall>& walls, const std::string& sourceName,
+                 std::vector<std::string>& notes) {
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+  for (const ImportedWall& w : walls)
+    for (const glm::dvec3& p : {w.lowerLeft, w.lowerRight, w.upperLeft,
+                                w.lowerRight + w.upperLeft - w.lowerLeft}) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  const double span = glm::length(hi - lo);
+  if (!(span > kMillimetreSpan)) return 1.0;
+  char text[96];
+  std::snprintf(text, sizeof text, "%.6g", span);
+  if (span * 0.001 > kLargestMetres)
+    throw Error(ErrorCode::InvalidInput,
+                sourceName + ": the walls span " + text + " file units, too large for metres or "
+                             "millimetres; give the unit with --scale (metres per file unit, e.g. "
+                             "0.01 for centimetres)");
+  notes.push_back(sourceName + ": the walls span " + text + " file units, so the file is read as "
+                  "millimetres and converted to metres (--scale 1 keeps metres, --scale S sets "
+                  "another unit)");
+  return 0.001;
+}
+
+// A window covering two or more other walls on their plane is an operator's preview of them
+// (SGCT masters often span the whole projection wall): imported with "preview": true.
+void markPreviews(std::vector<ImportedWall>& walls, const std::string& sourceName,
+                  std::vector<std::string>& notes) {
+  auto asWall = [](const ImportedWall& w) {
+    Wall wall;
+    wall.lowerLeft = w.lowerLeft, wall.lowerRight = w.lowerRight, wall.upperLeft = w.upperLeft;
+    return wall;
+  };
+  auto degenerate = [](const ImportedWall& w) {
+    return !(glm::length(glm::cross(w.lowerRight - w.lowerLeft, w.upperLeft - w.lowerLeft)) > 0.0);
+  };
+  for (ImportedWall& outer : walls) {
+    if (degenerate(outer)) continue;  // validation names it
+    std::string covered;
+    int count = 0;
+    for (const ImportedWall& inner : walls)
+      if (&inner != &outer && !degenerate(inner) && detail::wallCovers(asWall(outer), asWall(inner)))
+        ++count, covered += (covered.empty() ? "'" : ", '") + inner.name + "'";
+    if (count < 2) continue;
+    outer.preview = true;
+    notes.push_back(sourceName + ": " + outer.element + " ('" + outer.name + "') covers walls " +
+                    covered + " on their plane: imported as a preview window (rendered, no display "
+                    "surface of its own); --skip-window " + outer.name + " leaves it out");
+  }
+}
+
 }  // namespace
 
 DisplayConfig finishImport(ImportedDisplay display, const std::string& sourceName,
                            const ImportOptions& options, ImportReport* report) {
-  if (!(std::isfinite(options.scale) && options.scale > 0.0))
+  if (options.scale && !(std::isfinite(*options.scale) && *options.scale > 0.0))
     throw Error(ErrorCode::InvalidInput, sourceName + ": import scale must be a positive number, got " +
-                                             std::to_string(options.scale));
+                                             std::to_string(*options.scale));
+  skipWindows(display, options.skipWindows, sourceName);
   // Second-eye viewports repeat a wall exactly: keep the first.
   std::vector<ImportedWall> walls;
   for (ImportedWall& w : display.walls) {
@@ -99,12 +179,13 @@ DisplayConfig finishImport(ImportedDisplay display, const std::string& sourceNam
     throw Error(ErrorCode::InvalidInput, sourceName + ": describes no walls");
   makeNamesUnique(walls, sourceName, display.notes);
 
-  const double s = options.scale;
+  const double s = options.scale ? *options.scale : unitScale(walls, sourceName, display.notes);
   for (ImportedWall& w : walls) {
     w.lowerLeft *= s;
     w.lowerRight *= s;
     w.upperLeft *= s;
   }
+  markPreviews(walls, sourceName, display.notes);
   const glm::dvec3 reference = options.reference.value_or(display.viewer.value_or(glm::dvec3(0.0)) * s);
 
   SourceField source = SourceField::FullSphere;
@@ -117,15 +198,21 @@ DisplayConfig finishImport(ImportedDisplay display, const std::string& sourceNam
   if (name.empty()) name = std::filesystem::path(sourceName).stem().string();
   json config = {{"name", name}, {"reference", vecJson(reference)}, {"source", sourceJson},
                  {"walls", json::array()}};
+  if (options.edgeBlendGamma) config["edge_blend"] = {{"gamma", *options.edgeBlendGamma}};
   if (display.eyeSeparation)
     config["stereo"] = {{"eye_separation", *display.eyeSeparation * s}};
+  else if (display.eyeSeparationMetres)
+    config["stereo"] = {{"eye_separation", *display.eyeSeparationMetres}};
   for (const ImportedWall& w : walls)
     config["walls"].push_back({{"name", w.name},
                                {"lower_left", vecJson(w.lowerLeft)},
                                {"lower_right", vecJson(w.lowerRight)},
                                {"upper_left", vecJson(w.upperLeft)},
                                {"resolution", json::array({w.width, w.height})}});
-  for (std::size_t i = 0; i < walls.size(); ++i) config["walls"][i].update(walls[i].output);
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    config["walls"][i].update(walls[i].output);
+    if (walls[i].preview) config["walls"][i]["preview"] = true;
+  }
   DisplayConfig result = parseDisplayConfig(config, sourceName);
   if (report) {
     report->format = display.format;

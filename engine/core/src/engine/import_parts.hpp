@@ -19,6 +19,7 @@ struct ImportedWall {
   std::string element;  // where it came from, for notes: "node 0 window 1 viewport 0"
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};  // file units
   int width = 0, height = 0;
+  bool preview = false;  // covers other walls on their plane (set by finishImport)
   // "window" / "stereo_output" for the wall's JSON (display_output.hpp), where the file says.
   nlohmann::json output = nlohmann::json::object();
 };
@@ -42,6 +43,7 @@ struct ImportedDisplay {
   std::vector<ImportedWall> walls;
   std::optional<glm::dvec3> viewer;        // file units
   std::optional<double> eyeSeparation;     // file units
+  std::optional<double> eyeSeparationMetres;  // a format's default, in metres whatever the unit
   std::vector<std::string> notes;
 };
 

@@ -105,8 +105,8 @@ DisplayConfig parseParaViewPvx(const std::string& text, const std::string& sourc
   const pugi::xml_node process = serverProcess(xml.root("pvx"));
   detail::ImportedDisplay display;
   display.format = DisplayFormat::ParaViewPvx;
-  // ParaView's default is metres whatever the file's unit; finishImport multiplies by scale.
-  display.eyeSeparation = kParaViewEyeSeparation / options.scale;
+  // ParaView's default is metres whatever the file's unit.
+  display.eyeSeparationMetres = kParaViewEyeSeparation;
   if (const pugi::xml_node eyes = process.child("EyeSeparation"))
     display.eyeSeparation = xml.number(eyes, "Value");
   std::size_t index = 0;

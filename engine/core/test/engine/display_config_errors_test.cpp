@@ -226,13 +226,17 @@ TEST(DisplayConfigErrors, ReferenceOutsideTheDisplayHullIsNamed) {
 }
 
 TEST(DisplayConfigErrors, OverlappingCoplanarWallsAreNamed) {
+  // Shifted sideways and up: the two overlap on one plane (projectors may) but their union is no
+  // rectangle, so they form no display surface (display_surfaces.hpp).
   json j = cave("flat-wall.json");
   json second = j["walls"][0];
   second["name"] = "shifted";
-  for (const char* corner : {"lower_left", "lower_right", "upper_left"})
+  for (const char* corner : {"lower_left", "lower_right", "upper_left"}) {
     second[corner][0] = second[corner][0].get<double>() + 1.0;
+    second[corner][1] = second[corner][1].get<double>() + 0.2;
+  }
   j["walls"].push_back(second);
-  expectInvalid(j, {"'screen'", "'shifted'", "overlap"});
+  expectInvalid(j, {"'screen'", "'shifted'", "overlap", "rectangle"});
 }
 
 TEST(DisplayConfigErrors, CrossingWallsAreNamed) {

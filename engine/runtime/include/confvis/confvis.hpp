@@ -18,6 +18,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/cube_map.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/base/png_io.hpp"
@@ -42,6 +43,7 @@
 #include "confvis/engine/viewer.hpp"
 #include "confvis/engine/default_edge_length.hpp"
 #include "confvis/engine/display_output.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 #include "confvis/engine/scene_units.hpp"
 #include "confvis/engine/tracking_config.hpp"
 
@@ -63,11 +65,14 @@
 #include "confvis/conformal/intrinsic_triangulation.hpp"
 #include "confvis/conformal/mesh.hpp"
 #include "confvis/conformal/mesh_generators.hpp"
+#include "confvis/conformal/mesh_source.hpp"
 #include "confvis/conformal/mobius.hpp"
 #include "confvis/conformal/obj_output.hpp"
+#include "confvis/conformal/real_mesh_map.hpp"
 #include "confvis/conformal/ricci_flow.hpp"
 #include "confvis/conformal/bake_verdict.hpp"
 #include "confvis/conformal/map_alignment_quality.hpp"
+#include "confvis/conformal/map_accuracy.hpp"
 
 // Keeping the map around the tracked head.
 #include "confvis/runtime/background_bake.hpp"
@@ -91,11 +96,12 @@
 #include "confvis/runtime/window_presenter.hpp"
 
 // Rendering through the map (backends: Embree, Vulkan): render plans and eyeName(), typed frame
-// statistics (frameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).
+// statistics (FrameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).
 #include "confvis/backends/analytic_maps.hpp"
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/frame_stats.hpp"
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/backends/retarget_map_files.hpp"
@@ -112,6 +118,11 @@
 // GLSL include confvis_warp.glsl (installed in ${confvis_SHADER_DIR}).
 #if __has_include(<vulkan/vulkan.h>)
 #include "confvis/backends/vulkan/warp_interface.hpp"
+// ... and the map upload, per-wall bounds and conformal pre-pass on the application's device.
+#include "confvis/backends/vulkan/byo_device.hpp"
+#include "confvis/backends/vulkan/byo_frame.hpp"
+#include "confvis/backends/vulkan/byo_prepass.hpp"
+#include "confvis/backends/vulkan/byo_upload.hpp"
 // The Vulkan backend on the application's device, rendering into its images.
 #include "confvis/backends/vulkan/external_device.hpp"
 #endif

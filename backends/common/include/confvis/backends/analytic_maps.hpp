@@ -4,9 +4,10 @@
 // with its ceiling missing.
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // T_ray(d) = rotation * d everywhere (a rotation is conformal); T_geom is its inverse. With this
 // map W is the rigid rotation about c, so a conformal render equals a plain render whose

@@ -9,9 +9,10 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Folds `word` into `hash` with splitmix64's finaliser (every input bit reaches every output
 // bit), for fingerprints of maps and the caches keyed by them.

@@ -10,14 +10,16 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/backends/frame_stats.hpp"
 #include "confvis/backends/view_override.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/scene.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class RenderMode { Plain, Conformal };
 // Stereo eyes in conformal mode (design note §5): Exact marches the bent virtual ray
@@ -28,6 +30,8 @@ enum class StereoRays { Exact, Fast };
 // reference point c is placed at `position`, and the physical frame is turned by yaw (degrees,
 // about +y, positive turns left) then pitch (degrees, about the turned +x, positive looks up).
 // A physical point p is the virtual point position + R (p - c).
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct VirtualCamera {
   glm::dvec3 position{0.0};
   double yawDegrees = 0.0;
@@ -35,6 +39,7 @@ struct VirtualCamera {
   glm::dmat3 rotation() const;
 };
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct RenderSettings {
   RenderMode mode = RenderMode::Conformal;
   std::vector<Eye> eyes{Eye::Center};  // mono: {Center}; stereo: {Left, Right}
@@ -54,15 +59,19 @@ struct RenderSettings {
   std::vector<ViewOverride> views;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct WallImage {
   std::string wall;
   Eye eye = Eye::Center;
   ImageRGBA image;  // linear RGB, alpha 1 where something was drawn
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct RenderResult {
   std::vector<WallImage> images;   // walls in settings order (config order), eyes in settings order
-  nlohmann::json stats = nlohmann::json::object();  // backend, seconds, rays per second, ...
+  FrameStats stats;  // the frame's times and counts (frame_stats.hpp); toJson for files
 };
 
 // Thread-safety: not thread-safe; call a backend from one thread at a time (it keeps the scene,

@@ -13,8 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Returns the report written to render.json: `extra` (e.g. the CLI's scene and timing entries)
 // merged over the entries this function fills in. Throws Error naming a file that cannot be

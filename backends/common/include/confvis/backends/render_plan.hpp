@@ -5,9 +5,10 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/engine/view.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct PlannedImage {
   int wallIndex = 0;  // into config.walls
@@ -19,6 +20,8 @@ struct PlannedImage {
   int width = 0, height = 0;  // output pixels: round(wall resolution * scale), at least 1
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct RenderPlan {
   std::vector<PlannedImage> images;  // walls in settings order, each with its eyes in order
   bool hasOffCentreEyes = false;     // some eye is not at the reference point

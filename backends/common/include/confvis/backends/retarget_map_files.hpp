@@ -4,10 +4,11 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A directory written by `confvis bake` or writeRetargetMapDirectory (bake_files.hpp), read by
 // loadBakeDirectory: verified as a whole (each file's size and checksum in bake.json, float32

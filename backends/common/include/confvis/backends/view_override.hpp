@@ -9,9 +9,10 @@
 #include <glm/glm.hpp>
 
 #include "confvis/engine/view.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct ViewOverride {
   std::string wall;

@@ -10,9 +10,10 @@
 #include <glm/glm.hpp>
 
 #include "confvis/backends/conformal_warp.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Thread-safety: immutable once built; at() may be called from any number of threads at once.
 class WallMapGrid {

@@ -9,8 +9,9 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // How the eyes of a wall are drawn in stereo.
 enum class StereoPasses {
@@ -22,6 +23,8 @@ enum class StereoPasses {
   PerEye,     // always one pass per eye
 };
 
+// Thread-safety: a value (options): read it from any number of threads at once.
+// onValidationMessage is called on the thread that calls the backend, during those calls.
 struct VulkanOptions {
   // Which device renders: "" or "auto" picks the best device that supports everything confvis
   // needs (discrete GPU, then integrated, then virtual, then CPU such as lavapipe); a decimal

@@ -5,7 +5,9 @@
 #include <functional>
 #include <string>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // Calls write(tempPath), then renames tempPath to path. On any failure the temporary is removed
 // and an Error(IoFailure) naming `path` is thrown. Creates missing parent directories.

@@ -22,11 +22,12 @@
 #include <array>
 #include <filesystem>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/base/vec3.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class CubeFace { PosX, NegX, PosY, NegY, PosZ, NegZ };  // OpenEXR's and Vulkan's order
 
@@ -34,6 +35,8 @@ inline constexpr std::array<CubeFace, 6> kCubeFaces = {
     CubeFace::PosX, CubeFace::NegX, CubeFace::PosY, CubeFace::NegY, CubeFace::PosZ, CubeFace::NegZ};
 const char* toString(CubeFace face) noexcept;
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct CubeMap {
   int faceSize = 0;                // N
   std::array<ImageRGBA, 6> faces;  // indexed by CubeFace, each N x N

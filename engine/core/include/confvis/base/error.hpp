@@ -4,7 +4,9 @@
 #include <stdexcept>
 #include <string>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 enum class ErrorCode {
   InvalidInput,     // malformed config, degenerate geometry, non-disk mesh, bad option

@@ -5,9 +5,10 @@
 #include <filesystem>
 #include <utility>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/image.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Storage type in the file. Half is enough for colour; maps of directions need Float
 // (half quantises directions to ~0.03 degrees, close to a CAVE pixel).

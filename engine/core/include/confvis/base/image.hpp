@@ -5,8 +5,12 @@
 #include <cstddef>
 #include <vector>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
 
+namespace confvis CONFVIS_API {
+
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct ImageRGBA {
   int width = 0, height = 0;
   std::vector<float> pixels;  // RGBA interleaved, row-major, row 0 at the top

@@ -7,7 +7,9 @@
 #include <string>
 #include <string_view>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // Longest name accepted as one path component (bytes); file systems allow 255 and the writers
 // add suffixes such as "-left.exr".

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 nlohmann::json parseJsonText(const std::string& text, const std::string& sourceName);
 

@@ -3,9 +3,10 @@
 // authoritative outputs are EXR. Written atomically.
 #include <filesystem>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/image.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct PngOptions {
   float exposure = 1.0f;  // RGB is multiplied by this before encoding (alpha is not)

@@ -7,8 +7,12 @@
 #include <mutex>
 #include <string>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
 
+namespace confvis CONFVIS_API {
+
+// Thread-safety: advance() may be called from any number of threads at once (workers);
+// construction, finish() and destruction from one thread.
 class Progress {
  public:
   Progress(std::string label, std::size_t total, bool enabled = true);

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <string>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // `bytes` as UTF-8 with '\n' line ends: a UTF-8 BOM is dropped, UTF-16 (LE or BE, with a BOM, or
 // without one when every other byte of the start is NUL) is transcoded, "\r\n" and lone '\r'

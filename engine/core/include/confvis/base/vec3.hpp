@@ -6,7 +6,9 @@
 
 #include <glm/glm.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 using Vec3d = glm::dvec3;
 

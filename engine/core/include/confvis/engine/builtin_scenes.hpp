@@ -8,10 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/scene.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct BuiltinSceneOptions {
   // Mesh density, 0 = the scene's default:
   //   checker-sphere: quads per cube-face edge (default 32; a multiple of 8 keeps every

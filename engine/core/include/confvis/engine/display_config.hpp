@@ -14,12 +14,16 @@
 //     "cube_resolution": 256,                   optional, texels per face, 8..8192
 //     "stereo": {"eye_separation": 0.064},      optional, metres, >= 0
 //     "tracking": {...},                        optional, the head tracker (tracking_config.hpp)
+//     "edge_blend": {"gamma": 2.2},             optional: blend ramps where projector walls
+//                                               overlap (display_surfaces.hpp)
 //     "walls": [{                               required, at least one
 //       "name": "front",                        required, unique
 //       "lower_left": [x,y,z], "lower_right": [x,y,z], "upper_left": [x,y,z],   required
 //       "resolution": [width, height],          required, pixels of the lit area
 //       "bezel": {"left": 0, "right": 0, "bottom": 0, "top": 0}   optional, metres
 //       "node": "render-3" | 3                  optional: the cluster host or rank that draws it
+//       "preview": true                         optional: a window showing part of the display
+//                                               again (a master's preview), no display surface
 //       "window": {...}, "stereo_output": "mono"   optional, live display (display_output.hpp)
 //     }]
 //   }
@@ -30,10 +34,11 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/tracking_config.hpp"
 #include "confvis/engine/display_output.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Unlit frame inside a wall rectangle, metres from each edge. The wall's pixels cover only the
 // lit area, so a tiled wall is modelled by rectangles that share edges, with bezels inside them.
@@ -41,6 +46,8 @@ struct Bezel {
   double left = 0, right = 0, bottom = 0, top = 0;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct Wall {
   std::string name;
   glm::dvec3 lowerLeft{0.0}, lowerRight{0.0}, upperLeft{0.0};
@@ -49,6 +56,10 @@ struct Wall {
   WallOutput output;  // where its pixels go on a live display; not part of the hash
   std::string node;  // cluster host name or rank number that draws this wall; empty: any. Not
                      // part of the hash
+  // A window that shows part of the display again (an operator's preview spanning the projector
+  // walls it covers): rendered like any wall, but no display surface of its own, so the map and
+  // the edge blend ignore it. It must lie inside the walls it repeats (display_surfaces.hpp).
+  bool preview = false;
 
   glm::dvec3 upperRight() const;
   glm::dvec3 right() const;   // unit, lower-left -> lower-right
@@ -67,6 +78,17 @@ struct Wall {
 
 enum class SourceField { FullSphere, Hemisphere };
 
+// Edge blending of overlapping projector walls (display_surfaces.hpp, edge_blend.hpp): in an
+// overlap each projector's light ramps down linearly towards its own edge so the projectors' light
+// sums to one projector's; the ramp is applied to the pixel signal as weight^(1/gamma), gamma
+// being the projectors' response (signal^gamma = light).
+struct EdgeBlend {
+  bool enabled = false;
+  double gamma = 2.2;
+};
+
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct DisplayConfig {
   std::string name;
   std::vector<Wall> walls;
@@ -77,8 +99,9 @@ struct DisplayConfig {
   int cubeResolution = 256;                  // baked cube-map face size, texels
   double eyeSeparation = 0.064;              // metres
   TrackingConfig tracking;                   // live head tracker; not part of the hash
-  // Hex FNV-1a 64 of toJson(*this).dump() without "tracking" and the walls' outputs and nodes:
-  // identifies a display for caches of baked maps (none of those change a map).
+  EdgeBlend edgeBlend;                       // not part of the hash (it changes no map)
+  // Hex FNV-1a 64 of toJson(*this).dump() without "tracking", "edge_blend" and the walls' outputs
+  // and nodes: identifies a display for caches of baked maps (none of those change a map).
   std::string hash;
 
   // Throws Error(InvalidInput) naming the unknown wall and listing the known ones.

@@ -9,10 +9,12 @@
 //     ParaView has no nominal viewer position: the reference is the room origin unless
 //     ImportOptions::reference says otherwise.
 // Both formats use the OpenGL frame (+y up, -z forward) that confvis uses; lengths are taken
-// as metres times ImportOptions::scale. The implied fourth corner is filled in (SGCT:
+// as metres times ImportOptions::scale (millimetres are recognised by the display's size). The implied fourth corner is filled in (SGCT:
 // lower-right = lower-left + upper-right - upper-left; ParaView: upper-left = lower-left +
 // upper-right - lower-right), and the result goes through the same validation as a confvis
-// JSON config (rectangles, walls facing the reference, no overlaps), so every error names the
+// JSON config (rectangles, walls facing the reference, overlaps only as projectors on one plane
+// do; a window covering two or more others on their plane is imported as a preview, with a
+// note: display_surfaces.hpp), so every error names the
 // file and the element (node/window/viewport or machine) at fault.
 // Formats and samples: configs/imported/README.md.
 #include <filesystem>
@@ -23,18 +25,28 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class DisplayFormat { Confvis, SgctJson, SgctXml, ParaViewPvx };
 
 const char* toString(DisplayFormat format) noexcept;
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct ImportOptions {
   std::string name;                       // display name; empty: the file name without extension
   std::optional<glm::dvec3> reference;    // overrides the file's viewer position (metres)
-  double scale = 1.0;                     // metres per file unit (0.3048 for a CAVE in feet)
+  // Metres per file unit (0.3048 for a CAVE in feet). Unset: 1, except that a display spanning
+  // over 100 file units is read as millimetres (SGCT files often are) and converted, with a note.
+  std::optional<double> scale;
+  // Windows to leave out, by the wall name the import gives them (before repeated names get
+  // "-2"), e.g. a preview window on the master; a name that matches no window is an error.
+  std::vector<std::string> skipWindows;
+  // Turns on edge blending of overlapping projector walls with this projector gamma
+  // (DisplayConfig::edgeBlend); SGCT files carry no blend settings.
+  std::optional<double> edgeBlendGamma;
   // Resolution of walls whose file gives none (a .pvx <Machine> without Geometry); without it
   // such a wall is an error naming the machine.
   std::optional<std::pair<int, int>> fallbackResolution;

@@ -21,7 +21,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 enum class StereoOutput { Mono, SideBySide, TopBottom, Left, Right };
 
@@ -41,13 +43,15 @@ struct WallWindow {
   bool decorated = true;
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct WallOutput {
   std::optional<WallWindow> window;
   std::optional<StereoOutput> stereo;
   bool empty() const { return !window && !stereo; }
 };
 
-namespace detail {
+namespace detail CONFVIS_API {
 
 // Reads "window" and "stereo_output" of one wall's JSON object; `where` ("cave5.json: wall
 // 'front'") prefixes every error (Error(InvalidInput)). Absent keys leave the output empty.

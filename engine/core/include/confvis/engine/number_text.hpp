@@ -6,7 +6,10 @@
 
 #include <glm/glm.hpp>
 
-namespace confvis::detail {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace detail CONFVIS_API {
 
 // The whole string (surrounding blanks allowed) must be one finite number; nullopt otherwise.
 std::optional<double> parseNumber(std::string_view text);
@@ -14,4 +17,5 @@ std::optional<double> parseNumber(std::string_view text);
 // "x y z" separated by blanks (ParaView corners). nullopt unless exactly three finite numbers.
 std::optional<glm::dvec3> parseTriple(std::string_view text);
 
-}  // namespace confvis::detail
+}  // namespace detail
+}  // namespace confvis

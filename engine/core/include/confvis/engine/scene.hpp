@@ -9,11 +9,15 @@
 #include <string>
 #include <vector>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // An RGBA image in linear colour (sRGB-encoded files are decoded on load).
 // Orientation follows glTF: row 0 is the top of the image and lies at uv v = 0; u grows to the
 // right. OBJ files (v = 0 at the bottom) are flipped on load so that every Scene uses this one.
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct Texture {
   int width = 0;
   int height = 0;
@@ -60,6 +64,8 @@ struct Mesh {
   int material = -1;  // index into Scene::materials, -1 = default white
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct Bounds {
   glm::vec3 min{std::numeric_limits<float>::max()};
   glm::vec3 max{std::numeric_limits<float>::lowest()};
@@ -70,6 +76,8 @@ struct Bounds {
   }
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct Scene {
   std::string name;
   std::vector<Mesh> meshes;

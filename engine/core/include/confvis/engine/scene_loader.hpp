@@ -13,9 +13,10 @@
 #include <filesystem>
 #include <string>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/scene.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Dispatches by extension (case-insensitive): .obj, .gltf, .glb.
 Scene loadScene(const std::filesystem::path& path);

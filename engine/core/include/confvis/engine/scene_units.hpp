@@ -4,10 +4,11 @@
 #include <optional>
 #include <string>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/scene.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A scene more than this many times the display's size gets a hint.
 inline constexpr double kSceneUnitsHintRatio = 100.0;

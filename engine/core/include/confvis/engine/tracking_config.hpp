@@ -15,14 +15,17 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Length unit of the tracker's positions. ProtocolDefault: the protocol's own (ART DTrack sends
 // millimetres, the JSON-lines protocol metres).
 enum class TrackingUnit { ProtocolDefault, Millimetres, Metres };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct TrackingConfig {
   glm::dvec3 offset{0.0};  // metres, room frame
   // R = Ry(yaw) * Rx(pitch) * Rz(roll) about the room's axes (+y up, -z forward), degrees.

@@ -6,11 +6,15 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
+// It points to its wall: the DisplayConfig must outlive it and stay unchanged.
 struct WallView {
   const Wall* wall = nullptr;  // the configured wall; owned by the caller (e.g. DisplayConfig)
   Eye eye = Eye::Center;

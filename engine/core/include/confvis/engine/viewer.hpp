@@ -3,10 +3,14 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 enum class Eye { Left, Center, Right };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct HeadPose {
   glm::dvec3 position{0.0};
   // Identity: looking down -z with +y up, the physical frame's "forward" (design note §2).

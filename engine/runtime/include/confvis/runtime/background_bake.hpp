@@ -15,9 +15,10 @@
 // its bake thread), several calls at once included.
 #include <thread>
 
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/map_follower.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Half the hardware threads, at least one: the default thread count of backgroundBake().
 int defaultBackgroundBakeThreads();

@@ -4,9 +4,10 @@
 // bake runs. A bake run through this wrapper lowers its thread's priority first (Linux nice
 // values are per thread, and the bake's own worker threads inherit it), so frames keep their
 // cores and the bake takes what is left (it then takes longer on a busy machine).
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/map_follower.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // `niceness`: 0 (unchanged) .. 19 (lowest). Failing to lower it is not an error (the bake runs
 // as before).

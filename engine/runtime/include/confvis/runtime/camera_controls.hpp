@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/display_window.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: not thread-safe; call it from the thread that polls the windows' events.
 class CameraControls {
  public:
   double metresPerSecond = 1.5;

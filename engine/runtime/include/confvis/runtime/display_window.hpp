@@ -4,14 +4,16 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/window_plan.hpp"
 
 struct GLFWwindow;
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // glfwInit / glfwTerminate. Throws Error(DeviceUnsupported) when no display can be opened
 // (no DISPLAY / WAYLAND_DISPLAY), with GLFW's own reason.
+// Thread-safety: not thread-safe; make, poll and destroy it on the main thread (GLFW's rule).
 class GlfwSession {
  public:
   GlfwSession();
@@ -30,6 +32,7 @@ struct WindowInput {
   bool resized = false;      // the framebuffer changed size
 };
 
+// Thread-safety: not thread-safe; use it on the main thread only, as GLFW requires.
 class DisplayWindow {
  public:
   DisplayWindow(const WindowPlan& plan, const std::string& title);

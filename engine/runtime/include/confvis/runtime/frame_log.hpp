@@ -8,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 struct FrameRecord {
   double frameSeconds = 0.0;    // start of this frame to the start of the next (or the end)
@@ -32,6 +34,8 @@ struct FrameTimeSummary {
 // Nearest-rank percentiles (p in [0, 100]) of the frame times; all zero for no frames.
 FrameTimeSummary summarize(const std::vector<double>& frameSeconds);
 
+// Thread-safety: not thread-safe; one thread adds records (the frame loop); const members may
+// be called from any number of threads while none adds.
 class FrameLog {
  public:
   void add(const FrameRecord& record) { records_.push_back(record); }

@@ -4,9 +4,10 @@
 #include <cstdint>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A plain struct: an application extends it by deriving (struct MyState : ClusterFrameState
 // { int level; };) and passing its own type to Cluster::exchangeFrame. Trivially copyable.

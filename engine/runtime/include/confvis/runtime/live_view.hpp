@@ -10,10 +10,11 @@
 #include <nlohmann/json.hpp>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/runtime/tracker.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct LiveViewOptions {
   bool stereo = false;   // render left and right eyes (walls show them per stereo_output)

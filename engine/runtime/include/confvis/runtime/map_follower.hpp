@@ -37,11 +37,12 @@
 
 #include <glm/glm.hpp>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Bakes `config` (whose reference is already `reference`) into a map around `reference`.
 using BakeFunction =
@@ -53,6 +54,8 @@ struct MapFollowerOptions {
   double radius = 0.10;
 };
 
+// Thread-safety: a value; its map and display are immutable and may be shared with other
+// threads for as long as they are held.
 struct FollowerFrame {
   std::shared_ptr<const RetargetMap> map;  // never null; stays valid while the frame holds it
   // The follower's display with its reference at map->reference (never null): render `map`
@@ -63,6 +66,8 @@ struct FollowerFrame {
   bool baking = false;                     // a re-bake is running in the background
 };
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct MapFollowerStats {
   int bakesStarted = 0;    // background re-bakes only, not the initial map
   int bakesSucceeded = 0;  // swapped in
@@ -73,6 +78,8 @@ struct MapFollowerStats {
 // front of every wall) and re-hashed. Throws Error(InvalidInput) naming the wall otherwise.
 DisplayConfig withReference(const DisplayConfig& config, const glm::dvec3& reference);
 
+// Thread-safety: not thread-safe: one thread (the render thread) makes every call; the bakes
+// run on the follower's own thread (see above).
 class MapFollower {
  public:
   // Bakes the first map around config.reference on the calling thread (start-up may wait;

@@ -14,8 +14,9 @@
 #include <vulkan/vulkan.h>
 
 #include "confvis/backends/vulkan/external_device.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 namespace vulkan {
 class VulkanContext;
@@ -35,6 +36,8 @@ struct ValidationReport {
   std::vector<std::string> messages;  // the first few, for the report
 };
 
+// Thread-safety: not thread-safe; one thread uses it and the presenters made with it
+// (validation() may be read from any thread: the messenger's count is locked).
 class PresentContext {
  public:
   // GLFW must be initialised (GlfwSession). Throws Error(DeviceUnsupported) when no device can

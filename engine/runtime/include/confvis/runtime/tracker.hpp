@@ -10,10 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct TrackedPose {
   HeadPose head;
   double seconds = 0.0;  // when the pose was measured, on the tracker's clock

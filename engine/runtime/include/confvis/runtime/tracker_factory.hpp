@@ -3,10 +3,11 @@
 #include <memory>
 #include <string>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/runtime/tracker.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // spec: "path:FILE.csv" plays a recorded head path in real time, looping. Live trackers
 // ("dtrack:PORT", ART DTrack2 ASCII over UDP; "udp:PORT", JSON lines over UDP) take the

@@ -29,7 +29,9 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // Bounds on the work one datagram can cause; beyond them it is dropped.
 inline constexpr std::size_t kMaxDatagramBytes = 16384;

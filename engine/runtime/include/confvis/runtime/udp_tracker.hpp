@@ -10,14 +10,18 @@
 #include <optional>
 #include <thread>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/tracking_config.hpp"
 #include "confvis/runtime/tracker.hpp"
 #include "confvis/runtime/tracker_packets.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 enum class TrackerProtocol { DTrack, JsonLines };
 
+// Thread-safety: latest() and status() may be called from any number of threads at once
+// (a short lock; the receiver thread is the tracker's own); construction and destruction from
+// one thread.
 class UdpTracker : public Tracker {
  public:
   // Binds UDP `port` on every interface (0: an ephemeral port, see port()) and starts the

@@ -4,9 +4,10 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Walls per rank, in config order. A wall's `node` names a rank ("3") or a host name: a host's
 // walls are dealt in order to the ranks on that host. Walls without a node are dealt in config

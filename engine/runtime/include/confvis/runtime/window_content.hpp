@@ -5,10 +5,11 @@
 #include <cstdint>
 #include <functional>
 
+#include "confvis/base/export.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/runtime/window_plan.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // imageOf(eye) returns the wall's rendered image of that eye (never null). `out` holds
 // plan.contentWidth x plan.contentHeight RGBA pixels, top row first. Throws Error(Internal) if

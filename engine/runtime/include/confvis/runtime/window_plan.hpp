@@ -6,10 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/export.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/viewer.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A monitor as the window system reports it (GLFW: name, position, current video mode and the
 // work area left by panels).

@@ -13,11 +13,12 @@
 
 #include <vulkan/vulkan.h>
 
+#include "confvis/base/export.hpp"
 #include "confvis/runtime/present_context.hpp"
 
 struct GLFWwindow;
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A presented frame read back from the swapchain image: RGBA 8-bit codes, top row first.
 struct Screenshot {
@@ -25,6 +26,8 @@ struct Screenshot {
   std::vector<std::uint8_t> rgba;
 };
 
+// Thread-safety: not thread-safe; one thread presents (the one that owns the window and the
+// PresentContext's queue).
 class WindowPresenter {
  public:
   // vsync: FIFO; otherwise MAILBOX, else IMMEDIATE, where the surface offers them (else FIFO).

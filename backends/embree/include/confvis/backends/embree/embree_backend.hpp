@@ -6,9 +6,11 @@
 #include <string>
 
 #include "confvis/backends/render_backend.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
+// Thread-safety: a value (options): read it from any number of threads at once.
 struct EmbreeOptions {
   // Exact stereo rays: straight segments marched before the curve's straight asymptote.
   int curvedRaySegments = 12;

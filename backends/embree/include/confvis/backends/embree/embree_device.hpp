@@ -7,7 +7,9 @@
 #include <mutex>
 #include <string>
 
-namespace confvis {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
 
 // Thread-safety: Embree calls onError from any thread (recorded under a mutex); check() from one
 // thread at a time, the thread that drives the device.

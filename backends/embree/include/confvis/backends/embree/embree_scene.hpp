@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "confvis/backends/embree/embree_device.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/engine/scene.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // Thread-safety: immutable once built; rays may be traced through handle() from any number of
 // threads at once (Embree committed scenes are thread-safe to intersect).

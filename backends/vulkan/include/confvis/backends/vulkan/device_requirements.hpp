@@ -6,7 +6,10 @@
 #include <string>
 #include <vector>
 
-namespace confvis::vulkan {
+#include "confvis/base/export.hpp"
+
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 enum class DeviceKind { Discrete, Integrated, Virtual, Cpu, Other };
 const char* toString(DeviceKind kind) noexcept;
@@ -44,4 +47,5 @@ std::vector<std::string> missingRequirements(const DeviceCapabilities& device);
 std::size_t chooseDevice(const std::vector<DeviceCapabilities>& devices,
                          const std::string& request);
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis

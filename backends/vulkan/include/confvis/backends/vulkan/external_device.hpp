@@ -25,8 +25,9 @@
 
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/backends/vulkan_backend.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 struct VulkanDeviceHandles {
   VkInstance instance = VK_NULL_HANDLE;
@@ -39,6 +40,8 @@ struct VulkanDeviceHandles {
 // The device features the backend needs, chained and ready for VkDeviceCreateInfo::pNext:
 //   VulkanRequiredFeatures required;  createInfo.pNext = &required.features;
 // Not copyable (the chain points into itself).
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct VulkanRequiredFeatures {
   VkPhysicalDeviceMultiviewFeatures multiview{};  // sType, pNext and the flags: set by the constructor
   VkPhysicalDeviceFeatures2 features{};
@@ -81,6 +84,8 @@ struct VulkanImageTarget {
   VkSemaphore signalSemaphore = VK_NULL_HANDLE;
 };
 
+// Thread-safety: as RenderBackend: one thread at a time; the application must not use the
+// given queue from another thread during a call.
 class VulkanRenderer : public RenderBackend {
  public:
   // Renders every wall and eye the targets name (settings.walls and settings.eyes are taken from
@@ -90,9 +95,9 @@ class VulkanRenderer : public RenderBackend {
   // Error(InvalidInput) naming the culprit: an unknown wall, an eye the settings do not render,
   // a null image, a region outside the image, targets of one image that disagree on layouts or
   // semaphores, a format the device cannot blit into.
-  virtual nlohmann::json renderImages(const DisplayConfig& config, const RetargetMap* map,
-                                      const RenderSettings& settings,
-                                      const std::vector<VulkanImageTarget>& targets) = 0;
+  virtual FrameStats renderImages(const DisplayConfig& config, const RetargetMap* map,
+                                  const RenderSettings& settings,
+                                  const std::vector<VulkanImageTarget>& targets) = 0;
   // The device it renders on (its own, or the application's).
   virtual VulkanDeviceHandles deviceHandles() const = 0;
 };
@@ -103,8 +108,8 @@ std::unique_ptr<VulkanRenderer> makeVulkanRenderer(const VulkanOptions& options 
 
 // On the application's device. VulkanOptions::device, validation and onValidationMessage are
 // ignored (the device is chosen and its instance's messenger installed by the application).
-// Error(DeviceUnsupported) when a handle is null or the physical device lacks a required
-// feature (naming it); the features must also be enabled on `device`, which Vulkan offers no
+// Error(InvalidInput) when a handle is null, Error(DeviceUnsupported) when the queue's family
+// lacks graphics or compute or the physical device lacks a required feature (naming it); the features must also be enabled on `device`, which Vulkan offers no
 // way to check.
 std::unique_ptr<VulkanRenderer> makeVulkanRendererOn(const VulkanDeviceHandles& device,
                                                      const VulkanOptions& options = {});

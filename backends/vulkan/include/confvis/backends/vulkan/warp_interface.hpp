@@ -8,9 +8,11 @@
 
 #include <vulkan/vulkan.h>
 
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
-namespace confvis::vulkan {
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 // Defaults of CONFVIS_WARP_SET / CONFVIS_WARP_BINDING in confvis_warp.glsl.
 inline constexpr std::uint32_t kWarpDescriptorSet = 1;
@@ -35,4 +37,5 @@ VkDescriptorSetLayoutBinding warpLayoutBinding(VkShaderStageFlags stages);
 // cut, where it fetches the four texels with textureGather).
 VkSamplerCreateInfo warpSamplerInfo();
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis

@@ -32,14 +32,16 @@
 
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/export.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/viewer.hpp"
 #include "confvis/runtime/frame_state.hpp"
 
-namespace confvis {
+namespace confvis CONFVIS_API {
 
 // A rank lost or refused (config mismatch); the message names rank, host and walls.
+// Thread-safety: an immutable value, as Error.
 class ClusterError : public Error {
  public:
   using Error::Error;
@@ -50,6 +52,7 @@ struct ClusterOptions {
   std::size_t mapChunkBytes = std::size_t{1} << 20;  // a new map travels in pieces of this size
 };
 
+// Thread-safety: not thread-safe: one thread per process makes every call (see above).
 class Cluster {
  public:
   // Collective. Checks that every rank runs the same confvis version on a display with the same

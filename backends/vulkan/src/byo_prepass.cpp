@@ -1,0 +1,205 @@
+// Bring-your-own Vulkan: the backend's conformal pre-pass (conformal_prepass.cpp) on the
+// application's device and command buffer (byo_prepass.hpp).
+#include "confvis/backends/vulkan/byo_prepass.hpp"
+
+#include <array>
+#include <cstring>
+#include <string>
+
+#include "byo_internal.hpp"
+#include "confvis/backends/vulkan/warp_interface.hpp"
+#include "confvis/base/error.hpp"
+#include "conformal_prepass.hpp"
+#include "error_walls.hpp"
+#include "gpu_scene.hpp"
+#include "pipelines.hpp"
+#include "vk_check.hpp"
+
+namespace confvis::vulkan {
+namespace {
+
+[[noreturn]] void badGeometry(const std::string& what) {
+  throw Error(ErrorCode::InvalidInput, "pre-pass geometry: " + what);
+}
+
+void checkAttribute(const VertexLayout& layout, const char* name, std::uint32_t offset,
+                    VkFormat format, VkFormat expected, std::uint32_t bytes) {
+  if (offset == kNoAttribute) return;
+  if (format != expected)
+    badGeometry(std::string(name) + " format " + std::to_string(format) + " is not supported (" +
+                (expected == VK_FORMAT_R32G32_SFLOAT ? "R32G32_SFLOAT" : "R32G32B32_SFLOAT") +
+                " only)");
+  if (std::size_t{offset} + bytes > layout.stride)
+    badGeometry(std::string(name) + " at offset " + std::to_string(offset) + " (" +
+                std::to_string(bytes) + " bytes) does not fit the stride " +
+                std::to_string(layout.stride));
+}
+
+// The application's vertices in the backend's layout (GpuScene's Vertex).
+std::vector<Vertex> convertVertices(const PrepassGeometry& geometry) {
+  const VertexLayout& layout = geometry.layout;
+  if (geometry.vertices == nullptr || geometry.vertexCount == 0) badGeometry("no vertices");
+  if (layout.positionOffset == kNoAttribute) badGeometry("the layout has no position");
+  checkAttribute(layout, "position", layout.positionOffset, layout.positionFormat,
+                 VK_FORMAT_R32G32B32_SFLOAT, 12);
+  checkAttribute(layout, "normal", layout.normalOffset, layout.normalFormat,
+                 VK_FORMAT_R32G32B32_SFLOAT, 12);
+  checkAttribute(layout, "uv", layout.uvOffset, layout.uvFormat, VK_FORMAT_R32G32_SFLOAT, 8);
+  const auto* bytes = static_cast<const unsigned char*>(geometry.vertices);
+  std::vector<Vertex> vertices(geometry.vertexCount, Vertex{});
+  for (std::size_t i = 0; i < geometry.vertexCount; ++i) {
+    const unsigned char* v = bytes + i * layout.stride;
+    std::memcpy(&vertices[i].position, v + layout.positionOffset, 12);
+    if (layout.normalOffset != kNoAttribute) std::memcpy(&vertices[i].normal, v + layout.normalOffset, 12);
+    if (layout.uvOffset != kNoAttribute) std::memcpy(&vertices[i].uv, v + layout.uvOffset, 8);
+    if (!std::isfinite(vertices[i].position.x) || !std::isfinite(vertices[i].position.y) ||
+        !std::isfinite(vertices[i].position.z))
+      badGeometry("vertex " + std::to_string(i) + " has a non-finite position");
+  }
+  return vertices;
+}
+
+std::vector<GpuScene::Draw> meshDraws(const PrepassGeometry& geometry) {
+  const std::size_t indices = geometry.indices.size();
+  if (indices == 0 || indices % 3 != 0)
+    badGeometry(std::to_string(indices) + " indices is not a triangle list");
+  std::vector<PrepassMesh> meshes = geometry.meshes;
+  if (meshes.empty()) meshes.push_back({0, static_cast<std::uint32_t>(indices), 0});
+  std::vector<GpuScene::Draw> draws;
+  for (std::size_t m = 0; m < meshes.size(); ++m) {
+    const PrepassMesh& mesh = meshes[m];
+    const std::string name = "mesh " + std::to_string(m);
+    if (mesh.indexCount % 3 != 0 || std::size_t{mesh.firstIndex} + mesh.indexCount > indices)
+      badGeometry(name + ": indices " + std::to_string(mesh.firstIndex) + " + " +
+                  std::to_string(mesh.indexCount) + " are not triangles within the " +
+                  std::to_string(indices) + " indices");
+    for (std::uint32_t i = mesh.firstIndex; i < mesh.firstIndex + mesh.indexCount; ++i) {
+      const std::int64_t vertex = std::int64_t{geometry.indices[i]} + mesh.vertexOffset;
+      if (vertex < 0 || vertex >= static_cast<std::int64_t>(geometry.vertexCount))
+        badGeometry(name + ": index " + std::to_string(i) + " names vertex " +
+                    std::to_string(vertex) + " of " + std::to_string(geometry.vertexCount));
+    }
+    GpuScene::Draw draw;
+    draw.firstIndex = mesh.firstIndex;
+    draw.indexCount = mesh.indexCount;
+    draw.vertexOffset = mesh.vertexOffset;
+    draw.hasNormals = geometry.layout.normalOffset != kNoAttribute;
+    draws.push_back(draw);
+  }
+  return draws;
+}
+
+}  // namespace
+
+struct ConformalPrepassStep::Impl {
+  // `vertices` and `draws`: the geometry, validated before any Vulkan object is made.
+  Impl(const AppDevice& app, std::vector<Vertex> vertices, const PrepassGeometry& geometry,
+       std::vector<GpuScene::Draw> draws)
+      : context(std::make_unique<VulkanContext>(app)),
+        pipelines(*context),
+        scene(*context, std::move(vertices), geometry.indices, std::move(draws),
+              "pre-pass geometry"),
+        prepass(*context, pipelines),
+        hasNormals(geometry.layout.normalOffset != kNoAttribute) {
+    const VkDevice device = context->device();
+    const std::array<VkDescriptorPoolSize, 3> sizes = {{
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},  // the geom and ray maps
+    }};
+    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    poolInfo.maxSets = 2;
+    poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+    poolInfo.pPoolSizes = sizes.data();
+    VkDescriptorPool created = VK_NULL_HANDLE;
+    check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &created), "vkCreateDescriptorPool");
+    pool = UniqueDescriptorPool(device, created);
+    const std::array<VkDescriptorSetLayout, 2> layouts = {pipelines.frameSetLayout(),
+                                                          pipelines.warpSetLayout()};
+    std::array<VkDescriptorSet, 2> sets{};
+    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    allocInfo.descriptorPool = created;
+    allocInfo.descriptorSetCount = 2;
+    allocInfo.pSetLayouts = layouts.data();
+    check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
+    frameSet = sets[0];
+    warpSet = sets[1];
+    frameUniforms = Buffer(*context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                           BufferMemory::Shared);
+    writeBufferDescriptor(device, frameSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                          frameUniforms.get());
+  }
+
+  std::unique_ptr<VulkanContext> context;  // on the application's device; destroyed last
+  Pipelines pipelines;
+  GpuScene scene;
+  ConformalPrepass prepass;
+  bool hasNormals;
+  Buffer frameUniforms;
+  UniqueDescriptorPool pool;
+  VkDescriptorSet frameSet = VK_NULL_HANDLE, warpSet = VK_NULL_HANDLE;
+};
+
+ConformalPrepassStep::ConformalPrepassStep(const AppDevice& app, const PrepassGeometry& geometry)
+    : impl_(std::make_unique<Impl>(app, convertVertices(geometry), geometry,
+                                   meshDraws(geometry))) {}
+
+ConformalPrepassStep::~ConformalPrepassStep() = default;
+
+void ConformalPrepassStep::record(VkCommandBuffer cmd, const UploadedRetargetMap& map,
+                                  const PrepassFrame& frame) {
+  if (frame.walls.empty())
+    throw Error(ErrorCode::InvalidInput, "pre-pass frame: no wall to draw");
+  const glm::dvec3 c = map.reference();
+  std::vector<glm::vec4> viewParams;
+  std::vector<ErrorWall> errorWalls;
+  for (const PrepassWall& target : frame.walls) {
+    if (target.wall == nullptr) throw Error(ErrorCode::InvalidInput, "pre-pass frame: null wall");
+    const WallWarpBounds bounds =
+        wallWarpBounds(*target.wall, target.width, target.height, c, frame.tolerances);
+    viewParams.emplace_back(bounds.errorAngle, bounds.maxSegmentAngle, bounds.cutGapAngle,
+                            frame.tessellate ? 1.0f : 0.0f);
+    errorWalls.push_back(
+        errorWall(*target.wall, target.width, target.height, c, frame.tolerances.errorPixels));
+  }
+  const PrepassThresholds thresholds =
+      prepassThresholds(viewParams, errorWalls, frame.splitAlongCut, frame.snapCutToRim);
+  const FrameUniforms uniforms{glm::mat4(frame.worldToPhysical), glm::vec4(glm::vec3(c), 1.0f)};
+  std::memcpy(impl_->frameUniforms.mapped(), &uniforms, sizeof(uniforms));
+  const VkDevice device = impl_->context->device();
+  writeImageDescriptor(device, impl_->warpSet, kWarpBinding, map.sampler(), map.geomView());
+  writeImageDescriptor(device, impl_->warpSet, kCoverageBinding, map.sampler(), map.rayView());
+  impl_->prepass.record(cmd, impl_->scene, impl_->frameSet, impl_->warpSet, thresholds);
+}
+
+std::size_t ConformalPrepassStep::meshCount() const { return impl_->scene.draws().size(); }
+VkBuffer ConformalPrepassStep::vertexBuffer() const { return impl_->scene.vertexBuffer(); }
+VkBuffer ConformalPrepassStep::warpBuffer() const { return impl_->prepass.warped(); }
+VkBuffer ConformalPrepassStep::flatIndices() const { return impl_->prepass.flatIndices(); }
+VkBuffer ConformalPrepassStep::pieceIndices() const { return impl_->prepass.pieceIndices(); }
+VkBuffer ConformalPrepassStep::tessellatedIndices() const {
+  return impl_->prepass.tessellatedIndices();
+}
+VkBuffer ConformalPrepassStep::patchLevels() const { return impl_->prepass.patchLevels(); }
+VkBuffer ConformalPrepassStep::drawCommandBuffer() const { return impl_->prepass.commands(); }
+bool ConformalPrepassStep::hasNormals() const { return impl_->hasNormals; }
+
+VkDeviceSize ConformalPrepassStep::drawCommandOffset(std::size_t mesh, DrawList list) {
+  return ConformalPrepass::commandOffset(mesh, static_cast<PrepassList>(list));
+}
+
+VkDrawIndexedIndirectCommand ConformalPrepassStep::drawCommand(std::size_t mesh,
+                                                               DrawList list) const {
+  if (mesh >= meshCount())
+    throw Error(ErrorCode::InvalidInput, "pre-pass: mesh " + std::to_string(mesh) + " of " +
+                                             std::to_string(meshCount()));
+  return impl_->prepass.command(mesh, static_cast<PrepassList>(list));
+}
+
+static_assert(sizeof(ConformalVertex) == sizeof(Vertex));
+static_assert(static_cast<std::uint32_t>(DrawList::Pieces) ==
+              static_cast<std::uint32_t>(PrepassList::Pieces));
+static_assert(static_cast<std::uint32_t>(DrawList::Dropping) ==
+              static_cast<std::uint32_t>(PrepassList::Dropping));
+
+}  // namespace confvis::vulkan

@@ -1,0 +1,188 @@
+// Bring-your-own Vulkan (issue 25): the example application under tools/byo_vulkan_example, with
+// its own instance, device and pipelines, renders through the byo_* helpers what the Vulkan
+// backend renders (the same scene, baked map and walls) within the goldens' tolerance; broken
+// renders (the map's two cube maps swapped, the pre-pass's lists but the flat one left out) must
+// fail the same comparison; bad geometry and maps get one clear error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+// The example application's own headers (not an include directory of the test binary).
+#include "../../../tools/byo_vulkan_example/app_device.hpp"
+#include "../../../tools/byo_vulkan_example/app_renderer.hpp"
+#include "confvis/backends/vulkan/byo_frame.hpp"
+#include "confvis/backends/vulkan/byo_prepass.hpp"
+#include "confvis/backends/vulkan/byo_upload.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/bake_display.hpp"
+#include "confvis/engine/builtin_scenes.hpp"
+#include "vulkan_test_support.hpp"
+
+namespace confvis {
+namespace {
+
+// The goldens' comparison (vulkan_golden_test.cpp): a pixel is bad when a channel is off by more
+// than kTolerance; a render passes with at most kBudget of each wall's pixels bad.
+constexpr float kTolerance = 0.05f;
+constexpr double kBudget = 0.01;
+constexpr int kWallPixels = 64;
+constexpr int kBakeResolution = 64;
+
+struct Fixture {
+  DisplayConfig config;
+  Scene scene = builtinScene("checker-sphere");
+  RetargetMap map;
+  RenderResult backend;
+  explicit Fixture(const std::string& configName) : config(test::loadConfig(configName)) {
+    BakeDisplayOptions bake;
+    bake.useCache = false;
+    bake.resolution = kBakeResolution;
+    map = bakeDisplay(config, bake).map;
+    test::ValidatedBackend vulkan;
+    vulkan->setScene(scene);
+    RenderSettings settings;
+    settings.mode = RenderMode::Conformal;
+    settings.resolutionScale = test::scaleFor(config, kWallPixels);
+    backend = vulkan->render(config, &map, settings);
+    test::expectNoValidationMessages(vulkan);
+  }
+};
+
+// One bake and one backend render per config for every test here.
+const Fixture& fixture(const std::string& configName = "cave5") {
+  static std::map<std::string, std::unique_ptr<Fixture>> fixtures;
+  std::unique_ptr<Fixture>& f = fixtures[configName];
+  if (!f) f = std::make_unique<Fixture>(configName);
+  return *f;
+}
+
+struct AppRun {
+  std::vector<WallImage> images;
+  std::vector<std::string> messages;
+};
+
+AppRun runExample(const Fixture& f, const RetargetMap& map, byo_example::AppOptions options = {}) {
+  AppRun run;
+  options.device = test::testDevice();
+  options.validation = true;
+  options.onValidationMessage = [&run](const std::string& m) { run.messages.push_back(m); };
+  options.resolutionScale = test::scaleFor(f.config, kWallPixels);
+  run.images = byo_example::renderThroughMap(f.config, f.scene, map, options);
+  return run;
+}
+
+// The largest share of bad pixels over the walls, example against backend.
+double worstBadFraction(const Fixture& f, const std::vector<WallImage>& images) {
+  EXPECT_EQ(images.size(), f.backend.images.size());
+  double worst = 0.0;
+  for (std::size_t i = 0; i < std::min(images.size(), f.backend.images.size()); ++i) {
+    EXPECT_EQ(images[i].wall, f.backend.images[i].wall);
+    const test::PixelComparison c =
+        test::comparePixels(images[i].image, f.backend.images[i].image, kTolerance);
+    worst = std::max(worst, c.badFraction());
+  }
+  return worst;
+}
+
+// cave5 (the missing ceiling squeezed onto the side walls' tops) and cave3 (whose cut runs down
+// the left wall's rim: the pre-pass's split along the cut and the snap to the rim at work).
+TEST(VulkanBringYourOwn, ExampleAppMatchesTheBackendThroughTheBakedMap) {
+  for (const std::string config : {"cave5", "cave3"}) {
+    const Fixture& f = fixture(config);
+    const AppRun run = runExample(f, f.map);
+    EXPECT_TRUE(run.messages.empty()) << config << ": " << run.messages.size()
+                                      << " validation message(s), first: "
+                                      << (run.messages.empty() ? "" : run.messages.front());
+    EXPECT_LE(worstBadFraction(f, run.images), kBudget) << config;
+    // Something was drawn on every wall (the comparison alone would pass two empty renders).
+    for (const WallImage& image : run.images)
+      EXPECT_GT(test::drawnPixels(image.image), image.image.pixelCount() / 2)
+          << config << " " << image.wall;
+  }
+}
+
+TEST(VulkanBringYourOwn, BrokenAppRendersFailTheComparison) {
+  const Fixture& f = fixture();
+  RetargetMap swapped = f.map;
+  std::swap(swapped.geom, swapped.ray);
+  EXPECT_GT(worstBadFraction(f, runExample(f, swapped).images), 10 * kBudget);
+  byo_example::AppOptions flatOnly;
+  flatOnly.onlyFlatList = true;  // no pieces at the cut, no tessellation: holes and chords
+  EXPECT_GT(worstBadFraction(f, runExample(f, f.map, flatOnly).images), kBudget);
+}
+
+TEST(VulkanBringYourOwn, WallBoundsAreTheBackendsInRadians) {
+  const DisplayConfig config = test::loadConfig("cave5");  // no bake: any centre will do
+  const Wall& front = config.wall("front");
+  const glm::dvec3 c = config.reference + glm::dvec3(0.1, -0.2, 0.3);
+  const vulkan::WallWarpBounds b = vulkan::wallWarpBounds(front, 64, 64, c);
+  // The angle a pixel step along the wall subtends at c, measured at the lit rectangle's corners
+  // (the farthest points): the bound may not exceed any of them (a bend of `errorAngle` stays
+  // within half a pixel everywhere) and, being the smallest, lies close to the smallest.
+  const Wall lit = front.litRectangle();
+  const double pitch = std::min(lit.widthMetres(), lit.heightMetres()) / 64;
+  const glm::dvec3 centre = 0.5 * (lit.lowerLeft + lit.upperRight());
+  double smallest = 1e9;
+  for (const glm::dvec3& corner : {lit.lowerLeft, lit.lowerRight, lit.upperLeft, lit.upperRight()})
+    for (const glm::dvec3& axis : {lit.right(), lit.up()}) {
+      const glm::dvec3 inward = glm::dot(axis, centre - corner) > 0 ? axis : -axis;
+      const glm::dvec3 a0 = glm::normalize(corner - c);
+      const glm::dvec3 a1 = glm::normalize(corner + pitch * inward - c);
+      smallest = std::min(smallest, std::acos(std::clamp(glm::dot(a0, a1), -1.0, 1.0)));
+    }
+  EXPECT_LE(b.pixelAngle, smallest * (1.0 + 1e-6));
+  EXPECT_GE(b.pixelAngle, 0.5 * smallest);
+  EXPECT_DOUBLE_EQ(b.errorAngle, 0.5 * b.pixelAngle);
+  EXPECT_DOUBLE_EQ(b.cutGapAngle, 4.0 * b.pixelAngle);
+  EXPECT_NEAR(b.maxSegmentAngle, 20.0 * 3.14159265358979 / 180.0, 1e-9);
+  EXPECT_THROW(vulkan::wallWarpBounds(front, 0, 64, c), Error);
+}
+
+TEST(VulkanBringYourOwn, BadGeometryAndMapsGetOneClearError) {
+  byo_example::AppVulkan vk(test::testDevice(), false, nullptr);
+  const float vertices[] = {0, 0, -1, 1, 0, -1, 0, 1, -1};
+  vulkan::PrepassGeometry geometry;
+  geometry.vertices = vertices;
+  geometry.vertexCount = 3;
+  geometry.layout.stride = 12;
+  geometry.indices = {0, 1, 2};
+  const auto message = [&](const vulkan::PrepassGeometry& g) {
+    try {
+      vulkan::ConformalPrepassStep step(vk.appDevice(), g);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  vulkan::PrepassGeometry normalPastStride = geometry;
+  normalPastStride.layout.normalOffset = 4;
+  EXPECT_NE(message(normalPastStride).find("normal at offset 4"), std::string::npos);
+  vulkan::PrepassGeometry halfPositions = geometry;
+  halfPositions.layout.positionFormat = VK_FORMAT_R16G16B16_SFLOAT;
+  EXPECT_NE(message(halfPositions).find("position format"), std::string::npos);
+  vulkan::PrepassGeometry badIndex = geometry;
+  badIndex.indices = {0, 1, 3};
+  EXPECT_NE(message(badIndex).find("names vertex 3 of 3"), std::string::npos);
+  vulkan::PrepassGeometry badMesh = geometry;
+  badMesh.meshes = {{3, 3, 0}};
+  EXPECT_NE(message(badMesh).find("mesh 0"), std::string::npos);
+
+  RetargetMap broken = RetargetMap::identity(8);
+  broken.geom.faces[2].pixels[5] = std::nanf("");
+  try {
+    vulkan::uploadRetargetMap(vk.appDevice(), broken);
+    ADD_FAILURE() << "a map with a NaN texel was uploaded";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code(), ErrorCode::InvalidInput);
+    EXPECT_NE(std::string(e.what()).find("non-finite"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace confvis

@@ -1,0 +1,254 @@
+// Map accuracy benchmark (issue 22, point 7; run by hand, never in CI): per display config, edge
+// length and route, the map's error against a converged map (how far content moves on the wall,
+// pixels of that wall: p50/p95/p99/max), the kink p99 of straight virtual lines where they cross
+// element boundaries (degrees, 3 degrees around the singular corners left out), and the re-bake
+// time (computeDisplayMap + bakeRetargetMapInto at the config's cube resolution, median wall ms).
+// Measured on the piecewise-linear map itself (map_accuracy.hpp), so the cube-map resolution
+// does not enter the error.
+//
+// The reference: the reference route at scale `--reference-start` x the config's edge length,
+// halved until the p99 change between two levels is below --converge-px (or --reference-min is
+// reached); every level is printed with its change. Reference maps are cached in --cache-dir
+// (delete it after changing the map code: the key is the config, route, edge and kCacheVersion).
+//
+//   nice -n 10 build/confvis_bench_map_accuracy [--configs configs/cave5.json,...]
+//       [--scales 1,0.5,0.25] [--routes spherical,euclidean,hyperbolic] [--repeat 5]
+#include <CLI/CLI.hpp>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "confvis/base/atomic_file.hpp"
+#include "confvis/base/error.hpp"
+#include "confvis/conformal/bake.hpp"
+#include "confvis/conformal/display_map.hpp"
+#include "confvis/conformal/map_accuracy.hpp"
+#include "confvis/engine/display_config.hpp"
+
+using namespace confvis;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// Bump when the map pipeline changes what a given config, route and edge produce.
+constexpr const char* kCacheVersion = "map-accuracy-1";
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+DisplayMapRoute parseRoute(const std::string& name) {
+  if (name == "spherical") return DisplayMapRoute::Spherical;
+  if (name == "euclidean") return DisplayMapRoute::Euclidean;
+  if (name == "hyperbolic") return DisplayMapRoute::Hyperbolic;
+  throw Error(ErrorCode::InvalidInput, "unknown route '" + name + "' (spherical, euclidean, hyperbolic)");
+}
+
+template <class T>
+void put(std::string& out, const T& value) {
+  out.append(reinterpret_cast<const char*>(&value), sizeof value);
+}
+template <class T>
+void putVector(std::string& out, const std::vector<T>& v) {
+  put(out, static_cast<std::uint64_t>(v.size()));
+  out.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+template <class T>
+T get(const std::string& in, std::size_t& at) {
+  if (at + sizeof(T) > in.size()) throw Error(ErrorCode::InvalidInput, "truncated map cache");
+  T value;
+  std::memcpy(&value, in.data() + at, sizeof value);
+  at += sizeof value;
+  return value;
+}
+template <class T>
+std::vector<T> getVector(const std::string& in, std::size_t& at) {
+  const auto n = get<std::uint64_t>(in, at);
+  if (at + n * sizeof(T) > in.size()) throw Error(ErrorCode::InvalidInput, "truncated map cache");
+  std::vector<T> v(n);
+  std::memcpy(v.data(), in.data() + at, n * sizeof(T));
+  at += n * sizeof(T);
+  return v;
+}
+
+std::string serialize(const DisplayMap& map) {
+  std::string out = kCacheVersion;
+  for (const SphereDiskMesh* mesh : {&map.source, &map.target}) {
+    putVector(out, mesh->sphere);
+    putVector(out, mesh->disk);
+    putVector(out, mesh->triangles);
+    putVector(out, mesh->boundary);
+    putVector(out, mesh->lit);
+  }
+  return out;
+}
+
+DisplayMap deserialize(const std::string& in) {
+  if (in.compare(0, std::strlen(kCacheVersion), kCacheVersion) != 0)
+    throw Error(ErrorCode::InvalidInput, "map cache of another version");
+  std::size_t at = std::strlen(kCacheVersion);
+  DisplayMap map;
+  for (SphereDiskMesh* mesh : {&map.source, &map.target}) {
+    mesh->sphere = getVector<glm::dvec3>(in, at);
+    mesh->disk = getVector<std::complex<double>>(in, at);
+    mesh->triangles = getVector<std::array<int, 3>>(in, at);
+    mesh->boundary = getVector<int>(in, at);
+    mesh->lit = getVector<std::uint8_t>(in, at);
+  }
+  return map;
+}
+
+DisplayMap referenceMap(const DisplayConfig& config, DisplayMapRoute route,
+                        const std::string& routeName, double edge, const TemplateGrading& grading,
+                        const std::filesystem::path& cacheDir) {
+  char name[200];
+  std::snprintf(name, sizeof name, "%s-%s-%s-%.6f-g%.3f-%.3f-%.4f.bin", config.hash.c_str(),
+                routeName.c_str(), kCacheVersion, edge, grading.radiusDegrees, grading.exponent,
+                grading.minScale);
+  const std::filesystem::path path = cacheDir / name;
+  if (std::filesystem::exists(path)) {
+    try {
+      return deserialize(readTextFile(path));
+    } catch (const Error&) {
+      // recompute below
+    }
+  }
+  const auto start = Clock::now();
+  DisplayMapOptions options;
+  options.edgeLength = edge;
+  options.route = route;
+  options.grading = grading;
+  DisplayMap map = computeDisplayMap(config, options);
+  std::fprintf(stderr, "  reference %s %.4f m: %zu + %zu vertices, %.1f s\n", routeName.c_str(),
+               edge, map.source.sphere.size(), map.target.sphere.size(),
+               std::chrono::duration<double>(Clock::now() - start).count());
+  writeTextAtomically(path, serialize(map));
+  return map;
+}
+
+// CPU seconds of the whole process (all threads): wall times inflate with a shared machine's load.
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+         1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0 : v[v.size() / 2];
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"confvis map accuracy benchmark: error against a converged map, kinks, re-bake time"};
+  const std::string dir = std::string(CONFVIS_SOURCE_DIR) + "/configs/";
+  std::string configs = dir + "cave5.json," + dir + "cave3.json," + dir + "md230x6.json";
+  std::string scales = "1,0.5,0.25", routes = "spherical,euclidean,hyperbolic";
+  std::string referenceRoute = "spherical";
+  std::string cacheDir = std::string(CONFVIS_BINARY_DIR) + "/map_accuracy_cache";
+  double referenceStart = 0.125, referenceMin = 0.0625, convergePx = 0.05;
+  int samples = 96, lines = 10, repeat = 5, threads = 0;
+  std::string gradings = "0";
+  TemplateGrading gradingShape, referenceGrading;
+  app.add_option("--configs", configs, "Display configs, comma-separated")->capture_default_str();
+  app.add_option("--scales", scales, "Edge lengths as multiples of each config's")->capture_default_str();
+  app.add_option("--routes", routes, "Routes: spherical, euclidean, hyperbolic")->capture_default_str();
+  app.add_option("--reference-route", referenceRoute, "Route of the converged map")->capture_default_str();
+  app.add_option("--reference-start", referenceStart, "First reference level (scale)")->capture_default_str();
+  app.add_option("--reference-min", referenceMin, "Finest reference level (scale)")->capture_default_str();
+  app.add_option("--reference-grading", referenceGrading.radiusDegrees,
+                 "Grading radius of the reference, degrees (0: uniform)")->capture_default_str();
+  app.add_option("--converge-px", convergePx, "Stop refining the reference below this p99 change")->capture_default_str();
+  app.add_option("--cache-dir", cacheDir, "Where reference maps are cached")->capture_default_str();
+  app.add_option("--samples", samples, "Error samples per wall side")->capture_default_str();
+  app.add_option("--lines", lines, "Kink lines per wall side (x2 directions)")->capture_default_str();
+  app.add_option("--gradings", gradings,
+                 "Grading radii toward the singular corners, degrees (0: uniform edges)")
+      ->capture_default_str();
+  app.add_option("--grading-exponent", gradingShape.exponent, "Grading power law exponent")
+      ->capture_default_str();
+  app.add_option("--grading-min", gradingShape.minScale, "Smallest edge, x the edge length")
+      ->capture_default_str();
+  app.add_option("--repeat", repeat, "Re-bakes timed per row (median)")->capture_default_str();
+  app.add_option("--threads", threads, "Threads (0: one per core)")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+  try {
+    for (const std::string& configPath : splitList(configs)) {
+      const DisplayConfig config = loadDisplayConfig(configPath);
+      std::printf("\n%s (default edge %.3f m, cube %d; px of its walls)\n", config.name.c_str(),
+                  config.edgeLength, config.cubeResolution);
+      std::fflush(stdout);
+      // The converged reference.
+      const DisplayMapRoute refRoute = parseRoute(referenceRoute);
+      double scale = referenceStart;
+      DisplayMap reference =
+          referenceMap(config, refRoute, referenceRoute, scale * config.edgeLength, referenceGrading, cacheDir);
+      while (scale * 0.5 >= referenceMin * (1 - 1e-9)) {
+        scale *= 0.5;
+        DisplayMap finer =
+            referenceMap(config, refRoute, referenceRoute, scale * config.edgeLength, referenceGrading, cacheDir);
+        const MapError change = measureMapError(config, reference, finer, samples, threads);
+        std::printf("reference %s %.4f m -> %.4f m: change p50 %.3f p95 %.3f p99 %.3f max %.3f px\n",
+                    referenceRoute.c_str(), 2 * scale * config.edgeLength,
+                    scale * config.edgeLength, change.p50, change.p95, change.p99, change.max);
+        std::fflush(stdout);
+        reference = std::move(finer);
+        if (change.p99 < convergePx) break;
+      }
+      std::printf("| edge m | route | grading deg | S+T vertices | p50 | p95 | p99 | max px (worst wall s,t) | kink p99 / max deg | re-bake ms wall / CPU |\n");
+      std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+      for (const std::string& s : splitList(scales))
+        for (const std::string& routeName : splitList(routes))
+          for (const std::string& g : splitList(gradings)) {
+          const double edge = std::stod(s) * config.edgeLength;
+          DisplayMapOptions options;
+          options.edgeLength = edge;
+          options.route = parseRoute(routeName);
+          options.grading = gradingShape;
+          options.grading.radiusDegrees = std::stod(g);
+          std::vector<double> times, cpu;
+          DisplayMap map;
+          RetargetMap baked;
+          BakeOptions bake;
+          bake.reference = config.reference;
+          bake.threads = threads;
+          for (int r = 0; r < std::max(1, repeat); ++r) {
+            const auto start = Clock::now();
+            const double cpuStart = processCpuSeconds();
+            map = computeDisplayMap(config, options);
+            bakeRetargetMapInto(map, config.cubeResolution, bake, baked);
+            times.push_back(std::chrono::duration<double>(Clock::now() - start).count() * 1e3);
+            cpu.push_back((processCpuSeconds() - cpuStart) * 1e3);
+          }
+          const std::string taken = map.stats["source"]["route"].get<std::string>() + "/" +
+                                    map.stats["target"]["route"].get<std::string>();
+          const MapError e = measureMapError(config, map, reference, samples, threads);
+          const KinkStats k = measureKinks(config, map, lines, 10, 0.01, 3, threads);
+          std::printf("| %.4f | %s%s | %s | %zu+%zu | %.3f | %.3f | %.3f | %.2f (%s %.2f,%.2f) | %.2f / %.1f | %.1f / %.1f |\n",
+                      edge, routeName.c_str(),
+                      taken == routeName + "/" + routeName ? "" : (" (took " + taken + ")").c_str(),
+                      g.c_str(), map.source.sphere.size(), map.target.sphere.size(), e.p50, e.p95, e.p99,
+                      e.max, e.worstWall.c_str(), e.worstS, e.worstT, k.p99, k.max, median(times), median(cpu));
+          std::fflush(stdout);
+        }
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,238 @@
+#include "app_pipelines.hpp"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "app_device.hpp"
+#include "confvis/backends/vulkan/byo_prepass.hpp"
+#include "confvis/backends/vulkan/warp_interface.hpp"
+
+// SPIR-V the application compiled (CMakeLists.txt: glslangValidator -I<confvis shader dir>).
+#include "byo_spirv/scene_frag.h"
+#include "byo_spirv/warp_geom.h"
+#include "byo_spirv/warp_projected_tese.h"
+#include "byo_spirv/warp_simple_vert.h"
+#include "byo_spirv/warp_tesc.h"
+#include "byo_spirv/warp_tese.h"
+#include "byo_spirv/warp_vert.h"
+
+namespace byo_example {
+namespace {
+
+constexpr VkShaderStageFlags kGeometryStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT |
+    VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_GEOMETRY_BIT;
+constexpr VkShaderStageFlags kAllStages = kGeometryStages | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+template <std::size_t N>
+VkShaderModule shaderModule(VkDevice device, const std::uint32_t (&spirv)[N]) {
+  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+  info.codeSize = sizeof(spirv);
+  info.pCode = spirv;
+  VkShaderModule module = VK_NULL_HANDLE;
+  vkCheck(vkCreateShaderModule(device, &info, nullptr, &module), "vkCreateShaderModule");
+  return module;
+}
+
+VkDescriptorSetLayout setLayout(VkDevice device,
+                                const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = static_cast<std::uint32_t>(bindings.size());
+  info.pBindings = bindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  vkCheck(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout),
+          "vkCreateDescriptorSetLayout");
+  return layout;
+}
+
+VkRenderPass createRenderPass(VkDevice device) {
+  std::array<VkAttachmentDescription, 2> attachments{};
+  attachments[0].format = kAppColorFormat;
+  attachments[0].samples = VK_SAMPLE_COUNT_1_BIT;
+  attachments[0].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  attachments[0].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachments[0].stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachments[0].stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[0].initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  attachments[0].finalLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;  // read back after the pass
+  attachments[1] = attachments[0];
+  attachments[1].format = kAppDepthFormat;
+  attachments[1].storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachments[1].finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  const VkAttachmentReference color{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  const VkAttachmentReference depth{1, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &color;
+  subpass.pDepthStencilAttachment = &depth;
+  // The copy for readback waits for the pass's colour writes.
+  VkSubpassDependency toCopy{};
+  toCopy.srcSubpass = 0;
+  toCopy.dstSubpass = VK_SUBPASS_EXTERNAL;
+  toCopy.srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  toCopy.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  toCopy.dstStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  toCopy.dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = static_cast<std::uint32_t>(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = 1;
+  info.pDependencies = &toCopy;
+  VkRenderPass renderPass = VK_NULL_HANDLE;
+  vkCheck(vkCreateRenderPass(device, &info, nullptr, &renderPass), "vkCreateRenderPass");
+  return renderPass;
+}
+
+VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits bit, VkShaderModule module) {
+  VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  info.stage = bit;
+  info.module = module;
+  info.pName = "main";
+  return info;
+}
+
+// Flat: vertex input from the step's vertex buffer (binding 0, ConformalVertex) and its warps
+// (binding 1); tessellated: no vertex input (warp.vert reads the lists itself), patches of 3.
+VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass,
+                          const std::vector<VkPipelineShaderStageCreateInfo>& stages,
+                          bool tessellated) {
+  using confvis::vulkan::ConformalVertex;
+  const std::array<VkVertexInputBindingDescription, 2> bindings = {{
+      {0, sizeof(ConformalVertex), VK_VERTEX_INPUT_RATE_VERTEX},
+      {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
+  }};
+  const std::array<VkVertexInputAttributeDescription, 4> attributes = {{
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ConformalVertex, position)},
+      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ConformalVertex, normal)},
+      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ConformalVertex, uv)},
+      {3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
+  }};
+  VkPipelineVertexInputStateCreateInfo vertexInput{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  if (!tessellated) {
+    vertexInput.vertexBindingDescriptionCount = 2;
+    vertexInput.pVertexBindingDescriptions = bindings.data();
+    vertexInput.vertexAttributeDescriptionCount = 4;
+    vertexInput.pVertexAttributeDescriptions = attributes.data();
+  }
+  VkPipelineInputAssemblyStateCreateInfo assembly{
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology =
+      tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkPipelineTessellationStateCreateInfo tessellation{
+      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+  tessellation.patchControlPoints = 3;
+  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewport.viewportCount = 1;
+  viewport.scissorCount = 1;
+  VkPipelineRasterizationStateCreateInfo raster{
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  raster.polygonMode = VK_POLYGON_MODE_FILL;
+  raster.cullMode = VK_CULL_MODE_NONE;  // two-sided shading: no culling
+  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+  raster.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  VkPipelineDepthStencilStateCreateInfo depth{
+      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+  depth.depthTestEnable = VK_TRUE;
+  depth.depthWriteEnable = VK_TRUE;
+  depth.depthCompareOp = VK_COMPARE_OP_GREATER;  // reverse-Z (wallViewProjection)
+  VkPipelineColorBlendAttachmentState blendAttachment{};
+  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  VkPipelineColorBlendStateCreateInfo blend{
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = 1;
+  blend.pAttachments = &blendAttachment;
+  const std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                       VK_DYNAMIC_STATE_SCISSOR};
+  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamicStates.size());
+  dynamic.pDynamicStates = dynamicStates.data();
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = static_cast<std::uint32_t>(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &assembly;
+  info.pTessellationState = tessellated ? &tessellation : nullptr;
+  info.pViewportState = &viewport;
+  info.pRasterizationState = &raster;
+  info.pMultisampleState = &multisample;
+  info.pDepthStencilState = &depth;
+  info.pColorBlendState = &blend;
+  info.pDynamicState = &dynamic;
+  info.layout = layout;
+  info.renderPass = renderPass;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  vkCheck(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+          "vkCreateGraphicsPipelines");
+  return pipeline;
+}
+
+}  // namespace
+
+AppPipelines::AppPipelines(VkDevice device) : device_(device) {
+  // Set 0: what confvis_render_common.glsl and confvis_pulled_vertex.glsl declare.
+  setLayouts_[0] = setLayout(
+      device, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
+               {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+               {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
+                nullptr},
+               {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+               {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
+               {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
+  // Set 1: the warp (confvis_warp.glsl), as warp_interface.hpp describes it.
+  setLayouts_[1] = setLayout(device, {confvis::vulkan::warpLayoutBinding(kGeometryStages)});
+  setLayouts_[2] = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
+  const VkPushConstantRange push{kAllStages, 0, sizeof(AppPush)};
+  VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  layoutInfo.setLayoutCount = 3;
+  layoutInfo.pSetLayouts = setLayouts_;
+  layoutInfo.pushConstantRangeCount = 1;
+  layoutInfo.pPushConstantRanges = &push;
+  vkCheck(vkCreatePipelineLayout(device, &layoutInfo, nullptr, &layout_), "vkCreatePipelineLayout");
+  renderPass_ = createRenderPass(device);
+
+  const VkShaderModule modules[] = {
+      shaderModule(device, kAppSpirv_warp_simple_vert), shaderModule(device, kAppSpirv_warp_vert),
+      shaderModule(device, kAppSpirv_warp_tesc), shaderModule(device, kAppSpirv_warp_projected_tese),
+      shaderModule(device, kAppSpirv_warp_tese), shaderModule(device, kAppSpirv_warp_geom),
+      shaderModule(device, kAppSpirv_scene_frag)};
+  const auto [simpleVert, warpVert, tesc, projectedTese, tese, geom, frag] = modules;
+  flat_ = createPipeline(device, layout_, renderPass_,
+                         {stage(VK_SHADER_STAGE_VERTEX_BIT, simpleVert),
+                          stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)},
+                         false);
+  tessellated_ = createPipeline(device, layout_, renderPass_,
+                                {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert),
+                                 stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc),
+                                 stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, projectedTese),
+                                 stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)},
+                                true);
+  dropping_ = createPipeline(device, layout_, renderPass_,
+                             {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert),
+                              stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc),
+                              stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, tese),
+                              stage(VK_SHADER_STAGE_GEOMETRY_BIT, geom),
+                              stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)},
+                             true);
+  for (VkShaderModule module : modules) vkDestroyShaderModule(device, module, nullptr);
+}
+
+AppPipelines::~AppPipelines() {
+  for (VkPipeline pipeline : {flat_, tessellated_, dropping_})
+    if (pipeline) vkDestroyPipeline(device_, pipeline, nullptr);
+  if (renderPass_) vkDestroyRenderPass(device_, renderPass_, nullptr);
+  if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
+  for (VkDescriptorSetLayout layout : setLayouts_)
+    if (layout) vkDestroyDescriptorSetLayout(device_, layout, nullptr);
+}
+
+}  // namespace byo_example
