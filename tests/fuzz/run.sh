@@ -20,7 +20,9 @@ if [ ! -f "$build/build.ninja" ]; then
     -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fsanitize=fuzzer-no-link -fno-sanitize-recover=all" \
     ${CCACHE:+-DCMAKE_CXX_COMPILER_LAUNCHER=ccache} >/dev/null
 fi
-cmake --build "$build" -j"$(nproc)" --target "${harnesses[@]/#/fuzz_}" confvis
+cmake --build "$build" -j"$(nproc)" --target "${harnesses[@]/#/fuzz_}"
+cli=build/confvis  # writes the cube_exr seeds: the normal build's, else this build's
+[ -x "$cli" ] || { cmake --build "$build" -j"$(nproc)" --target confvis && cli=$build/confvis; }
 seeds=tests/fuzz/seeds
 
 corpus() {  # harness -> seed files (a prefix byte picks the format where the harness needs one)
@@ -52,7 +54,7 @@ corpus() {  # harness -> seed files (a prefix byte picks the format where the ha
     bake_directory)
       printf '{"format":"confvis-bake","format_version":4,"resolution":8,"reference":[0,0,0],"files":{}}' >"$dir/seed" ;;
     cube_exr)  # a real baked pair (8 texels per face), written by this build's confvis
-      "$build/confvis" bake configs/cave5.json --resolution 8 --no-cache -q -o "$build/fuzz/seed-bake" >/dev/null
+      "$cli" bake configs/cave5.json --resolution 8 --no-cache -q -o "$build/fuzz/seed-bake" >/dev/null
       cp "$build/fuzz/seed-bake/ray.exr" "$build/fuzz/seed-bake/geom.exr" "$dir/" ;;
     tracker_packets) cp $seeds/tracker_packets/* "$dir/" ;;
   esac
