@@ -13,8 +13,11 @@
 #include "confvis/backends/vulkan/byo_device.hpp"
 #include "confvis/backends/vulkan/device_requirements.hpp"
 #include "confvis/backends/vulkan/external_device.hpp"
+#include "confvis/base/export.hpp"
 
-namespace confvis::vulkan {
+// Exported in shared builds: the runtime's PresentContext is this context (as vk_check.hpp).
+namespace confvis CONFVIS_API {
+namespace vulkan CONFVIS_API {
 
 struct ContextOptions {
   std::string device;  // see VulkanOptions::device
@@ -109,4 +112,5 @@ class VulkanContext {
   bool ownsDevice_ = true;  // false on an application's device: instance and device are its
 };
 
-}  // namespace confvis::vulkan
+}  // namespace vulkan
+}  // namespace confvis

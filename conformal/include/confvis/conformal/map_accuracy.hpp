@@ -32,6 +32,8 @@ class DiskLocator;
 
 // Evaluates T_ray and T_geom of a DisplayMap by point location (no cube maps). Keeps references
 // into `map`, which must outlive it.
+// Thread-safety: toVirtual and toPhysical are const and keep no state: call them from any
+// number of threads at once.
 class DisplayMapEvaluator {
  public:
   struct Image {

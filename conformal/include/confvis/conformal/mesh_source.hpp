@@ -13,6 +13,8 @@
 namespace confvis CONFVIS_API {
 namespace conformal CONFVIS_API {
 
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct MeshSource {
   std::filesystem::path path;
   std::string format;        // "OBJ", "OFF", "PLY" or "STL"

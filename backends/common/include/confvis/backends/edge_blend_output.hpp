@@ -16,6 +16,7 @@
 
 namespace confvis CONFVIS_API {
 
+// Thread-safety: not thread-safe: apply() fills its mask cache; one thread at a time.
 class EdgeBlender {
  public:
   explicit EdgeBlender(DisplayConfig config);

@@ -100,6 +100,7 @@ enum class DrawList : std::uint32_t {
   Pieces = 3,       // indexed (pieceIndices()), drawn flat like Flat
 };
 
+// Thread-safety: one thread at a time per step (see the top of this header).
 class ConformalPrepassStep {
  public:
   // Converts and uploads the geometry (with its edge list and midpoints) and creates the

@@ -27,6 +27,8 @@ namespace vulkan CONFVIS_API {
 // pre-pass step (byo_prepass.hpp) reads both. Destroys its objects (not the device) when
 // destroyed, without waiting for the device: keep it alive until the device has finished every
 // command that samples it (the same holds for UploadedTexture and ConformalPrepassStep).
+// Thread-safety: its accessors are const and may be read from any thread; move or destroy it
+// from one thread while nothing else uses it.
 class UploadedRetargetMap {
  public:
   UploadedRetargetMap(UploadedRetargetMap&&) noexcept;
@@ -59,6 +61,7 @@ UploadedRetargetMap uploadRetargetMap(const AppDevice& app, const RetargetMap& m
 // in SHADER_READ_ONLY_OPTIMAL; for applications that draw confvis scenes with their own
 // pipeline (the example under tools/byo_vulkan_example). Throws Error(InvalidInput) for a
 // texture whose size and texel count disagree.
+// Thread-safety: as UploadedRetargetMap.
 class UploadedTexture {
  public:
   UploadedTexture(UploadedTexture&&) noexcept;
