@@ -101,33 +101,11 @@ struct ConformalPrepassStep::Impl {
               "pre-pass geometry"),
         prepass(*context, pipelines),
         hasNormals(geometry.layout.normalOffset != kNoAttribute) {
-    const VkDevice device = context->device();
-    const std::array<VkDescriptorPoolSize, 3> sizes = {{
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
-        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},  // the geom and ray maps
-    }};
-    VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-    poolInfo.maxSets = 2;
-    poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
-    poolInfo.pPoolSizes = sizes.data();
-    VkDescriptorPool created = VK_NULL_HANDLE;
-    check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &created), "vkCreateDescriptorPool");
-    pool = UniqueDescriptorPool(device, created);
-    const std::array<VkDescriptorSetLayout, 2> layouts = {pipelines.frameSetLayout(),
-                                                          pipelines.warpSetLayout()};
-    std::array<VkDescriptorSet, 2> sets{};
-    VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    allocInfo.descriptorPool = created;
-    allocInfo.descriptorSetCount = 2;
-    allocInfo.pSetLayouts = layouts.data();
-    check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
-    frameSet = sets[0];
-    warpSet = sets[1];
-    frameUniforms = Buffer(*context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                           BufferMemory::Shared);
-    writeBufferDescriptor(device, frameSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                          frameUniforms.get());
+    FrameDescriptors made = allocateFrameDescriptors(*context, pipelines);
+    pool = std::move(made.pool);
+    frameSet = made.frameSet;
+    warpSet = made.warpSet;
+    frameUniforms = std::move(made.frameUniforms);
   }
 
   std::unique_ptr<VulkanContext> context;  // on the application's device; destroyed last

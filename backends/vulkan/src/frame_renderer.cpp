@@ -22,32 +22,11 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines,
     : context_(context), pipelines_(pipelines), prepass_(context, pipelines), stopwatch_(context),
       timePrepassPasses_(timePrepassPasses) {
   const VkDevice device = context.device();
-  const std::array<VkDescriptorPoolSize, 3> sizes = {{
-      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},  // the geom and ray maps
-  }};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 2;
-  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
-  poolInfo.pPoolSizes = sizes.data();
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
-  pool_ = UniqueDescriptorPool(device, pool);
-  const std::array<VkDescriptorSetLayout, 2> layouts = {pipelines.frameSetLayout(),
-                                                        pipelines.warpSetLayout()};
-  std::array<VkDescriptorSet, 2> sets{};
-  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocInfo.descriptorPool = pool;
-  allocInfo.descriptorSetCount = 2;
-  allocInfo.pSetLayouts = layouts.data();
-  check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
-  frameSet_ = sets[0];
-  warpSet_ = sets[1];
-  frameBuffer_ = Buffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                        BufferMemory::Shared);
-  writeBufferDescriptor(device, frameSet_, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                        frameBuffer_.get());
+  FrameDescriptors made = allocateFrameDescriptors(context, pipelines);
+  pool_ = std::move(made.pool);
+  frameSet_ = made.frameSet;
+  warpSet_ = made.warpSet;
+  frameBuffer_ = std::move(made.frameUniforms);
   const VkSamplerCreateInfo samplerInfo = warpSamplerInfo();
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");

@@ -284,4 +284,36 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
   return UniquePipeline(context_.device(), pipeline);
 }
 
+FrameDescriptors allocateFrameDescriptors(VulkanContext& context, const Pipelines& pipelines) {
+  const VkDevice device = context.device();
+  const std::array<VkDescriptorPoolSize, 3> sizes = {{
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+      {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},  // the geom and ray maps
+  }};
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 2;
+  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
+  FrameDescriptors made;
+  made.pool = UniqueDescriptorPool(device, pool);
+  const std::array<VkDescriptorSetLayout, 2> layouts = {pipelines.frameSetLayout(),
+                                                        pipelines.warpSetLayout()};
+  std::array<VkDescriptorSet, 2> sets{};
+  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocInfo.descriptorPool = pool;
+  allocInfo.descriptorSetCount = 2;
+  allocInfo.pSetLayouts = layouts.data();
+  check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
+  made.frameSet = sets[0];
+  made.warpSet = sets[1];
+  made.frameUniforms = Buffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                              BufferMemory::Shared);
+  writeBufferDescriptor(device, made.frameSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                        made.frameUniforms.get());
+  return made;
+}
+
 }  // namespace confvis::vulkan

@@ -11,6 +11,7 @@
 
 #include "context.hpp"
 #include "handles.hpp"
+#include "memory.hpp"
 
 namespace confvis::vulkan {
 
@@ -170,5 +171,16 @@ class Pipelines {
       splitTrianglesAtCut_;
   std::map<std::uint32_t, Pass> passes_;
 };
+
+// The two sets every warped draw and the pre-pass bind (the frame's uniforms, storage buffers and
+// the warp's maps), allocated from a pool of their own, with the frame uniform buffer written to
+// binding 0 of the frame set. The backend's frame renderer and the application's pre-pass step
+// (byo_prepass.cpp) each hold one.
+struct FrameDescriptors {
+  UniqueDescriptorPool pool;
+  VkDescriptorSet frameSet = VK_NULL_HANDLE, warpSet = VK_NULL_HANDLE;
+  Buffer frameUniforms;
+};
+FrameDescriptors allocateFrameDescriptors(VulkanContext& context, const Pipelines& pipelines);
 
 }  // namespace confvis::vulkan
