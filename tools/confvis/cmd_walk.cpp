@@ -26,6 +26,7 @@
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "confvis/runtime/tracker.hpp"
+#include "frame_record_spool.hpp"
 #include "retarget_map_source.hpp"
 #include "scene_option.hpp"
 #include "shipped_files.hpp"
@@ -114,7 +115,9 @@ int runWalk(const WalkArgs& args) {
   const int groups = cluster ? cluster->frameGroups() : 1;
   const int group = cluster ? cluster->frameGroup() : 0;
   const bool reporter = !cluster || cluster->isWorldRoot();
-  nlohmann::json frames = nlohmann::json::array(), errors = nlohmann::json::array();
+  nlohmann::json errors = nlohmann::json::array();
+  std::optional<FrameRecordSpool> frames;  // walk.json's per-frame records, on disk until the end
+  if (reporter) frames.emplace();
   int previousBakesStarted = 0;
   const auto loopStart = Clock::now();
   RenderResult result;  // one frame's images, rendered over by the next (renderInto)
@@ -195,17 +198,18 @@ int runWalk(const WalkArgs& args) {
         std::fprintf(stderr, "walk: frame %d: re-bake failed, keeping the old map: %s\n",
                      index, message.c_str());
     }
-    frames.push_back({{"frame", index},
-                      {"seconds", frameSeconds},
-                      {"directory", directory.filename().string()},
-                      {"head", {{"position", toJson(head.position)},
-                                {"orientation", toJson(head.orientation)}}},
-                      {"map", {{"reference", toJson(reference)},
-                               {"generation", frame.generation},
-                               {"swapped", frame.swapped}}},
-                      {"head_to_reference_m", glm::length(head.position - reference)},
-                      {"bake_started", bakeStarted},
-                      {"baking", frame.baking}});
+    if (frames)
+      frames->add({{"frame", index},
+                   {"seconds", frameSeconds},
+                   {"directory", directory.filename().string()},
+                   {"head", {{"position", toJson(head.position)},
+                             {"orientation", toJson(head.orientation)}}},
+                   {"map", {{"reference", toJson(reference)},
+                            {"generation", frame.generation},
+                            {"swapped", frame.swapped}}},
+                   {"head_to_reference_m", glm::length(head.position - reference)},
+                   {"bake_started", bakeStarted},
+                   {"baking", frame.baking}});
     if (!args.quiet && reporter)
       std::fprintf(stderr,
                    "frame %d/%d  t %.2f s  head (%.2f, %.2f, %.2f)  map %llu around (%.2f, %.2f, "
@@ -239,14 +243,15 @@ int runWalk(const WalkArgs& args) {
       {"paced", !args.noPacing},
       {"wait_for_bakes", args.waitForBakes},
       {"cluster", cluster ? cluster->report() : nlohmann::json(nullptr)},
-      {"frames", frames},
+      {"frames", FrameRecordSpool::kPlaceholder},
       {"rebakes", {{"started", stats.bakesStarted},
                    {"swapped_in", stats.bakesSucceeded},
                    {"failed", stats.bakesFailed},
                    {"running_at_end", stillRunning}}},
       {"errors", errors},
       {"timings", {{"setup_seconds", setupSeconds}, {"frames_seconds", secondsSince(loopStart)}}}};
-  writeTextAtomically(fs::path(args.output) / "walk.json", report.dump(2) + "\n");
+  writeTextAtomically(fs::path(args.output) / "walk.json",
+                      frames->spliceInto(report.dump(2)) + "\n");
   std::printf("%s: %d frames of '%s' along %s -> %s; re-bakes: %d started, %d swapped in, %d "
               "failed, %d still running\n",
               config.name.c_str(), frameCount, scene.name.c_str(),
