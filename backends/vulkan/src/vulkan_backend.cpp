@@ -90,6 +90,14 @@ RenderSettings settingsForTargets(const DisplayConfig& config, const RenderSetti
   return chosen;
 }
 
+// A scene with its too-wide triangles split, and its upload. At namespace scope: clang 14 cannot
+// default-construct, inside std::optional, a nested struct with default member initializers.
+struct SplitScene {
+  Scene scene;
+  std::optional<vulkan::GpuScene> gpu;
+  std::size_t trianglesSplit = 0;
+};
+
 class VulkanBackend final : public VulkanRenderer {
  public:
   explicit VulkanBackend(const VulkanOptions& options)
@@ -206,12 +214,6 @@ class VulkanBackend final : public VulkanRenderer {
   // made for one centre serves the next frames while none of its pieces is (hysteresis: the
   // pieces are made half as wide).
   static constexpr double kWidestTriangleDegrees = 16.0;
-
-  struct SplitScene {
-    Scene scene;
-    std::optional<vulkan::GpuScene> gpu;
-    std::size_t trianglesSplit = 0;
-  };
 
   // The scene as the conformal pre-pass takes it: the uploaded scene, or (where some triangle
   // spans too wide an angle seen from the warp's centre) its split (wide_triangle_split.hpp).
