@@ -42,8 +42,9 @@ TEST(ProjectorSurfaceTemplate, OverlappingProjectorsAndAPreviewGiveTheTemplatesO
   json preview = screenWall("preview", -2.2, 2.2);
   preview["preview"] = true;
   const DisplayConfig projectors =
-      screen({screenWall("left", -2.2, 0.2), screenWall("right", -0.2, 2.2), preview});
-  const DisplayConfig single = screen({screenWall("whole", -2.2, 2.2)});
+      screen(json::array({screenWall("left", -2.2, 0.2), screenWall("right", -0.2, 2.2),
+                          preview}));
+  const DisplayConfig single = screen(json::array({screenWall("whole", -2.2, 2.2)}));
   const DisplayTemplates a = buildDisplayTemplates(projectors, 0.5);
   const DisplayTemplates b = buildDisplayTemplates(single, 0.5);
   expectSameMesh(a.target, b.target);
