@@ -3,6 +3,8 @@
 // the sources to know whether a backend, a follower or a map may be shared between threads.
 #include <gtest/gtest.h>
 
+#include "public_headers.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -10,23 +12,6 @@
 #include <vector>
 
 namespace {
-
-std::vector<std::filesystem::path> publicHeaders() {
-  std::vector<std::filesystem::path> headers;
-  const std::filesystem::path root = CONFVIS_SOURCE_DIR;
-  for (auto it = std::filesystem::recursive_directory_iterator(root);
-       it != std::filesystem::recursive_directory_iterator(); ++it) {
-    const std::string name = it->path().filename().string();
-    if (it->is_directory() && (name.rfind("build", 0) == 0 || name.rfind('.', 0) == 0)) {
-      it.disable_recursion_pending();  // build folders (an installed copy), .git
-      continue;
-    }
-    if (it->path().extension() == ".hpp" &&
-        it->path().generic_string().find("/include/confvis/") != std::string::npos)
-      headers.push_back(it->path());
-  }
-  return headers;
-}
 
 std::string withoutComment(const std::string& line) {
   const std::size_t at = line.find("//");
@@ -82,7 +67,7 @@ TEST(ThreadSafetyDocs, TheCheckFindsAStructWithAMemberFunctionAndNoStatement) {
 }
 
 TEST(ThreadSafetyDocs, EveryPublicClassStatesIt) {
-  const std::vector<std::filesystem::path> headers = publicHeaders();
+  const std::vector<std::filesystem::path> headers = confvis::test::publicHeaders();
   ASSERT_GT(headers.size(), 50u);
   std::string missing;
   for (const std::filesystem::path& header : headers)

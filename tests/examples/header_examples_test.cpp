@@ -2,6 +2,8 @@
 // and run here with the names they use bound to real objects.
 #include <gtest/gtest.h>
 
+#include "../public_headers.hpp"
+
 #include <confvis/confvis.hpp>
 
 #include <cstdio>
@@ -103,17 +105,8 @@ TEST(HeaderExamples, EveryMarkedExampleIsExtractedByTheBuild) {
   const std::regex marker(R"re((?:^// |<!-- )example: ([a-z0-9_]+))re");
   int markers = 0;
   std::vector<std::filesystem::path> files{root / "README.md"};
-  for (auto it = std::filesystem::recursive_directory_iterator(root);
-       it != std::filesystem::recursive_directory_iterator(); ++it) {
-    const std::string name = it->path().filename().string();
-    if (it->is_directory() && (name.rfind("build", 0) == 0 || name.rfind('.', 0) == 0)) {
-      it.disable_recursion_pending();  // build folders (an installed copy), .git
-      continue;
-    }
-    if (it->path().extension() == ".hpp" &&
-        it->path().generic_string().find("/include/confvis/") != std::string::npos)
-      files.push_back(it->path());
-  }
+  for (const std::filesystem::path& header : confvis::test::publicHeaders())
+    files.push_back(header);
   for (const std::filesystem::path& file : files) {
     std::ifstream in(file);
     for (std::string line; std::getline(in, line);) {
