@@ -16,9 +16,11 @@
 #include "cli_test_support.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/png_io.hpp"
+#include "screenshot_compare.hpp"
 #include "view_test_support.hpp"
 
 namespace fs = std::filesystem;
+using confvis::testing::badPixelFraction;
 using confvis::testing::CliRun;
 using confvis::testing::runCli;
 using confvis::testing::scratch;
@@ -43,25 +45,8 @@ nlohmann::json readReport(const fs::path& directory) {
   return nlohmann::json::parse(confvis::readTextFile(directory / "view.json"));
 }
 
-// Pixels whose largest channel difference exceeds `tolerance` (8-bit codes), as a fraction.
-// Images of different sizes are all bad.
-double badPixelFraction(const fs::path& a, const fs::path& b, int tolerance) {
-  const confvis::ImageRGBA x = confvis::readPng(a, confvis::PngDecoding::Raw);
-  const confvis::ImageRGBA y = confvis::readPng(b, confvis::PngDecoding::Raw);
-  if (x.width != y.width || x.height != y.height) return 1.0;
-  std::size_t bad = 0;
-  for (int row = 0; row < x.height; ++row)
-    for (int col = 0; col < x.width; ++col) {
-      double worst = 0.0;
-      for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(double(x.at(col, row)[c]) - y.at(col, row)[c]) * 255.0);
-      bad += worst > tolerance + 0.01;
-    }
-  return static_cast<double>(bad) / x.pixelCount();
-}
-
-constexpr int kTolerance = 2;         // 8-bit codes per channel
-constexpr double kBadBudget = 0.005;  // of a wall's pixels
+constexpr int kTolerance = confvis::testing::kScreenshotTolerance;
+constexpr double kBadBudget = confvis::testing::kScreenshotBadBudget;
 const std::string kScale = " --scale 0.05";  // 96 x 96 pixels per wall of cave6
 
 // The view's screenshots against `confvis render` of the same frame, and against a render from

@@ -7,13 +7,17 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iterator>
 #include <set>
 #include <thread>
+#include <vector>
 
 #include "../cli_test_support.hpp"
+#include "../projector_sample.hpp"
+#include "../screenshot_compare.hpp"
 
 namespace fs = std::filesystem;
 using confvis::testing::CliRun;
@@ -145,6 +149,27 @@ TEST(ClusterCli, AMismatchedConfigIsRefusedAtStartNamingTheRank) {
   EXPECT_FALSE(fs::exists(scratch("mismatch") / "render.json"));
 }
 
+// With frame groups every rank is checked against rank 0 of the job, not only against its
+// group's root, and named by its rank in the job: rank 3 is the second rank of group 1.
+TEST(ClusterCli, AMismatchedConfigInAnotherFrameGroupIsRefusedNamingItsJobRank) {
+  const fs::path other = scratch("cave5-other-group.json");
+  nlohmann::json config = readJson(fs::path(CONFVIS_SOURCE_DIR) / "configs/cave5.json");
+  config["edge_length"] = 0.25;
+  std::ofstream(other) << config.dump();
+  const fs::path out = scratch("mismatch-group");
+  const std::string base = std::string(CONFVIS_CLI_PATH) +
+                           " walk --frames 2 --scale 0.02 --bake-resolution 32 --no-pacing -q "
+                           "--cluster --frame-groups 2 -o " + out.string() + " ";
+  const std::string command = kMpiEnvironment + " " + CONFVIS_MPIEXEC +
+                              " --oversubscribe -np 3 " + base + " : -np 1 " + base +
+                              other.string() + " 2>&1";
+  const CliRun run = finish(popen(command.c_str(), "r"));
+  EXPECT_NE(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("rank 3 (host"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("config hash"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(out / "walk.json"));
+}
+
 // A 3-rank walk long enough to be interrupted; each rank records its pid (exec keeps it), so a
 // test can stop or kill one mid-walk as a hung or crashed machine would.
 struct RunningWalk {
@@ -247,6 +272,9 @@ TEST(ClusterCli, WalkSplitOverTwoFrameGroupsEqualsOneProcess) {
     ASSERT_EQ(a.at("frames").size(), 4u);
     for (int k = 0; k < 4; ++k) EXPECT_EQ(a["frames"][k]["frame"], group + 2 * k);
     EXPECT_EQ(a.at("walls").size() + b.at("walls").size(), 5u);  // the walls split too
+    // The maps are baked once, on rank 0: no other group's root runs a follower.
+    EXPECT_EQ(a.at("runs_follower"), group == 0);
+    EXPECT_EQ(b.at("runs_follower"), false);
   }
 }
 
@@ -296,4 +324,109 @@ TEST(ClusterCli, LiveViewOnThreeRanksShowsTheSameFrameStatesOnEveryRank) {
   }
   EXPECT_EQ(walls.size(), 5u);  // every wall shown by some rank
   EXPECT_EQ(readJson(out / "view.json").at("frame_count"), 6);
+}
+
+namespace {
+
+// `confvis ARGS` under xvfb-run: one process, or `ranks` of them under mpirun.
+CliRun runViewOnDisplay(const std::string& args, int ranks = 0) {
+  const std::string launcher =
+      ranks == 0 ? std::string()
+                 : "env " + kMpiEnvironment + " " + CONFVIS_MPIEXEC + " --oversubscribe -np " +
+                       std::to_string(ranks) + " ";
+  return finish(popen(("xvfb-run -a " + launcher + CONFVIS_CLI_PATH + " " + args + " 2>&1").c_str(),
+                      "r"));
+}
+
+// Rank r's view report: rank 0 writes view.json, the others view-rank-R.json.
+nlohmann::json viewReport(const fs::path& out, int rank) {
+  return readJson(out / (rank == 0 ? "view.json" : "view-rank-" + std::to_string(rank) + ".json"));
+}
+
+}  // namespace
+
+// The cluster view is the live view with a frame sync: on three ranks the Vulkan frames stay on
+// each rank's GPU, each rank screenshots its own walls and reports its own validation counts,
+// and every wall's screenshot equals the single-process view's of the same wall.
+TEST(ClusterCli, LiveViewScreenshotsOnThreeRanksEqualTheSingleProcessView) {
+  if (::access("/usr/bin/xvfb-run", X_OK) != 0) GTEST_SKIP() << "no xvfb-run (Debian: xvfb)";
+  const std::string common = "view --backend vulkan --frames 2 --scale 0.05 --bake-resolution 32 "
+                             "--no-vsync --validate -q ";
+  const fs::path single = scratch("view-shots-single"), cluster = scratch("view-shots-cluster");
+  const CliRun one = runViewOnDisplay(common + "--screenshot-dir " + (single / "shots").string() +
+                                      " -o " + single.string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CliRun many = runViewOnDisplay(common + "--cluster --screenshot-dir " +
+                                           (cluster / "shots").string() + " -o " +
+                                           cluster.string(),
+                                       3);
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+
+  std::vector<std::string> walls;
+  for (int rank = 0; rank < 3; ++rank) {
+    SCOPED_TRACE("rank " + std::to_string(rank));
+    const nlohmann::json report = viewReport(cluster, rank);
+    EXPECT_EQ(report.at("frame_count"), 2);
+    EXPECT_EQ(report.at("frame_path"), "gpu");  // rendered on the presenting device
+    EXPECT_EQ(report.at("validation").at("enabled"), true);
+    EXPECT_EQ(report.at("validation").at("errors"), 0) << report["validation"].dump();
+    const nlohmann::json mine =
+        readJson(cluster / ("cluster-rank-" + std::to_string(rank) + ".json")).at("walls");
+    ASSERT_EQ(report.at("windows").size(), mine.size());  // its own walls' windows only
+    for (const nlohmann::json& window : report.at("windows")) {
+      EXPECT_NE(std::find(mine.begin(), mine.end(), window.at("wall")), mine.end());
+      EXPECT_EQ(window.at("screenshot"), window.at("wall").get<std::string>() + ".png");
+      walls.push_back(window.at("wall"));
+    }
+  }
+  ASSERT_EQ(walls.size(), 5u);  // cave5: every wall on some rank
+  for (std::size_t w = 0; w < walls.size(); ++w) {
+    const std::string file = walls[w] + ".png";
+    EXPECT_LE(confvis::testing::badPixelFraction(single / "shots" / file, cluster / "shots" / file),
+              confvis::testing::kScreenshotBadBudget)
+        << file;
+    // Broken on purpose: another wall's picture must fail the same check.
+    const std::string other = walls[(w + 1) % walls.size()] + ".png";
+    EXPECT_GT(confvis::testing::badPixelFraction(single / "shots" / other, cluster / "shots" / file),
+              confvis::testing::kScreenshotBadBudget)
+        << file << " against " << other;
+  }
+}
+
+// Edge blending in the cluster view: a blended projection wall on two ranks (the sample's nodes
+// ignored) presents every window as the single-process view does, blend included.
+TEST(ClusterCli, BlendedProjectorWallOnTwoRanksEqualsTheSingleProcessView) {
+  if (::access("/usr/bin/xvfb-run", X_OK) != 0) GTEST_SKIP() << "no xvfb-run (Debian: xvfb)";
+  const fs::path config =
+      confvis::testing::importedProjectorConfig("cluster-projectors", " --edge-blend 2.2");
+  const std::string common = "view " + config.string() +
+                             " --frames 2 --scale 0.05 --bake-resolution 32 --no-vsync -q ";
+  const fs::path single = scratch("blend-single"), cluster = scratch("blend-cluster");
+  const CliRun one = runViewOnDisplay(common + "--screenshot-dir " + (single / "shots").string() +
+                                      " -o " + single.string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const CliRun many = runViewOnDisplay(common + "--cluster --cluster-ignore-nodes --screenshot-dir " +
+                                           (cluster / "shots").string() + " -o " +
+                                           cluster.string(),
+                                       2);
+  ASSERT_EQ(many.exitCode, 0) << many.output;
+  for (int rank = 0; rank < 2; ++rank) EXPECT_EQ(viewReport(cluster, rank).at("edge_blend"), true);
+  for (const char* wall : {"preview", "projector-left", "projector-right"}) {
+    const std::string file = std::string(wall) + ".png";
+    EXPECT_LE(confvis::testing::badPixelFraction(single / "shots" / file, cluster / "shots" / file),
+              confvis::testing::kScreenshotBadBudget)
+        << file;
+  }
+  // Broken on purpose: the plain (unblended) projector is not what the cluster presented.
+  const fs::path plainConfig = confvis::testing::importedProjectorConfig("cluster-projectors-plain", "");
+  const fs::path plain = scratch("blend-plain");
+  ASSERT_EQ(runViewOnDisplay("view " + plainConfig.string() +
+                             " --frames 2 --scale 0.05 --bake-resolution 32 --no-vsync -q "
+                             "--screenshot-dir " + (plain / "shots").string() + " -o " +
+                             plain.string())
+                .exitCode,
+            0);
+  EXPECT_GT(confvis::testing::badPixelFraction(plain / "shots/projector-left.png",
+                                               cluster / "shots/projector-left.png"),
+            confvis::testing::kScreenshotBadBudget);
 }

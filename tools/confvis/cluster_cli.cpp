@@ -69,13 +69,24 @@ CliCluster::CliCluster(const DisplayConfig& display, const ClusterCliOptions& op
                                          ClusterOptions{.timeoutSeconds = options.timeoutSeconds});
     return;
   }
-  // Group g: ranks g, g + G, ...; rank 0 is the root of group 0. The Cluster keeps a duplicate.
+  // Every rank against rank 0 of the job (version, config hash; the messages name job ranks),
+  // before the groups check their ranks against their own roots. The dealing of these two
+  // checks does not matter: the walls without nodes.
+  DisplayConfig undealt = dealt;
+  for (Wall& wall : undealt.walls) wall.node.clear();
+  const ClusterOptions clusterOptions{.timeoutSeconds = options.timeoutSeconds};
+  { const Cluster everyRank(MPI_COMM_WORLD, undealt, clusterOptions); }
+  // Group g: ranks g, g + G, ...; rank g is its root. The Clusters keep duplicates.
   group_ = worldRank_ % groups_;
-  MPI_Comm groupComm = MPI_COMM_NULL;
+  MPI_Comm groupComm = MPI_COMM_NULL, rootsComm = MPI_COMM_NULL;
   MPI_Comm_split(MPI_COMM_WORLD, group_, worldRank_, &groupComm);
-  cluster_ = std::make_unique<Cluster>(groupComm, dealt,
-                                       ClusterOptions{.timeoutSeconds = options.timeoutSeconds});
+  MPI_Comm_split(MPI_COMM_WORLD, worldRank_ < groups_ ? 0 : MPI_UNDEFINED, worldRank_, &rootsComm);
+  cluster_ = std::make_unique<Cluster>(groupComm, dealt, clusterOptions);
   MPI_Comm_free(&groupComm);
+  if (rootsComm != MPI_COMM_NULL) {
+    roots_ = std::make_unique<Cluster>(rootsComm, undealt, clusterOptions);
+    MPI_Comm_free(&rootsComm);
+  }
 }
 
 CliCluster::~CliCluster() {
@@ -83,6 +94,7 @@ CliCluster::~CliCluster() {
     clusterFailed = true;
     return;
   }
+  roots_.reset();
   cluster_.reset();
   MPI_Finalize();
 }
@@ -99,6 +111,35 @@ void CliCluster::exchangeFrame(ClusterFrameState& state, double patienceSeconds)
 }
 void CliCluster::shareFrameMap(std::shared_ptr<const RetargetMap> map, std::uint64_t generation) {
   cluster_->shareMapNow(std::move(map), generation);
+}
+
+namespace {
+// Rank 0's decision as the group roots receive it: the frame's state, and whether the map of
+// its generation follows (the state names the map the roots hold, so nothing is swapped early).
+struct Decision : ClusterFrameState {
+  std::uint64_t generation = 0;
+  bool newMap = false;
+};
+}  // namespace
+
+std::shared_ptr<const RetargetMap> CliCluster::shareDecision(
+    ClusterFrameState& state, std::shared_ptr<const RetargetMap> map, double patienceSeconds) {
+  if (!roots_) return map;
+  Decision decision;
+  static_cast<ClusterFrameState&>(decision) = state;
+  decision.generation = state.mapGeneration;
+  decision.newMap = !roots_->map() || roots_->mapGeneration() != state.mapGeneration;
+  decision.mapGeneration = roots_->mapGeneration();
+  roots_->exchangeFrame(decision, patienceSeconds);
+  if (decision.newMap) {
+    // The other roots may still be rendering their last frame: all of them meet first, then
+    // the map goes out in chunks while every root waits for it.
+    roots_->swapLock(patienceSeconds);
+    roots_->shareMapNow(std::move(map), decision.generation, patienceSeconds);
+  }
+  state = decision;
+  state.mapGeneration = decision.generation;
+  return roots_->map();
 }
 std::shared_ptr<const RetargetMap> CliCluster::map() const { return cluster_->map(); }
 
@@ -169,6 +210,11 @@ const std::vector<std::string>& CliCluster::walls() const {
 }
 void CliCluster::exchangeFrame(ClusterFrameState&, double) {}
 void CliCluster::shareFrameMap(std::shared_ptr<const RetargetMap>, std::uint64_t) {}
+std::shared_ptr<const RetargetMap> CliCluster::shareDecision(ClusterFrameState&,
+                                                             std::shared_ptr<const RetargetMap> map,
+                                                             double) {
+  return map;
+}
 std::shared_ptr<const RetargetMap> CliCluster::map() const { return nullptr; }
 const RetargetMap* CliCluster::shareMap(const RetargetMap* map, double) { return map; }
 std::optional<RenderResult> CliCluster::render(RenderBackend& backend, const DisplayConfig& d,

@@ -41,7 +41,8 @@ void lingerAfterClusterError();
 class CliCluster {
  public:
   // Error(InvalidInput) when confvis was built without MPI. With frame groups (walks), the
-  // Cluster spans this rank's group: its root decides and writes the group's frames.
+  // Cluster spans this rank's group: its root writes the group's frames, decided by rank 0
+  // (shareDecision). Every rank's version and config hash is checked against rank 0's.
   CliCluster(const DisplayConfig& display, const ClusterCliOptions& options);
   ~CliCluster();
   CliCluster(const CliCluster&) = delete;
@@ -55,6 +56,13 @@ class CliCluster {
   const std::vector<std::string>& walls() const;  // this rank's
   // Rank 0's state to every rank; the map of state.mapGeneration is then map().
   void exchangeFrame(ClusterFrameState& state, double patienceSeconds);
+  // Frame groups: rank 0's decision for a frame (`state`, and `map` of its generation) to the
+  // root of every group, so the follower runs and bakes on rank 0 alone. Collective over the
+  // group roots, once per frame in order; returns the map of state.mapGeneration. Without
+  // frame groups: returns `map`. `patienceSeconds`: how long rank 0 may still take (bakes).
+  std::shared_ptr<const RetargetMap> shareDecision(ClusterFrameState& state,
+                                                   std::shared_ptr<const RetargetMap> map,
+                                                   double patienceSeconds);
   // Rank 0: `map` to every rank as `generation`, before the frame that names it.
   void shareFrameMap(std::shared_ptr<const RetargetMap> map, std::uint64_t generation);
   std::shared_ptr<const RetargetMap> map() const;
@@ -72,6 +80,7 @@ class CliCluster {
 
  private:
   std::unique_ptr<Cluster> cluster_;
+  std::unique_ptr<Cluster> roots_;  // frame groups: the groups' roots (job ranks 0 .. groups - 1)
   int worldRank_ = 0, groups_ = 1, group_ = 0;
 };
 

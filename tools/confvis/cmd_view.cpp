@@ -107,19 +107,18 @@ int runView(const ViewArgs& args) {
                                               : fs::path(args.output);
   nlohmann::json report;
   if (cluster) {
-    // Each rank's frames go through the CPU to its windows (the backend made beforehand).
-    const std::unique_ptr<RenderBackend> backend = makeBackend(args.backend, {args.device, {}});
-    backend->setScene(scene);
-    ClusterViewResult run = runClusterView(*cluster, config, *backend,
+    ClusterViewResult run = runClusterView(*cluster, config, makeRenderer,
                                            follower ? &*follower : nullptr, tracker.get(), options);
     // Every rank's frame states, to show they all showed the same frames.
     const nlohmann::json log = {
         {"rank", cluster->rank()}, {"walls", cluster->walls()}, {"frames", run.frames}};
-    writeTextAtomically(output / ("cluster-rank-" + std::to_string(cluster->rank()) + ".json"),
-                        log.dump(2) + "\n");
-    if (!root) return 0;
+    const std::string rank = std::to_string(cluster->rank());
+    writeTextAtomically(output / ("cluster-rank-" + rank + ".json"), log.dump(2) + "\n");
     report = std::move(run.report);
-    report["backend"] = backend->name();
+    if (!root) {  // its own windows, frame times and validation counts; rank 0 writes view.json
+      writeTextAtomically(output / ("view-rank-" + rank + ".json"), report.dump(2) + "\n");
+      return 0;
+    }
   } else {
     report = runLiveView(config, makeRenderer, *follower, tracker.get(), options);
   }

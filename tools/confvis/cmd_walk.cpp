@@ -86,18 +86,21 @@ int runWalk(const WalkArgs& args) {
   // --cluster: rank 0 tracks, bakes and decides every frame; each rank renders its walls.
   std::optional<CliCluster> cluster;
   if (args.cluster.enabled) cluster.emplace(config, args.cluster);
-  const bool root = !cluster || cluster->isRoot();
+  const bool root = !cluster || cluster->isRoot();  // of this rank's frame group
+  const bool decider = !cluster || cluster->isWorldRoot();  // runs the follower: bakes once
   std::unique_ptr<RenderBackend> backend = makeBackend(args.backend);
   const Scene scene = loadSceneInUnits(args.scene, args.sceneScale, config);
   backend->setScene(scene);
-  if (!args.quiet && root)
+  if (!args.quiet && decider)
     std::fprintf(stderr, "walk: baking the first map of '%s'...\n", config.name.c_str());
   std::optional<MapFollower> follower;
-  if (root)
+  if (decider)
     follower.emplace(config, followerBake(args.bakeResolution, args.bakeEdgeLength),
                      MapFollowerOptions{.radius = args.radius});
   const double setupSeconds = secondsSince(start);
-  nlohmann::json rankLog = nlohmann::json::array();  // --cluster: this rank's frame states
+  // --cluster: this rank's frame states, on disk until the end as walk.json's records are.
+  std::optional<FrameRecordSpool> rankLog;
+  if (cluster) rankLog.emplace();
 
   RenderSettings settings;
   settings.mode = RenderMode::Conformal;
@@ -109,9 +112,10 @@ int runWalk(const WalkArgs& args) {
   const EdgeBlender blender(config);  // masks once: they do not depend on the head
   bool haveFrameConfig = false, haveShared = false;
   std::uint64_t frameConfigGeneration = 0, sharedGeneration = 0;
-  // --cluster with frame groups: this rank's group renders frames index % groups == group. Its
-  // root still decides every frame (the follower sees the whole path, so maps swap on the same
-  // frames as in one process) and rank 0 reports them all.
+  // --cluster with frame groups: this rank's group renders frames index % groups == group.
+  // Rank 0 still decides every frame (the follower sees the whole path, so maps swap on the same
+  // frames as in one process, each map baked once) and sends each decision to every group's
+  // root (shareDecision); rank 0 reports them all.
   const int groups = cluster ? cluster->frameGroups() : 1;
   const int group = cluster ? cluster->frameGroup() : 0;
   const bool reporter = !cluster || cluster->isWorldRoot();
@@ -133,7 +137,7 @@ int runWalk(const WalkArgs& args) {
     ClusterFrameState state;  // what rank 0 decides for this frame
     FollowerFrame frame;
     bool bakeStarted = false;
-    if (root) {
+    if (decider) {
       state.frame = static_cast<std::uint64_t>(index);
       state.seconds = frameSeconds;
       state.head = tracker.latest().value().head;
@@ -144,19 +148,24 @@ int runWalk(const WalkArgs& args) {
       // Offline determinism: a bake started now is swapped in at the next frame, whatever it costs.
       if (args.waitForBakes && frame.baking) follower->waitForBake();
     }
+    if (cluster && root) {  // frame groups: rank 0's decision reaches every group's root
+      frame.map = cluster->shareDecision(state, frame.map,
+                                         index == 0 ? kClusterBakeSeconds : kFrameSeconds);
+      frame.generation = state.mapGeneration;
+    }
     if (cluster && mine) {
       if (root && (!haveShared || sharedGeneration != frame.generation)) {  // before the frame
         cluster->shareFrameMap(frame.map, frame.generation);
         sharedGeneration = frame.generation;
         haveShared = true;
       }
-      cluster->exchangeFrame(state, rankLog.empty() ? kClusterBakeSeconds : kFrameSeconds);
+      cluster->exchangeFrame(state, rankLog->size() == 0 ? kClusterBakeSeconds : kFrameSeconds);
       frame.map = cluster->map();
       frame.generation = state.mapGeneration;
-      rankLog.push_back({{"frame", state.frame}, {"seconds", state.seconds},
-                         {"head", {{"position", toJson(state.head.position)},
-                                   {"orientation", toJson(state.head.orientation)}}},
-                         {"map_generation", state.mapGeneration}});
+      rankLog->add({{"frame", state.frame}, {"seconds", state.seconds},
+                    {"head", {{"position", toJson(state.head.position)},
+                              {"orientation", toJson(state.head.orientation)}}},
+                    {"map_generation", state.mapGeneration}});
     }
     const HeadPose head = state.head;
     const glm::dvec3 reference(frame.map->reference.x, frame.map->reference.y,
@@ -174,7 +183,7 @@ int runWalk(const WalkArgs& args) {
     settings.camera.position = reference;
     try {  // into the previous frame's images (written out already): no fresh output memory
       if (!mine) {
-        // another group renders it; this root only kept the follower in step
+        // another group renders it; this root only took part in the decision
       } else if (!cluster) {
         backend->renderInto(frameConfig, frame.map.get(), settings, result);
       } else if (auto all = cluster->render(*backend, frameConfig, frame.map.get(), settings)) {
@@ -192,12 +201,12 @@ int runWalk(const WalkArgs& args) {
                         {{"walk", {{"frame", index}, {"seconds", frameSeconds}}}});
     }
 
-    for (const std::string& message : follower->takeErrors()) {
-      errors.push_back({{"frame", index}, {"message", message}});
-      if (reporter)
+    if (follower)
+      for (const std::string& message : follower->takeErrors()) {
+        errors.push_back({{"frame", index}, {"message", message}});
         std::fprintf(stderr, "walk: frame %d: re-bake failed, keeping the old map: %s\n",
                      index, message.c_str());
-    }
+      }
     if (frames)
       frames->add({{"frame", index},
                    {"seconds", frameSeconds},
@@ -223,10 +232,11 @@ int runWalk(const WalkArgs& args) {
   if (cluster) {  // every rank's frame states, to show they all saw the same frames
     const nlohmann::json log = {{"rank", cluster->rank()},
                                 {"walls", cluster->walls()},
-                                {"frames", rankLog}};
+                                {"runs_follower", follower.has_value()},  // bakes: rank 0 only
+                                {"frames", FrameRecordSpool::kPlaceholder}};
     writeTextAtomically(fs::path(args.output) /
                             ("cluster-rank-" + std::to_string(cluster->rank()) + ".json"),
-                        log.dump(2) + "\n");
+                        rankLog->spliceInto(log.dump(2)) + "\n");
     if (!reporter) return 0;
   }
   // No waiting for a running bake before the report: it is counted as still running.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "confvis/base/error.hpp"
+#include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/backends/vulkan/external_device.hpp"
 #include "confvis/base/png_io.hpp"
@@ -105,20 +106,42 @@ PresentContextOptions presentOptions(const LiveViewOptions& options) {
           .device = options.renderDevice};
 }
 
-nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const DisplayConfig& config,
-                       RenderBackend& backend, MapFollower& follower, Tracker* tracker,
-                       const LiveViewOptions& options) {
+// The walls this process shows (options.walls), in config order.
+DisplayConfig shownWalls(const DisplayConfig& config, const LiveViewOptions& options) {
+  DisplayConfig shown = config;
+  if (options.walls)
+    std::erase_if(shown.walls, [&](const Wall& wall) {
+      return std::find(options.walls->begin(), options.walls->end(), wall.name) ==
+             options.walls->end();
+    });
+  return shown;
+}
+
+// `context` and `backend` are null on a process that shows no wall (a cluster's head node).
+nlohmann::json runLoop(GlfwSession& glfw, PresentContext* context, const DisplayConfig& config,
+                       RenderBackend* backend, MapFollower* follower, Tracker* tracker,
+                       const LiveViewOptions& options, FrameSync& sync) {
+  const bool decides = sync.decides();
+  if (decides && !follower)
+    throw Error(ErrorCode::Internal, "view: the process that decides the frames needs a follower");
   const std::vector<WindowPlan> plans =
-      planWindows(config, options.stereo, options.scale, glfw.monitors());
+      context ? planWindows(shownWalls(config, options), options.stereo, options.scale,
+                            glfw.monitors())
+              : std::vector<WindowPlan>{};
+  // Overlapping projector walls are ramped as `confvis render` ramps them (on the CPU).
+  const EdgeBlender blender(config);
   // The Vulkan backend on this device writes the swapchain images itself (sRGB ones, so that
-  // the blit encodes its linear values as the CPU composition would).
-  auto* gpu = dynamic_cast<VulkanRenderer*>(&backend);
-  bool gpuFrames = gpu && gpu->deviceHandles().device == context.device();
+  // the blit encodes its linear values as the CPU composition would). Edge-blended walls take
+  // the staging path: the blend is applied to the read-back images.
+  auto* gpu = dynamic_cast<VulkanRenderer*>(backend);
+  bool gpuFrames = gpu && context && gpu->deviceHandles().device == context->device() &&
+                   !blender.active();
   std::vector<std::unique_ptr<DisplayWindow>> windows;
   std::vector<std::unique_ptr<WindowPresenter>> presenters;
   for (const WindowPlan& plan : plans) {
-    windows.push_back(std::make_unique<DisplayWindow>(plan, "confvis view: " + plan.wall));
-    presenters.push_back(std::make_unique<WindowPresenter>(context, windows.back()->handle(),
+    windows.push_back(
+        std::make_unique<DisplayWindow>(plan, options.windowTitle + ": " + plan.wall));
+    presenters.push_back(std::make_unique<WindowPresenter>(*context, windows.back()->handle(),
                                                            options.vsync, gpuFrames));
   }
   for (const auto& presenter : presenters) gpuFrames = gpuFrames && presenter->srgb();
@@ -130,6 +153,7 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
   std::sort(allEyes.begin(), allEyes.end());
   std::vector<RenderGroup> groups = groupByEyes(plans);
   const bool capture = !options.screenshotDirectory.empty();
+  sync.windowsOpen();
 
   RenderSettings settings;
   settings.resolutionScale = options.scale;
@@ -140,17 +164,16 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
   DisplayConfig frameConfig = config;
   bool haveFrameConfig = false;
   std::uint64_t frameConfigGeneration = 0;
-  int bakesStartedBefore = follower.stats().bakesStarted;
+  int bakesStartedBefore = decides ? follower->stats().bakesStarted : 0;
   FrameLog log;
   nlohmann::json bakeErrors = nlohmann::json::array();
   std::string endReason = "frames";
-  std::vector<std::uint8_t> composed;
 
   const Clock::time_point start = Clock::now();
   Clock::time_point frameStart = start, lastTitle = start - std::chrono::seconds(1),
                     lastProgress = start;
   double lastFrameSeconds = 0.0;
-  for (int index = 0; options.frames <= 0 || index < options.frames; ++index) {
+  for (int index = 0;; ++index) {
     glfw.pollEvents();
     bool quit = false, closed = false;
     for (const auto& window : windows) {
@@ -160,38 +183,50 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
       quit = quit || input.quit;
       closed = closed || window->closeRequested();
     }
-    if (quit || closed) {
-      endReason = closed ? "window closed" : "escape";
+    LiveFrameState state;
+    FollowerFrame frame;
+    FrameRecord record;
+    if (decides) {  // elsewhere keys and mouse steer nothing: the decision arrives below
+      controls.update(windows, navigation, lastFrameSeconds);
+      HeadPose head{config.reference};
+      if (tracker)
+        if (const std::optional<TrackedPose> pose = tracker->latest()) head = pose->head;
+      frame = follower->beginFrame(head);
+      state.frame = static_cast<std::uint64_t>(index);
+      state.seconds = secondsBetween(start, Clock::now());
+      state.head = head;
+      state.camera = navigation;
+      state.conformal = mode == RenderMode::Conformal;
+      state.stop = quit || closed;
+      state.quit = state.stop || (options.frames > 0 && index + 1 >= options.frames);
+      if (state.stop) endReason = closed ? "window closed" : "escape";
+      record.bakeStarted = follower->stats().bakesStarted > bakesStartedBefore;
+      record.bakeInFlight = frame.baking;
+      bakesStartedBefore = follower->stats().bakesStarted;
+    }
+    const SyncedMap synced = sync.exchange(state, decides ? &frame : nullptr);
+    if (state.stop) {
+      if (!decides) endReason = "ended by the deciding process";
       break;
     }
-    controls.update(windows, navigation, lastFrameSeconds);
-
-    HeadPose head{config.reference};
-    if (tracker)
-      if (const std::optional<TrackedPose> pose = tracker->latest()) head = pose->head;
-    const FollowerFrame frame = follower.beginFrame(head);
-    const glm::dvec3 reference(frame.map->reference.x, frame.map->reference.y,
-                               frame.map->reference.z);
-    if (!haveFrameConfig || frame.generation != frameConfigGeneration) {
+    const glm::dvec3 reference(synced.map->reference.x, synced.map->reference.y,
+                               synced.map->reference.z);
+    if (!haveFrameConfig || state.mapGeneration != frameConfigGeneration) {
       frameConfig = withReference(config, reference);  // render_plan wants the map's reference
-      frameConfigGeneration = frame.generation;
+      frameConfigGeneration = state.mapGeneration;
       haveFrameConfig = true;
     }
-    FrameRecord record;
-    record.mapGeneration = frame.generation;
-    record.mapSwapped = frame.swapped;
-    record.bakeStarted = follower.stats().bakesStarted > bakesStartedBefore;
-    record.bakeInFlight = frame.baking;
-    record.conformal = mode == RenderMode::Conformal;
-    record.head = {head.position.x, head.position.y, head.position.z};
-    bakesStartedBefore = follower.stats().bakesStarted;
+    record.mapGeneration = state.mapGeneration;
+    record.mapSwapped = synced.swapped;
+    record.conformal = state.conformal;
+    record.head = {state.head.position.x, state.head.position.y, state.head.position.z};
 
     // The virtual world stays put when the map's reference moves: the camera follows it.
-    settings.mode = mode;
-    settings.head = head;
-    settings.camera = navigation;
+    settings.mode = state.conformal ? RenderMode::Conformal : RenderMode::Plain;
+    settings.head = state.head;
+    settings.camera = state.camera;
     settings.camera.position =
-        navigation.position + navigation.rotation() * (reference - config.reference);
+        state.camera.position + state.camera.rotation() * (reference - config.reference);
     const Clock::time_point renderStart = Clock::now();
     Clock::time_point presentStart;
     const auto frameError = [&](const Error& error) {
@@ -215,11 +250,12 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
       settings.walls.clear();
       try {
         if (!targets.empty())
-          gpu->renderImages(frameConfig, frame.map.get(), settings, targets);
+          gpu->renderImages(frameConfig, synced.map.get(), settings, targets);
       } catch (const Error& error) {
         throw frameError(error);
       }
       presentStart = Clock::now();
+      sync.beforePresent(secondsBetween(renderStart, presentStart));
       for (std::size_t w : acquired) presenters[w]->presentAcquired(capture);
       record.windowsPresented = static_cast<int>(acquired.size());
     } else {
@@ -227,10 +263,11 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
         settings.eyes = group.eyes;
         settings.walls = group.walls;
         try {
-          backend.renderInto(frameConfig, frame.map.get(), settings, group.result);
+          backend->renderInto(frameConfig, synced.map.get(), settings, group.result);
         } catch (const Error& error) {
           throw frameError(error);
         }
+        blender.apply(group.result.images);
       }
       presentStart = Clock::now();
       for (std::size_t w = 0; w < windows.size(); ++w) {
@@ -241,16 +278,18 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
               if (image.wall == plan.wall && image.eye == eye) return &image.image;
           return nullptr;
         };
-        std::uint8_t* pixels = presenters[w]->beginFrame(plan.contentWidth, plan.contentHeight);
-        composeWindow(plan, imageOf, pixels);
-        record.windowsPresented += presenters[w]->present(capture) ? 1 : 0;
+        composeWindow(plan, imageOf, presenters[w]->beginFrame(plan.contentWidth, plan.contentHeight));
       }
+      sync.beforePresent(secondsBetween(renderStart, presentStart));
+      for (const auto& presenter : presenters)
+        record.windowsPresented += presenter->present(capture) ? 1 : 0;
     }
-    for (const std::string& message : follower.takeErrors()) {
-      bakeErrors.push_back({{"frame", index}, {"message", message}});
-      std::fprintf(stderr, "view: frame %d: re-bake failed, keeping the old map: %s\n", index,
-                   message.c_str());
-    }
+    if (decides)
+      for (const std::string& message : follower->takeErrors()) {
+        bakeErrors.push_back({{"frame", index}, {"message", message}});
+        std::fprintf(stderr, "view: frame %d: re-bake failed, keeping the old map: %s\n", index,
+                     message.c_str());
+      }
     const Clock::time_point frameEnd = Clock::now();
     record.renderSeconds = secondsBetween(renderStart, presentStart);
     record.presentSeconds = secondsBetween(presentStart, frameEnd);
@@ -262,18 +301,21 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
       lastTitle = frameEnd;
       char status[160];
       std::snprintf(status, sizeof status, " | %.1f ms | %s | map %llu%s | ",
-                    record.frameSeconds * 1e3, modeName(mode),
-                    static_cast<unsigned long long>(frame.generation),
+                    record.frameSeconds * 1e3, state.conformal ? "conformal" : "plain",
+                    static_cast<unsigned long long>(state.mapGeneration),
                     frame.baking ? " (re-baking)" : "");
       for (const auto& window : windows)
-        window->setTitle("confvis view: " + window->plan().wall + status + trackerText(tracker));
+        window->setTitle(options.windowTitle + ": " + window->plan().wall + status +
+                         trackerText(tracker));
     }
-    if (options.showProgress && secondsBetween(lastProgress, frameEnd) >= 1.0) {
+    if (decides && options.showProgress && secondsBetween(lastProgress, frameEnd) >= 1.0) {
       lastProgress = frameEnd;
       std::fprintf(stderr, "view: frame %d, %.1f ms, map %llu%s, %s\n", index + 1,
-                   record.frameSeconds * 1e3, static_cast<unsigned long long>(frame.generation),
+                   record.frameSeconds * 1e3,
+                   static_cast<unsigned long long>(state.mapGeneration),
                    frame.baking ? " (re-baking)" : "", trackerText(tracker).c_str());
     }
+    if (state.quit) break;
   }
 
   nlohmann::json windowReport = nlohmann::json::array();
@@ -297,29 +339,32 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
     windowReport.push_back(entry);
   }
 
-  const MapFollowerStats stats = follower.stats();
-  const ValidationReport validation = context.validation();
+  const ValidationReport validation = context ? context->validation() : ValidationReport{};
   nlohmann::json report = log.toJson();
   report["frame_count"] = log.records().size();
   report["end"] = endReason;
   report["seconds"] = secondsBetween(start, Clock::now());
-  report["present_device"] = context.deviceName();
-  report["backend"] = backend.name();
+  report["present_device"] = context ? context->deviceName() : "none";
+  report["backend"] = backend ? backend->name() : "none";
   // How frames reach the windows: "gpu" (rendered on the presenting device, blitted into the
   // swapchain images) or "staging" (read back, composed on the CPU, uploaded and blitted).
   report["frame_path"] = gpuFrames ? "gpu" : "staging";
+  report["edge_blend"] = blender.active();
   report["windows"] = windowReport;
-  report["rebakes"] = {{"started", stats.bakesStarted},
-                       {"swapped", stats.bakesSucceeded},
-                       {"failed", stats.bakesFailed},
-                       {"running_at_end",
-                        stats.bakesStarted - stats.bakesSucceeded - stats.bakesFailed},
-                       {"errors", bakeErrors}};
-  const TrackerStatus trackerStatus = tracker ? tracker->status() : TrackerStatus{};
-  report["tracker"] = {{"packets_received", trackerStatus.packetsReceived},
-                       {"packets_dropped", trackerStatus.packetsDropped},
-                       {"lost", trackerStatus.lost},
-                       {"present", tracker != nullptr}};
+  if (decides) {
+    const MapFollowerStats stats = follower->stats();
+    report["rebakes"] = {{"started", stats.bakesStarted},
+                         {"swapped", stats.bakesSucceeded},
+                         {"failed", stats.bakesFailed},
+                         {"running_at_end",
+                          stats.bakesStarted - stats.bakesSucceeded - stats.bakesFailed},
+                         {"errors", bakeErrors}};
+    const TrackerStatus trackerStatus = tracker ? tracker->status() : TrackerStatus{};
+    report["tracker"] = {{"packets_received", trackerStatus.packetsReceived},
+                         {"packets_dropped", trackerStatus.packetsDropped},
+                         {"lost", trackerStatus.lost},
+                         {"present", tracker != nullptr}};
+  }
   report["validation"] = {{"enabled", validation.enabled},
                           {"errors", validation.errors},
                           {"warnings", validation.warnings},
@@ -330,12 +375,21 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext& context, const Display
 }  // namespace
 
 nlohmann::json runLiveView(const DisplayConfig& config, const LiveBackendFactory& makeBackend,
-                           MapFollower& follower, Tracker* tracker,
-                           const LiveViewOptions& options) {
+                           MapFollower* follower, Tracker* tracker,
+                           const LiveViewOptions& options, FrameSync& sync) {
   GlfwSession glfw;
+  if (options.walls && options.walls->empty())  // shows nothing: no device, no renderer
+    return runLoop(glfw, nullptr, config, nullptr, follower, tracker, options, sync);
   PresentContext context(presentOptions(options));
   const std::unique_ptr<RenderBackend> backend = makeBackend(context);  // gone before context
-  return runLoop(glfw, context, config, *backend, follower, tracker, options);
+  return runLoop(glfw, &context, config, backend.get(), follower, tracker, options, sync);
+}
+
+nlohmann::json runLiveView(const DisplayConfig& config, const LiveBackendFactory& makeBackend,
+                           MapFollower& follower, Tracker* tracker,
+                           const LiveViewOptions& options) {
+  LocalFrameSync local;
+  return runLiveView(config, makeBackend, &follower, tracker, options, local);
 }
 
 nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
@@ -343,7 +397,8 @@ nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
                            const LiveViewOptions& options) {
   GlfwSession glfw;
   PresentContext context(presentOptions(options));
-  return runLoop(glfw, context, config, backend, follower, tracker, options);
+  LocalFrameSync local;
+  return runLoop(glfw, &context, config, &backend, &follower, tracker, options, local);
 }
 
 }  // namespace confvis

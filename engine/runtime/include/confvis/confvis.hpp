@@ -87,6 +87,7 @@
 #include "confvis/runtime/display_window.hpp"
 #include "confvis/runtime/frame_log.hpp"
 #include "confvis/runtime/frame_state.hpp"
+#include "confvis/runtime/frame_sync.hpp"
 #include "confvis/runtime/live_view.hpp"
 #include "confvis/runtime/present_context.hpp"
 #include "confvis/runtime/tracker_packets.hpp"

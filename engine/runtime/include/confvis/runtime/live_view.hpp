@@ -3,14 +3,20 @@
 // tracker, takes the follower's current map (never waiting for a re-bake), renders every wall
 // for every eye its window shows, and presents each window through its swapchain. Ends after
 // `frames` frames, on Esc, or when a window is closed; returns the report for view.json.
+// With a FrameSync (frame_sync.hpp) the same loop runs frame-locked with other processes (a
+// cluster: each shows its own walls, one decides every frame).
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/base/export.hpp"
+#include "confvis/runtime/frame_sync.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/runtime/tracker.hpp"
 
@@ -32,6 +38,10 @@ struct LiveViewOptions {
   // then chosen as VulkanOptions::device says (`renderDevice`), with every rendering feature.
   bool renderOnPresentingDevice = false;
   std::string renderDevice;
+  // The walls this process shows (a window each); unset: every wall. Empty: none (a cluster's
+  // head node: it decides frames, opens no window and renders nothing).
+  std::optional<std::vector<std::string>> walls;
+  std::string windowTitle = "confvis view";  // each window's title: "TITLE: WALL | status"
 };
 
 class PresentContext;
@@ -46,6 +56,13 @@ using LiveBackendFactory = std::function<std::unique_ptr<RenderBackend>(const Pr
 nlohmann::json runLiveView(const DisplayConfig& config, const LiveBackendFactory& makeBackend,
                            MapFollower& follower, Tracker* tracker,
                            const LiveViewOptions& options);
+// Frame-locked through `sync`: `follower` and `tracker` are used (and needed: `follower` not
+// null) only where sync.decides(); options.walls picks this process's windows. Where it decides,
+// the report holds what the single process reports; elsewhere the same without re-bakes and
+// tracker counts.
+nlohmann::json runLiveView(const DisplayConfig& config, const LiveBackendFactory& makeBackend,
+                           MapFollower* follower, Tracker* tracker,
+                           const LiveViewOptions& options, FrameSync& sync);
 // The same with a backend made beforehand (its frames always go through the CPU).
 nlohmann::json runLiveView(const DisplayConfig& config, RenderBackend& backend,
                            MapFollower& follower, Tracker* tracker,

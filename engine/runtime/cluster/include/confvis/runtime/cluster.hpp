@@ -132,3 +132,36 @@ class Cluster {
 };
 
 }  // namespace confvis
+
+#include "confvis/runtime/frame_sync.hpp"
+
+namespace confvis CONFVIS_API {
+
+// The live view (runLiveView with a FrameSync, live_view.hpp) frame-locked over a Cluster: the
+// root decides every frame and sends it to every rank; a new map of the root's follower travels
+// in chunks while frames go on (shareMap / progressMaps) and every rank swaps to it on the frame
+// whose state names it; the swap lock before present makes every window show the same frame.
+// Thread-safety: as Cluster: one thread per process makes every call.
+class ClusterFrameSync : public FrameSync {
+ public:
+  // `firstFrameSeconds`: how long the other ranks wait for the root's first frame and map (the
+  // root may still be opening windows or baking).
+  explicit ClusterFrameSync(Cluster& cluster, double firstFrameSeconds = 600.0);
+
+  bool decides() const override;
+  // Every rank has its windows before the root starts sending the map (opening them may take
+  // longer on a loaded machine than the map's broadcast allows).
+  void windowsOpen() override;
+  SyncedMap exchange(LiveFrameState& state, const FollowerFrame* frame) override;
+  // Slower ranks get a few times this rank's render time before they count as lost.
+  void beforePresent(double renderSeconds) override;
+
+ private:
+  Cluster& cluster_;
+  double firstFrameSeconds_;
+  // Plain numbers with flags, not optionals: GCC 12 warns of optional compares.
+  bool first_ = true, pending_ = false;
+  std::uint64_t sharedGeneration_ = 0, pendingGeneration_ = 0;
+};
+
+}  // namespace confvis
