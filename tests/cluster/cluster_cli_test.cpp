@@ -430,3 +430,23 @@ TEST(ClusterCli, BlendedProjectorWallOnTwoRanksEqualsTheSingleProcessView) {
                                                cluster / "shots/projector-left.png"),
             confvis::testing::kScreenshotBadBudget);
 }
+
+// A rank without walls (a head node) runs the same loop without a device or windows: it gets
+// every frame state, renders nothing and ends with rank 0.
+TEST(ClusterCli, LiveViewRankWithoutWallsOpensNothingAndFollowsTheFrames) {
+  if (::access("/usr/bin/xvfb-run", X_OK) != 0) GTEST_SKIP() << "no xvfb-run (Debian: xvfb)";
+  const fs::path out = scratch("view-head-node");
+  const CliRun run = runViewOnDisplay("view " + std::string(CONFVIS_SOURCE_DIR) +
+                                          "/configs/flat-wall.json --cluster --frames 3 "
+                                          "--scale 0.05 --bake-resolution 32 --no-vsync -q -o " +
+                                          out.string(),
+                                      2);
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const nlohmann::json head = viewReport(out, 1);
+  EXPECT_EQ(head.at("windows").size(), 0u);
+  EXPECT_EQ(head.at("present_device"), "none");
+  EXPECT_EQ(head.at("frame_count"), 3);
+  EXPECT_EQ(viewReport(out, 0).at("windows").size(), 1u);
+  EXPECT_EQ(readJson(out / "cluster-rank-1.json").at("frames"),
+            readJson(out / "cluster-rank-0.json").at("frames"));
+}
