@@ -4,19 +4,8 @@
 # and check their output against closed-form values (the consumer renders real frames through a
 # real bake: their pixels too).
 # Arguments: -DBUILD_DIR= -DSOURCE_DIR= -DWORK_DIR= -DGENERATOR= -DEXAMPLES_DIR=
-foreach(var BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR EXAMPLES_DIR)
-  if(NOT DEFINED ${var})
-    message(FATAL_ERROR "run_consumer_test.cmake needs -D${var}=...")
-  endif()
-endforeach()
-
-function(run step)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${step} failed (${rc}):\n${out}\n${err}")
-  endif()
-  set(output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/driver_support.cmake)
+require_driver_arguments(run_consumer_test.cmake BUILD_DIR SOURCE_DIR WORK_DIR GENERATOR EXAMPLES_DIR)
 
 file(REMOVE_RECURSE ${WORK_DIR})
 set(installed ${WORK_DIR}/installed)

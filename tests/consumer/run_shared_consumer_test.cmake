@@ -8,19 +8,8 @@
 #   (find_package(confvis COMPONENTS engine)), checks that it links the shared library and runs
 #   it: closed-form views, and a confvis::Error thrown inside the library caught by the program.
 # Arguments: -DSOURCE_DIR= -DWORK_DIR= -DGENERATOR= -DNM= -DREADELF= [-DLAUNCHER=ccache]
-foreach(var SOURCE_DIR WORK_DIR GENERATOR NM READELF)
-  if(NOT DEFINED ${var} OR "${${var}}" STREQUAL "")
-    message(FATAL_ERROR "run_shared_consumer_test.cmake needs -D${var}=...")
-  endif()
-endforeach()
-
-function(run step)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${step} failed (${rc}):\n${out}\n${err}")
-  endif()
-  set(output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/driver_support.cmake)
+require_driver_arguments(run_shared_consumer_test.cmake SOURCE_DIR WORK_DIR GENERATOR NM READELF)
 
 file(REMOVE_RECURSE ${WORK_DIR})
 set(launcher "")

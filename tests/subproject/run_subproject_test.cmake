@@ -2,19 +2,8 @@
 # Makefiles, CMake's default generator, in a fresh folder; build the SPIR-V shaders (whose output
 # folder Makefiles do not create by themselves) and a program linking confvis::base; run it.
 # Arguments: -DSOURCE_DIR= -DWORK_DIR= [-DLAUNCHER=ccache]
-foreach(var SOURCE_DIR WORK_DIR)
-  if(NOT DEFINED ${var})
-    message(FATAL_ERROR "run_subproject_test.cmake needs -D${var}=...")
-  endif()
-endforeach()
-
-function(run step)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${step} failed (${rc}):\n${out}\n${err}")
-  endif()
-  set(output "${out}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/driver_support.cmake)
+require_driver_arguments(run_subproject_test.cmake SOURCE_DIR WORK_DIR)
 
 file(REMOVE_RECURSE ${WORK_DIR})
 set(launcher "")

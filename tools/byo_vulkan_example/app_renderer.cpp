@@ -7,7 +7,10 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <vector>
+
+#include <glm/gtc/packing.hpp>
 
 #include "app_device.hpp"
 #include "app_pipelines.hpp"
@@ -22,40 +25,79 @@ namespace byo_example {
 namespace cv = confvis::vulkan;
 namespace {
 
-// The application's own vertex: attributes in an order and stride of its choosing, described to
-// the pre-pass by a VertexLayout.
-struct AppVertex {
-  float uv[2];
-  float position[3];
-  float normal[3];
-  std::uint32_t meshTag;  // something only the application uses
-};
-
+// The application's own vertices: attributes in an order, formats and stride of its choosing
+// (AppOptions::VertexFormat), described to the pre-pass by a VertexLayout, and a tag per vertex
+// that only the application uses.
 struct AppGeometry {
-  std::vector<AppVertex> vertices;
+  std::vector<unsigned char> vertices;
+  std::size_t vertexCount = 0;
+  cv::VertexLayout layout;
   std::vector<std::uint32_t> indices;
   std::vector<cv::PrepassMesh> meshes;
   std::vector<const confvis::Mesh*> sources;  // per entry of `meshes`
 };
 
-AppGeometry flatten(const confvis::Scene& scene) {
+cv::VertexLayout layoutFor(AppOptions::VertexFormat format) {
+  cv::VertexLayout l;
+  switch (format) {
+    case AppOptions::VertexFormat::Float32:
+      l = {36, 8, VK_FORMAT_R32G32B32_SFLOAT, 20, VK_FORMAT_R32G32B32_SFLOAT, 0,
+           VK_FORMAT_R32G32_SFLOAT};
+      break;
+    case AppOptions::VertexFormat::Half:
+      l = {24, 0, VK_FORMAT_R16G16B16A16_SFLOAT, 8, VK_FORMAT_R16G16B16A16_SFLOAT, 16,
+           VK_FORMAT_R16G16_SFLOAT};
+      break;
+    case AppOptions::VertexFormat::Mixed:
+      l = {32, 0, VK_FORMAT_R32G32B32A32_SFLOAT, 16, VK_FORMAT_R16G16B16A16_SFLOAT, 24,
+           VK_FORMAT_R16G16_UNORM};
+      break;
+  }
+  return l;
+}
+
+// Writes `values` at `at` in `format` (one of layoutFor's).
+void pack(unsigned char* at, VkFormat format, glm::vec4 values) {
+  const auto put = [&](const auto& array) { std::memcpy(at, array.data(), sizeof(array)); };
+  const auto half = [](float f) { return glm::packHalf1x16(f); };
+  switch (format) {
+    case VK_FORMAT_R32G32_SFLOAT: put(std::array<float, 2>{values.x, values.y}); break;
+    case VK_FORMAT_R32G32B32_SFLOAT: put(std::array<float, 3>{values.x, values.y, values.z}); break;
+    case VK_FORMAT_R32G32B32A32_SFLOAT:
+      put(std::array<float, 4>{values.x, values.y, values.z, values.w});
+      break;
+    case VK_FORMAT_R16G16_SFLOAT: put(std::array<std::uint16_t, 2>{half(values.x), half(values.y)}); break;
+    case VK_FORMAT_R16G16B16A16_SFLOAT:
+      put(std::array<std::uint16_t, 4>{half(values.x), half(values.y), half(values.z),
+                                       half(values.w)});
+      break;
+    case VK_FORMAT_R16G16_UNORM:
+      put(std::array<std::uint16_t, 2>{glm::packUnorm1x16(values.x), glm::packUnorm1x16(values.y)});
+      break;
+    default: throw confvis::Error(confvis::ErrorCode::Internal, "example: unpacked vertex format");
+  }
+}
+
+AppGeometry flatten(const confvis::Scene& scene, AppOptions::VertexFormat format) {
   AppGeometry g;
+  g.layout = layoutFor(format);
+  const std::uint32_t stride = g.layout.stride;
   for (const confvis::Mesh& mesh : scene.meshes) {
     if (mesh.triangles.empty()) continue;
     cv::PrepassMesh range;
     range.firstIndex = static_cast<std::uint32_t>(g.indices.size());
     range.indexCount = static_cast<std::uint32_t>(3 * mesh.triangles.size());
-    range.vertexOffset = static_cast<std::int32_t>(g.vertices.size());
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-      AppVertex v{};
+    range.vertexOffset = static_cast<std::int32_t>(g.vertexCount);
+    g.vertices.resize((g.vertexCount + mesh.positions.size()) * stride);
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i, ++g.vertexCount) {
+      unsigned char* v = g.vertices.data() + g.vertexCount * stride;
       const glm::vec3 n = mesh.normals.empty() ? glm::vec3(0.0f) : mesh.normals[i];
       const glm::vec2 uv = mesh.uvs.empty() ? glm::vec2(0.0f) : mesh.uvs[i];
-      v.uv[0] = uv.x, v.uv[1] = uv.y;
-      v.position[0] = mesh.positions[i].x, v.position[1] = mesh.positions[i].y,
-      v.position[2] = mesh.positions[i].z;
-      v.normal[0] = n.x, v.normal[1] = n.y, v.normal[2] = n.z;
-      v.meshTag = static_cast<std::uint32_t>(g.meshes.size());
-      g.vertices.push_back(v);
+      pack(v + g.layout.positionOffset, g.layout.positionFormat, glm::vec4(mesh.positions[i], 1.0f));
+      pack(v + g.layout.normalOffset, g.layout.normalFormat, glm::vec4(n, 0.0f));
+      pack(v + g.layout.uvOffset, g.layout.uvFormat, glm::vec4(uv, 0.0f, 0.0f));
+      const auto tag = static_cast<std::uint32_t>(g.meshes.size());
+      std::memcpy(v + stride - sizeof(tag), &tag, sizeof(tag));
     }
     for (const glm::uvec3& t : mesh.triangles) g.indices.insert(g.indices.end(), {t.x, t.y, t.z});
     g.meshes.push_back(range);
@@ -199,19 +241,38 @@ std::vector<confvis::WallImage> renderThroughMap(const confvis::DisplayConfig& c
   const VkDevice device = vk.device();
   const cv::AppDevice app = vk.appDevice();
 
-  // The application's geometry, described to the pre-pass by its layout.
-  const AppGeometry geometry = flatten(scene);
-  cv::PrepassGeometry prepassGeometry;
-  prepassGeometry.vertices = geometry.vertices.data();
-  prepassGeometry.vertexCount = geometry.vertices.size();
-  prepassGeometry.layout.stride = sizeof(AppVertex);
-  prepassGeometry.layout.positionOffset = offsetof(AppVertex, position);
-  prepassGeometry.layout.normalOffset = offsetof(AppVertex, normal);
-  prepassGeometry.layout.uvOffset = offsetof(AppVertex, uv);
-  prepassGeometry.indices = geometry.indices;
-  prepassGeometry.meshes = geometry.meshes;
-  cv::ConformalPrepassStep prepass(app, prepassGeometry);
-  const cv::UploadedRetargetMap warpMap = cv::uploadRetargetMap(app, map);
+  // The application's geometry in its own vertex and index buffers (host-visible here, written
+  // by the host before any submission: an application's staged upload would do as well),
+  // described to the pre-pass by its layout; the half-float layout takes 16-bit indices.
+  const AppGeometry geometry = flatten(scene, options.vertexFormat);
+  const bool shortIndices = options.vertexFormat == AppOptions::VertexFormat::Half &&
+                            std::all_of(geometry.indices.begin(), geometry.indices.end(),
+                                        [](std::uint32_t i) { return i <= 0xffff; });
+  const std::size_t indexSize = shortIndices ? 2 : 4;
+  AppBuffer vertexBuffer(vk, geometry.vertices.size(),
+                         VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  std::memcpy(vertexBuffer.mapped, geometry.vertices.data(), geometry.vertices.size());
+  AppBuffer indexBuffer(vk, geometry.indices.size() * indexSize,
+                        VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+  for (std::size_t i = 0; i < geometry.indices.size(); ++i) {
+    const std::uint16_t shortIndex = static_cast<std::uint16_t>(geometry.indices[i]);
+    std::memcpy(static_cast<unsigned char*>(indexBuffer.mapped) + i * indexSize,
+                shortIndices ? static_cast<const void*>(&shortIndex) : &geometry.indices[i],
+                indexSize);
+  }
+  cv::PrepassBuffers buffers;
+  buffers.vertexBuffer = vertexBuffer.buffer;
+  buffers.vertexCount = geometry.vertexCount;
+  buffers.layout = geometry.layout;
+  if (options.wrongPositionOffset) buffers.layout.positionOffset = geometry.layout.normalOffset;
+  buffers.indexBuffer = indexBuffer.buffer;
+  buffers.indexCount = static_cast<std::uint32_t>(geometry.indices.size());
+  buffers.indexType = shortIndices ? VK_INDEX_TYPE_UINT16 : VK_INDEX_TYPE_UINT32;
+  buffers.meshes = geometry.meshes;
+  cv::ConformalPrepassStep prepass(app, buffers);
+  // The map: uploaded now (its own submission), or recorded with the frame's pre-pass below.
+  std::optional<cv::UploadedRetargetMap> uploadedMap;
+  if (!options.recordedUpload) uploadedMap.emplace(cv::uploadRetargetMap(app, map));
 
   // Textures: the scene's and a white one for meshes without.
   std::vector<cv::UploadedTexture> textures;
@@ -285,7 +346,17 @@ std::vector<confvis::WallImage> renderThroughMap(const confvis::DisplayConfig& c
 
   // The conformal pre-pass on the application's own command buffer; the host then knows the
   // tessellated lists' sizes.
-  vk.submitAndWait([&](VkCommandBuffer cmd) { prepass.record(cmd, warpMap, frame); });
+  cv::UploadStaging staging;
+  vk.submitAndWait([&](VkCommandBuffer cmd) {
+    if (options.recordedUpload) {
+      cv::RecordedRetargetMapUpload recorded = cv::recordRetargetMapUpload(app, cmd, map);
+      uploadedMap.emplace(std::move(recorded.map));
+      staging = std::move(recorded.staging);
+    }
+    prepass.record(cmd, *uploadedMap, frame);
+  });
+  staging.submissionCompleted();  // submitAndWait waited for it
+  const cv::UploadedRetargetMap& warpMap = *uploadedMap;
 
   writeBuffer(device, frameSet, 0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, frameBuffer.buffer);
   writeBuffer(device, frameSet, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, viewBuffer.buffer);

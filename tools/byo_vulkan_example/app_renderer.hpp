@@ -21,6 +21,19 @@ struct AppOptions {
   // A deliberately broken render (tests): only the pre-pass's flat list, without the pieces
   // (split at midpoints and along the cut) and the tessellated lists.
   bool onlyFlatList = false;
+  // How the application stores its vertices in its own vertex buffer (VertexLayout):
+  // Float32: uv R32G32, position and normal R32G32B32, 36 bytes, uint32 indices;
+  // Half: position and normal R16G16B16A16_SFLOAT, uv R16G16_SFLOAT, 24 bytes, uint16 indices;
+  // Mixed: position R32G32B32A32_SFLOAT, normal R16G16B16A16_SFLOAT, uv R16G16_UNORM, 32 bytes.
+  enum class VertexFormat { Float32, Half, Mixed };
+  VertexFormat vertexFormat = VertexFormat::Float32;
+  // A deliberately wrong layout (tests): the pre-pass is told the positions lie at the normals'
+  // offset. (A wrong stride fails as surely, but scatters triangles across the whole scene,
+  // which costs lavapipe minutes to tessellate.)
+  bool wrongPositionOffset = false;
+  // The map uploaded on the frame's own command buffer (recordRetargetMapUpload), in the same
+  // submission as the pre-pass, instead of by uploadRetargetMap's own submission.
+  bool recordedUpload = false;
 };
 
 // Renders `scene` on every wall of `config` through `map` (centre eye, camera at rest), one

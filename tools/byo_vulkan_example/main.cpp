@@ -3,6 +3,7 @@
 // backends/vulkan/README.md, "Bring your own Vulkan renderer".
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -38,6 +39,16 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   cli.add_option("--device", device, "part of the Vulkan device's name (default: the first usable)");
   cli.add_flag("--validation", options.validation, "Khronos validation layer; messages to stderr");
+  using Format = byo_example::AppOptions::VertexFormat;
+  const std::map<std::string, Format> formats = {
+      {"float32", Format::Float32}, {"half", Format::Half}, {"mixed", Format::Mixed}};
+  cli.add_option("--vertex-format", options.vertexFormat,
+                 "the app's own vertex buffer layout: float32 (R32 attributes), half "
+                 "(R16G16B16A16_SFLOAT, R16G16_SFLOAT), mixed (R32G32B32A32_SFLOAT positions, "
+                 "half normals, R16G16_UNORM uvs)")
+      ->transform(CLI::CheckedTransformer(formats, CLI::ignore_case));
+  cli.add_flag("--recorded-upload", options.recordedUpload,
+               "record the map upload on the frame's command buffer (recordRetargetMapUpload)");
   cli.add_option("-o,--output", output, "output directory (default: out/byo-vulkan-CONFIG)");
   CLI11_PARSE(cli, argc, argv);
   try {

@@ -2,6 +2,7 @@
 // What the bring-your-own objects hold (byo_upload.hpp): shared between their sources.
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -9,6 +10,7 @@
 #include "context.hpp"
 #include "handles.hpp"
 #include "map_images.hpp"
+#include "memory.hpp"
 
 namespace confvis::vulkan {
 
@@ -18,6 +20,10 @@ struct UploadedRetargetMap::Impl {
   UniqueSampler sampler;
   glm::dvec3 reference{0.0};
   std::uint64_t fingerprint = 0;
+};
+
+struct UploadStaging::Impl {
+  std::vector<Buffer> buffers;
 };
 
 }  // namespace confvis::vulkan

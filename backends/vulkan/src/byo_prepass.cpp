@@ -3,10 +3,12 @@
 #include "confvis/backends/vulkan/byo_prepass.hpp"
 
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <string>
 
 #include "byo_internal.hpp"
+#include "byo_vertex_formats.hpp"
 #include "confvis/backends/vulkan/warp_interface.hpp"
 #include "confvis/base/error.hpp"
 #include "conformal_prepass.hpp"
@@ -22,38 +24,39 @@ namespace {
   throw Error(ErrorCode::InvalidInput, "pre-pass geometry: " + what);
 }
 
-void checkAttribute(const VertexLayout& layout, const char* name, std::uint32_t offset,
-                    VkFormat format, VkFormat expected, std::uint32_t bytes) {
-  if (offset == kNoAttribute) return;
-  if (format != expected)
-    badGeometry(std::string(name) + " format " + std::to_string(format) + " is not supported (" +
-                (expected == VK_FORMAT_R32G32_SFLOAT ? "R32G32_SFLOAT" : "R32G32B32_SFLOAT") +
-                " only)");
+// Checks one attribute of the layout; returns whether the layout has it.
+bool checkAttribute(const VertexLayout& layout, AttributeRole role, const char* name,
+                    std::uint32_t offset, VkFormat format) {
+  if (offset == kNoAttribute) return false;
+  const std::uint32_t bytes = attributeBytes(role, name, format);
   if (std::size_t{offset} + bytes > layout.stride)
     badGeometry(std::string(name) + " at offset " + std::to_string(offset) + " (" +
-                std::to_string(bytes) + " bytes) does not fit the stride " +
-                std::to_string(layout.stride));
+                std::to_string(bytes) + " bytes, " + vertexFormatName(format) +
+                ") does not fit the stride " + std::to_string(layout.stride));
+  return true;
 }
 
-// The application's vertices in the backend's layout (GpuScene's Vertex).
+// The application's vertices in the backend's layout (GpuScene's Vertex), converted to float.
 std::vector<Vertex> convertVertices(const PrepassGeometry& geometry) {
   const VertexLayout& layout = geometry.layout;
   if (geometry.vertices == nullptr || geometry.vertexCount == 0) badGeometry("no vertices");
   if (layout.positionOffset == kNoAttribute) badGeometry("the layout has no position");
-  checkAttribute(layout, "position", layout.positionOffset, layout.positionFormat,
-                 VK_FORMAT_R32G32B32_SFLOAT, 12);
-  checkAttribute(layout, "normal", layout.normalOffset, layout.normalFormat,
-                 VK_FORMAT_R32G32B32_SFLOAT, 12);
-  checkAttribute(layout, "uv", layout.uvOffset, layout.uvFormat, VK_FORMAT_R32G32_SFLOAT, 8);
+  checkAttribute(layout, AttributeRole::Position, "position", layout.positionOffset,
+                 layout.positionFormat);
+  const bool normals = checkAttribute(layout, AttributeRole::Normal, "normal",
+                                      layout.normalOffset, layout.normalFormat);
+  const bool uvs =
+      checkAttribute(layout, AttributeRole::Uv, "uv", layout.uvOffset, layout.uvFormat);
   const auto* bytes = static_cast<const unsigned char*>(geometry.vertices);
   std::vector<Vertex> vertices(geometry.vertexCount, Vertex{});
   for (std::size_t i = 0; i < geometry.vertexCount; ++i) {
     const unsigned char* v = bytes + i * layout.stride;
-    std::memcpy(&vertices[i].position, v + layout.positionOffset, 12);
-    if (layout.normalOffset != kNoAttribute) std::memcpy(&vertices[i].normal, v + layout.normalOffset, 12);
-    if (layout.uvOffset != kNoAttribute) std::memcpy(&vertices[i].uv, v + layout.uvOffset, 8);
-    if (!std::isfinite(vertices[i].position.x) || !std::isfinite(vertices[i].position.y) ||
-        !std::isfinite(vertices[i].position.z))
+    Vertex& out = vertices[i];
+    out.position = readAttribute(layout.positionFormat, v + layout.positionOffset);
+    if (normals) out.normal = readAttribute(layout.normalFormat, v + layout.normalOffset);
+    if (uvs) out.uv = glm::vec2(readAttribute(layout.uvFormat, v + layout.uvOffset));
+    if (!std::isfinite(out.position.x) || !std::isfinite(out.position.y) ||
+        !std::isfinite(out.position.z))
       badGeometry("vertex " + std::to_string(i) + " has a non-finite position");
   }
   return vertices;
@@ -89,6 +92,76 @@ std::vector<GpuScene::Draw> meshDraws(const PrepassGeometry& geometry) {
   return draws;
 }
 
+// The application's buffers read back (the host builds the edge list from the indices; see the
+// constructor's comment in byo_prepass.hpp): bytes of the vertices and the indices as uint32.
+struct ReadBack {
+  std::vector<unsigned char> vertices;
+  PrepassGeometry geometry;
+};
+
+void checkRange(VkDevice device, VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes,
+                const char* what) {
+  if (buffer == VK_NULL_HANDLE) badGeometry(std::string("no ") + what + " buffer");
+  VkMemoryRequirements needs;
+  vkGetBufferMemoryRequirements(device, buffer, &needs);
+  if (offset + bytes > needs.size)
+    badGeometry(std::string(what) + " range " + std::to_string(offset) + " + " +
+                std::to_string(bytes) + " bytes lies past the buffer's " +
+                std::to_string(needs.size) + " bytes of memory");
+}
+
+ReadBack readBack(const AppDevice& app, const PrepassBuffers& buffers) {
+  const VertexLayout& layout = buffers.layout;
+  if (buffers.vertexCount == 0) badGeometry("no vertices");
+  if (layout.stride == 0) badGeometry("the layout's stride is 0");
+  if (buffers.indexType != VK_INDEX_TYPE_UINT32 && buffers.indexType != VK_INDEX_TYPE_UINT16)
+    badGeometry("index type " + std::to_string(buffers.indexType) +
+                " is not supported (VK_INDEX_TYPE_UINT16 or VK_INDEX_TYPE_UINT32)");
+  if (buffers.indexCount == 0 || buffers.indexCount % 3 != 0)
+    badGeometry(std::to_string(buffers.indexCount) + " indices is not a triangle list");
+  const VkDeviceSize vertexBytes = VkDeviceSize{buffers.vertexCount} * layout.stride;
+  const VkDeviceSize indexSize = buffers.indexType == VK_INDEX_TYPE_UINT16 ? 2 : 4;
+  const VkDeviceSize indexBytes = VkDeviceSize{buffers.indexCount} * indexSize;
+  checkRange(app.device, buffers.vertexBuffer, buffers.vertexOffset, vertexBytes, "vertex");
+  checkRange(app.device, buffers.indexBuffer, buffers.indexOffset, indexBytes, "index");
+
+  VulkanContext context(app);
+  const VkDeviceSize indexStart = (vertexBytes + 3) / 4 * 4;
+  Buffer staging(context, indexStart + indexBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                 BufferMemory::Host);
+  context.submitAndWait([&](VkCommandBuffer cmd) {
+    const VkBufferCopy vertexCopy{buffers.vertexOffset, 0, vertexBytes};
+    vkCmdCopyBuffer(cmd, buffers.vertexBuffer, staging.get(), 1, &vertexCopy);
+    const VkBufferCopy indexCopy{buffers.indexOffset, indexStart, indexBytes};
+    vkCmdCopyBuffer(cmd, buffers.indexBuffer, staging.get(), 1, &indexCopy);
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &toHost, 0, nullptr, 0, nullptr);
+  });
+  ReadBack result;
+  const auto* mapped = static_cast<const unsigned char*>(staging.mapped());
+  result.vertices.assign(mapped, mapped + vertexBytes);
+  PrepassGeometry& geometry = result.geometry;
+  geometry.vertices = result.vertices.data();
+  geometry.vertexCount = buffers.vertexCount;
+  geometry.layout = layout;
+  geometry.meshes = buffers.meshes;
+  geometry.indices.resize(buffers.indexCount);
+  const unsigned char* indices = mapped + indexStart;
+  for (std::uint32_t i = 0; i < buffers.indexCount; ++i) {
+    if (indexSize == 2) {
+      std::uint16_t index;
+      std::memcpy(&index, indices + 2 * std::size_t{i}, 2);
+      geometry.indices[i] = index;
+    } else {
+      std::memcpy(&geometry.indices[i], indices + 4 * std::size_t{i}, 4);
+    }
+  }
+  return result;
+}
+
 }  // namespace
 
 struct ConformalPrepassStep::Impl {
@@ -121,6 +194,9 @@ struct ConformalPrepassStep::Impl {
 ConformalPrepassStep::ConformalPrepassStep(const AppDevice& app, const PrepassGeometry& geometry)
     : impl_(std::make_unique<Impl>(app, convertVertices(geometry), geometry,
                                    meshDraws(geometry))) {}
+
+ConformalPrepassStep::ConformalPrepassStep(const AppDevice& app, const PrepassBuffers& buffers)
+    : ConformalPrepassStep(app, readBack(app, buffers).geometry) {}
 
 ConformalPrepassStep::~ConformalPrepassStep() = default;
 

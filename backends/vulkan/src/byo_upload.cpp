@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "byo_internal.hpp"
 #include "confvis/backends/conformal_warp.hpp"
@@ -26,13 +27,17 @@ glm::dvec3 UploadedRetargetMap::reference() const { return impl_->reference; }
 std::uint32_t UploadedRetargetMap::faceSize() const { return impl_->images.geom.spec().width; }
 std::uint64_t UploadedRetargetMap::fingerprint() const { return impl_->fingerprint; }
 
-UploadedRetargetMap uploadRetargetMap(const AppDevice& app, const RetargetMap& map) {
+namespace {
+
+// Everything of an uploaded map but its images; `upload` makes them.
+template <class Upload>
+UploadedRetargetMap makeUploadedMap(const AppDevice& app, const RetargetMap& map, Upload upload) {
   const glm::dvec3 reference = map.reference;
   if (!std::isfinite(reference.x) || !std::isfinite(reference.y) || !std::isfinite(reference.z))
     throw Error(ErrorCode::InvalidInput, "retarget map: reference point is not finite");
   auto impl = std::make_unique<UploadedRetargetMap::Impl>();
   impl->context = std::make_unique<VulkanContext>(app);
-  impl->images = uploadMapImages(*impl->context, map);
+  impl->images = upload(*impl->context);
   const VkSamplerCreateInfo samplerInfo = warpSamplerInfo();
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(app.device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");
@@ -40,6 +45,42 @@ UploadedRetargetMap uploadRetargetMap(const AppDevice& app, const RetargetMap& m
   impl->reference = reference;
   impl->fingerprint = fingerprintCubeMap(map.geom, reference);
   return UploadedRetargetMap(std::move(impl));
+}
+
+}  // namespace
+
+UploadedRetargetMap uploadRetargetMap(const AppDevice& app, const RetargetMap& map) {
+  return makeUploadedMap(app, map,
+                         [&](VulkanContext& context) { return uploadMapImages(context, map); });
+}
+
+UploadStaging::UploadStaging() : impl_(std::make_unique<Impl>()) {}
+UploadStaging::UploadStaging(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+UploadStaging::UploadStaging(UploadStaging&&) noexcept = default;
+UploadStaging& UploadStaging::operator=(UploadStaging&&) noexcept = default;
+UploadStaging::~UploadStaging() = default;
+void UploadStaging::submissionCompleted() {
+  if (impl_) impl_->buffers.clear();
+}
+bool UploadStaging::holding() const { return impl_ && !impl_->buffers.empty(); }
+VkDeviceSize UploadStaging::bytes() const {
+  VkDeviceSize total = 0;
+  if (impl_)
+    for (const Buffer& buffer : impl_->buffers) total += buffer.size();
+  return total;
+}
+
+RecordedRetargetMapUpload recordRetargetMapUpload(const AppDevice& app, VkCommandBuffer cmd,
+                                                  const RetargetMap& map) {
+  if (cmd == VK_NULL_HANDLE)
+    throw Error(ErrorCode::InvalidInput, "recordRetargetMapUpload: no command buffer");
+  // Validated first: a malformed map leaves `cmd` as it was.
+  const MapUploadData data = mapUploadData(map);
+  auto staging = std::make_unique<UploadStaging::Impl>();
+  UploadedRetargetMap uploaded = makeUploadedMap(app, map, [&](VulkanContext& context) {
+    return recordMapImagesUpload(context, cmd, data, staging->buffers);
+  });
+  return {std::move(uploaded), UploadStaging(std::move(staging))};
 }
 
 struct UploadedTexture::Impl {

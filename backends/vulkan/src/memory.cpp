@@ -129,26 +129,34 @@ void transitionImage(VkCommandBuffer cmd, const Image& image, VkImageLayout from
   vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
-void uploadFloatImage(VulkanContext& context, const Image& image, const float* rgba) {
+Buffer recordFloatImageUpload(VulkanContext& context, VkCommandBuffer cmd, const Image& image,
+                              const float* rgba) {
   const ImageSpec& spec = image.spec();
   const std::size_t bytes =
       std::size_t{spec.width} * spec.height * spec.layers * 4 * sizeof(float);
   Buffer staging(context, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
   std::memcpy(staging.mapped(), rgba, bytes);
-  context.submitAndWait([&](VkCommandBuffer cmd) {
-    transitionImage(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                    VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_WRITE_BIT);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, spec.layers};
-    region.imageExtent = {spec.width, spec.height, 1};
-    vkCmdCopyBufferToImage(cmd, staging.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           1, &region);
-    transitionImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT,
-                    VK_ACCESS_SHADER_READ_BIT);
-  });
+  transitionImage(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                  VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_TRANSFER_WRITE_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, spec.layers};
+  region.imageExtent = {spec.width, spec.height, 1};
+  vkCmdCopyBufferToImage(cmd, staging.get(), image.get(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                         &region);
+  // Compute too: the conformal pre-pass samples the map images.
+  transitionImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_ALL_GRAPHICS_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_SHADER_READ_BIT);
+  return staging;
+}
+
+void uploadFloatImage(VulkanContext& context, const Image& image, const float* rgba) {
+  Buffer staging;
+  context.submitAndWait(
+      [&](VkCommandBuffer cmd) { staging = recordFloatImageUpload(context, cmd, image, rgba); });
 }
 
 void writeBufferDescriptor(VkDevice device, VkDescriptorSet set, std::uint32_t binding,

@@ -85,6 +85,10 @@ void transitionImage(VkCommandBuffer cmd, const Image& image, VkImageLayout from
 // Fills an R32G32B32A32_SFLOAT image from tightly packed RGBA floats (layers back to back, rows
 // from the top) and leaves it ready for sampling in fragment and pre-rasterization stages.
 void uploadFloatImage(VulkanContext& context, const Image& image, const float* rgba);
+// The same recorded on `cmd` (not submitted): returns the staging buffer, which must live until
+// that submission has completed.
+Buffer recordFloatImageUpload(VulkanContext& context, VkCommandBuffer cmd, const Image& image,
+                              const float* rgba);
 
 // Points binding `binding` of `set` at the whole buffer / at the image view with a sampler
 // (shader-read-only layout).

@@ -6,6 +6,10 @@
 // to the display's rim, and sorts the triangles into the draw lists the warp's pipelines draw
 // (backends/vulkan/README.md, "The conformal warp" and "Bring your own Vulkan renderer").
 //
+// The geometry comes from the application's own vertex and index buffers (PrepassBuffers, read
+// once when the step is made) or from host memory (PrepassGeometry), its vertex layout
+// described by VertexLayout (float32, float16 and unorm16 attributes).
+//
 // Per frame: record() on a command buffer, submit it and wait (the tessellated lists' sizes are
 // read on the host), then draw each mesh's Flat and Pieces lists with vkCmdDrawIndexedIndirect
 // from drawCommandBuffer() and its Tessellated and Dropping lists with vkCmdDraw of drawCommand()
@@ -33,9 +37,12 @@ namespace vulkan CONFVIS_API {
 
 inline constexpr std::uint32_t kNoAttribute = std::numeric_limits<std::uint32_t>::max();
 
-// Where the attributes lie in one of the application's vertices (byte offsets within `stride`).
-// Positions are R32G32B32_SFLOAT (world coordinates); normals R32G32B32_SFLOAT and uvs
-// R32G32_SFLOAT where present (kNoAttribute: none; the draws then get zero normals or uvs).
+// Where the attributes lie in one of the application's vertices (byte offsets within `stride`)
+// and their formats. Positions (world coordinates) and normals: VK_FORMAT_R32G32B32_SFLOAT,
+// R32G32B32A32_SFLOAT or R16G16B16A16_SFLOAT (xyz read, w ignored); uvs: R32G32_SFLOAT,
+// R16G16_SFLOAT or R16G16_UNORM. kNoAttribute: none (the draws then get zero normals or uvs).
+// Any other format is refused with Error(InvalidInput) naming it. The step converts them to
+// float32 (ConformalVertex, below): the draw lists' vertices are always float32.
 struct VertexLayout {
   std::uint32_t stride = 0;
   std::uint32_t positionOffset = 0;
@@ -62,6 +69,23 @@ struct PrepassGeometry {
   std::size_t vertexCount = 0;
   VertexLayout layout;
   std::vector<std::uint32_t> indices;
+  std::vector<PrepassMesh> meshes;  // empty: one mesh over every index, vertexOffset 0
+};
+
+// The application's geometry in its own device buffers, as its pipeline draws it with
+// vkCmdBindVertexBuffers(vertexBuffer, vertexOffset) and vkCmdBindIndexBuffer(indexBuffer,
+// indexOffset, indexType): `vertexCount` vertices of `layout.stride` bytes and `indexCount`
+// indices of a triangle list. Both buffers need VK_BUFFER_USAGE_TRANSFER_SRC_BIT and must hold
+// their data (the application's upload completed) when the step is constructed.
+struct PrepassBuffers {
+  VkBuffer vertexBuffer = VK_NULL_HANDLE;
+  VkDeviceSize vertexOffset = 0;
+  std::size_t vertexCount = 0;
+  VertexLayout layout;
+  VkBuffer indexBuffer = VK_NULL_HANDLE;
+  VkDeviceSize indexOffset = 0;
+  std::uint32_t indexCount = 0;
+  VkIndexType indexType = VK_INDEX_TYPE_UINT32;  // or VK_INDEX_TYPE_UINT16
   std::vector<PrepassMesh> meshes;  // empty: one mesh over every index, vertexOffset 0
 };
 
@@ -108,6 +132,17 @@ class ConformalPrepassStep {
   // wrong with the geometry (null data, a stride smaller than an attribute, an unsupported
   // format, an index outside its mesh's vertices, a mesh outside the index list).
   ConformalPrepassStep(const AppDevice& app, const PrepassGeometry& geometry);
+  // From the application's own buffers. Their contents are copied back once, by a transfer
+  // this constructor records and submits on app.queue and waits for (a VkBuffer is read on the
+  // host only through such a copy): the pre-pass's per-frame work runs on the device, but it
+  // needs the mesh's distinct edges, its edge midpoints and the slots for cut vertices laid out
+  // beside the vertices, and those are built on the host from the topology, once per geometry.
+  // Geometry that changes (new vertices or indices) takes a new step. The same errors as above,
+  // and Error(InvalidInput) for a null buffer, an index type other than UINT16 / UINT32, or a
+  // range larger than its buffer's memory requirements (Vulkan does not tell a buffer's size:
+  // a range past its end but within that is the application's error, which the validation
+  // layer reports).
+  ConformalPrepassStep(const AppDevice& app, const PrepassBuffers& buffers);
   ~ConformalPrepassStep();
   ConformalPrepassStep(const ConformalPrepassStep&) = delete;
   ConformalPrepassStep& operator=(const ConformalPrepassStep&) = delete;
