@@ -5,6 +5,7 @@
 // DIR/view.json: frame times (mean, p50, p99; with and without a re-bake in flight), the frame
 // log, re-bakes, tracker packets, swapchain recreations and validation messages.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -24,6 +25,7 @@
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/runtime/present_context.hpp"
 #include "confvis/runtime/tracker_factory.hpp"
+#include "confvis/runtime/zero_extent_injection.hpp"
 #include "retarget_map_source.hpp"
 #include "shipped_files.hpp"
 
@@ -54,6 +56,16 @@ int runView(const ViewArgs& args) {
                                   ? shippedFile("configs/cave5.json", "display config")
                                   : fs::path(args.config);
   const DisplayConfig config = loadDisplayConfig(configPath);
+  // Test seam: a window whose surface reports 0 x 0 for some frames (zero_extent_injection.hpp).
+  if (const char* injected = std::getenv(kZeroExtentVariable); injected && *injected) {
+    ZeroExtentInjection injection = parseZeroExtentInjection(injected);
+    try {
+      (void)config.wall(injection.wall);
+    } catch (const Error& error) {
+      throw Error(error.code(), std::string(kZeroExtentVariable) + ": " + error.what());
+    }
+    setZeroExtentInjection(std::move(injection));
+  }
   // --cluster: rank 0 tracks, navigates and bakes; every rank shows its walls (cluster_view.hpp).
   std::optional<CliCluster> cluster;
   if (args.cluster.enabled) cluster.emplace(config, args.cluster);
