@@ -1,7 +1,7 @@
 // The check CliView.ReBakeInTheBackgroundHoldsNoFrameUp applies to view.json's frame log, on
 // made-up logs: it passes frames that share the machine with a bake (on a quiet machine and on
-// a loaded one, where every frame is slow and some stall), and fails a render that waited for
-// the bake, at its start or at its swap, whatever the load.
+// a loaded one, where every frame is slow and some stall: logs like those measured at load 18),
+// and fails a render that waited for the bake, at its start or at its swap, whatever the load.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -53,6 +53,33 @@ TEST(BakeHoldupCheck, FramesSharingTheMachineWithTheBakePass) {
   loaded.calm(150, 40.0, 11, 150.0);
   const auto l = measureBakeHoldup(loaded.frames);
   EXPECT_TRUE(bakeHoldupProblems(l, 100).empty()) << bakeHoldupProblems(l, 100).front();
+
+  // As measured at load 18: a quick bake over few slow frames, one of them a 406 ms stall.
+  Log few;
+  few.add(2000.0);
+  few.calm(100, 8.0, 50, 90.0);
+  few.add(61.0, true, true);
+  few.add(406.0, true);
+  few.add(249.0, true);
+  few.add(111.0, true);
+  few.add(45.0, false, false, true);
+  few.calm(200, 8.0, 60, 90.0);
+  const auto f = measureBakeHoldup(few.frames);
+  EXPECT_TRUE(bakeHoldupProblems(f, 100).empty()) << bakeHoldupProblems(f, 100).front();
+
+  // As measured at load 19: quick calm frames (p99 2.7 ms) with rare stalls, one 128 ms frame
+  // during the bake.
+  Log spiky;
+  spiky.add(2000.0);
+  spiky.calm(500, 2.0, 250, 150.0);
+  spiky.add(9.6, true, true);
+  spiky.add(128.0, true);
+  for (int i = 0; i < 80; ++i) spiky.add(8.5, true);
+  spiky.add(12.0, false, false, true);
+  spiky.calm(700, 2.0, 350, 150.0);
+  const auto s = measureBakeHoldup(spiky.frames);
+  EXPECT_LT(s.calmP99Ms, 3.0);
+  EXPECT_TRUE(bakeHoldupProblems(s, 100).empty()) << bakeHoldupProblems(s, 100).front();
 }
 
 TEST(BakeHoldupCheck, ARenderThatWaitedForTheBakeFails) {
