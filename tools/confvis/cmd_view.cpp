@@ -26,6 +26,7 @@
 #include "confvis/runtime/present_context.hpp"
 #include "confvis/runtime/tracker_factory.hpp"
 #include "confvis/runtime/zero_extent_injection.hpp"
+#include "render_options.hpp"
 #include "retarget_map_source.hpp"
 #include "shipped_files.hpp"
 
@@ -161,13 +162,9 @@ const RegisterCommand registration{Command{
     "head",
     [](CLI::App& sub) {
       auto args = std::make_shared<ViewArgs>();
-      sub.add_option("config", args->config, "Display config; default: configs/cave5.json");
-      sub.add_option("--scene", args->scene,
-                     "Built-in scene (checker-sphere, checker-tunnel, graph) or an OBJ/glTF file")
-          ->capture_default_str();
-      sub.add_option("--backend", args->backend, "Renderer")
-          ->check(CLI::IsMember(backendNames()))
-          ->capture_default_str();
+      addDisplayConfigArgument(sub, args->config);
+      addSceneOption(sub, args->scene);
+      addBackendOption(sub, args->backend);
       sub.add_option("--device", args->device,
                      "Vulkan renderer's device: auto, an index or part of a name");
       sub.add_option("--eyes", args->eyes,
@@ -194,10 +191,7 @@ const RegisterCommand registration{Command{
       sub.add_option("--scale", args->scale, "Rendered pixels per wall pixel")
           ->check(kPositiveNumber)
           ->capture_default_str();
-      sub.add_option("--radius", args->radius,
-                     "Metres the head may stray from the map's reference before a re-bake")
-          ->check(kPositiveNumber)
-          ->capture_default_str();
+      addRebakeRadiusOption(sub, args->radius);
       sub.add_option("--bake-resolution", args->bakeResolution,
                      "Cube texels per face of every map, baked without the cache; default: the config's "
                      "(first map through the cache)")
