@@ -4,7 +4,9 @@
 // merely share the machine's cores with it are slower, but each is a small part of it. On a
 // loaded machine every frame is slow and some stall for a few hundred milliseconds (measured: a
 // 406 ms frame among the 5 of an 873 ms bake, at load 18 on 2 cores, with calm frames of
-// 8.5 ms p50 and 83 ms p99), so the bounds are relative to the same run's frames.
+// 8.5 ms p50 and 83 ms p99; under ctest -j2 a 352 ms frame during a 4.7 s bake whose calm
+// frames never passed 58 ms), so the bounds are relative to the same run's frames, with room
+// for the scheduler's stalls.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -56,7 +58,7 @@ inline BakeHoldup measureBakeHoldup(const nlohmann::json& frames) {
 
 // What is wrong with a run (empty: nothing): no frame from the bake's start to its swap may take
 // 3/4 of that span (a frame that waited for the bake would take nearly all of it, however loaded
-// the machine), nor be slower than both 10 x the calm frames' p99 + 100 ms and 1.5 x the slowest
+// the machine), nor be slower than both 10 x the calm frames' p99 + 400 ms and 1.5 x the slowest
 // calm frame (generous: the bake competes for the cores, and a loaded machine stalls frames with
 // or without it).
 inline std::vector<std::string> bakeHoldupProblems(const BakeHoldup& m, int minimumCalmFrames) {
@@ -70,10 +72,10 @@ inline std::vector<std::string> bakeHoldupProblems(const BakeHoldup& m, int mini
   if (m.worstBakingMs >= 0.75 * m.bakeMs)
     problems.push_back("a frame during the bake took " + std::to_string(m.worstBakingMs) +
                        " ms of the bake's " + std::to_string(m.bakeMs) + " ms");
-  if (m.worstBakingMs > std::max(10.0 * m.calmP99Ms + 100.0, 1.5 * m.calmMaxMs))
+  if (m.worstBakingMs > std::max(10.0 * m.calmP99Ms + 400.0, 1.5 * m.calmMaxMs))
     problems.push_back("a frame during the bake took " + std::to_string(m.worstBakingMs) +
                        " ms, beyond 10 x the calm frames' p99 of " + std::to_string(m.calmP99Ms) +
-                       " ms + 100 ms and 1.5 x their slowest, " + std::to_string(m.calmMaxMs) +
+                       " ms + 400 ms and 1.5 x their slowest, " + std::to_string(m.calmMaxMs) +
                        " ms");
   return problems;
 }

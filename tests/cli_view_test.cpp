@@ -205,7 +205,7 @@ ProgressSeen readProgress(const fs::path& log) {
 // swapped in. A frame that waited for the bake would last as long as the bake; so no frame from
 // the one that starts it to the one that swaps its map in (the renderer prepares its per-map
 // tables there) may take 3/4 of that span, nor be slower than both 10 x the p99 of the frames
-// without a bake + 100 ms and 1.5 x the slowest of them (bake_holdup.hpp: bounds relative to
+// without a bake + 400 ms and 1.5 x the slowest of them (bake_holdup.hpp: bounds relative to
 // the same run, so a loaded machine, where every frame is slow, passes, and a waiting render
 // fails however loaded: tests/bake_holdup_test.cpp). The run goes on until its progress lines
 // show 150 frames after the swap, so a slow machine gets as many frames without a bake as a
