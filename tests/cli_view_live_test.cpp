@@ -1,6 +1,7 @@
 // `confvis view` under what a live display meets (Xvfb, lavapipe): a window minimised and
-// restored (the window manager's WM_STATE, set from outside as one would), and head poses fed
-// over UDP to 127.0.0.1 in both protocols, with garbage among them.
+// restored (the window manager's WM_STATE, set from outside as one would), a window whose
+// surface reports 0 x 0 for some frames (injected: Xvfb never does), and head poses fed over UDP
+// to 127.0.0.1 in both protocols, with garbage among them.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -8,6 +9,7 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -21,6 +23,8 @@
 
 namespace fs = std::filesystem;
 using confvis::testing::scratch;
+using confvis::testing::freeUdpPort;
+using confvis::testing::sendTo;
 using confvis::testing::VirtualDisplay;
 
 namespace {
@@ -63,6 +67,35 @@ nlohmann::json closeAndReport(Display* display, Window front, const Background& 
 
 void sleepSeconds(double s) { std::this_thread::sleep_for(std::chrono::duration<double>(s)); }
 
+// The frame log shows all `windows` presented, then one fewer for a while (never anything else
+// meanwhile), then all again. Returns the first frame of each phase (-1 if not reached).
+std::array<int, 2> expectOneWindowPausedAndResumed(const nlohmann::json& report, int windows) {
+  int phase = 0;  // 0: before, 1: one window paused, 2: resumed
+  std::array<int, 2> starts{-1, -1};
+  for (const nlohmann::json& frame : report["frames"]) {
+    const int shown = frame["windows_presented"], index = frame["frame"];
+    if (phase == 0 && shown == windows - 1) {
+      phase = 1;
+      starts[0] = index;
+    }
+    if (phase == 1 && shown == windows) {
+      phase = 2;
+      starts[1] = index;
+    }
+    if (phase == 1) {
+      EXPECT_EQ(shown, windows - 1) << "frame " << frame["frame"];
+    }
+  }
+  EXPECT_EQ(phase, 2) << "the window paused and resumed";
+  return starts;
+}
+
+void expectNoValidationMessage(const nlohmann::json& report) {
+  EXPECT_TRUE(report["validation"]["enabled"].get<bool>());
+  EXPECT_EQ(report["validation"]["errors"], 0) << report["validation"].dump(2);
+  EXPECT_EQ(report["validation"]["warnings"], 0) << report["validation"].dump(2);
+}
+
 // The shared display, retried for a few seconds (a loaded machine can refuse the first try).
 Display* openDisplay() {
   for (int attempt = 0; attempt < 50; ++attempt) {
@@ -95,46 +128,56 @@ TEST(CliViewLive, MinimisedWindowPausesAndResumesWithoutValidationMessages) {
     XCloseDisplay(display);
 
     EXPECT_EQ(report["frame_path"], backend == "vulkan" ? "gpu" : "staging");
-    EXPECT_EQ(report["validation"]["errors"], 0) << report["validation"].dump(2);
-    EXPECT_EQ(report["validation"]["warnings"], 0) << report["validation"].dump(2);
+    expectNoValidationMessage(report);
     // Six windows, then five while the front one is minimised, then six again.
-    int phase = 0;  // 0: before, 1: minimised, 2: restored
-    for (const nlohmann::json& frame : report["frames"]) {
-      const int shown = frame["windows_presented"];
-      if (phase == 0 && shown == 5) phase = 1;
-      if (phase == 1 && shown == 6) phase = 2;
-      if (phase == 1) {
-        EXPECT_EQ(shown, 5) << "frame " << frame["frame"];
-      }
-    }
-    EXPECT_EQ(phase, 2) << "the minimised window paused and resumed";
+    expectOneWindowPausedAndResumed(report, 6);
   }
 }
 
+// The front window's surface reports 0 x 0 for frames 10 to 17 (as a minimised window's does on
+// Windows and some compositors; injected through CONFVIS_TEST_ZERO_EXTENT, since Xvfb never
+// does): the presenter skips that window without making a swapchain of zero size, the other five
+// go on every frame, and frame 18 shows it again through a new swapchain of the window's size.
+// No validation message, both frame paths (GPU frames through acquire(), staged CPU frames).
+TEST(CliViewLive, ZeroSurfaceExtentSkipsTheWindowAndRecreatesWithoutValidationMessages) {
+  if (VirtualDisplay::shared().name().empty()) GTEST_SKIP() << VirtualDisplay::shared().whyUnavailable();
+  constexpr int kFirst = 10, kCount = 8, kFrames = 30;
+  for (const std::string backend : {"vulkan", "embree"}) {
+    SCOPED_TRACE(backend);
+    const fs::path out = scratch("view-zero-extent-" + backend);
+    const confvis::testing::CliRun run = confvis::testing::runCli(
+        "view " + cave6() + " --backend " + backend + " --scale 0.05 --validate -q --frames " +
+            std::to_string(kFrames) + " -o " + out.string(),
+        VirtualDisplay::shared().environment() + " CONFVIS_TEST_ZERO_EXTENT=front:" +
+            std::to_string(kFirst) + ":" + std::to_string(kCount));
+    ASSERT_EQ(run.exitCode, 0) << run.output;
+    const nlohmann::json report =
+        nlohmann::json::parse(confvis::readTextFile(out / "view.json"));
+
+    EXPECT_EQ(report["frame_path"], backend == "vulkan" ? "gpu" : "staging");
+    EXPECT_EQ(report["end"], "frames");
+    ASSERT_EQ(report["frames"].size(), static_cast<std::size_t>(kFrames)) << "frames went on";
+    expectNoValidationMessage(report);
+    const std::array<int, 2> starts = expectOneWindowPausedAndResumed(report, 6);
+    EXPECT_EQ(starts[0], kFirst);
+    EXPECT_EQ(starts[1], kFirst + kCount);
+    for (const nlohmann::json& entry : report["windows"]) {
+      SCOPED_TRACE(entry["wall"].get<std::string>());
+      // One new swapchain for the front window, at its own size again; none for the others.
+      EXPECT_EQ(entry["swapchain_recreations"], entry["wall"] == "front" ? 1 : 0);
+      EXPECT_EQ(entry["swapchain"], nlohmann::json({96, 96}));
+    }
+  }
+  // A wall the display does not have is one error naming the variable, not a silent no-op.
+  const confvis::testing::CliRun unknown = confvis::testing::runCli(
+      "view " + cave6() + " --frames 1 -q -o " + scratch("view-zero-extent-bad").string(),
+      VirtualDisplay::shared().environment() + " CONFVIS_TEST_ZERO_EXTENT=nowhere:1:2");
+  EXPECT_EQ(unknown.exitCode, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("CONFVIS_TEST_ZERO_EXTENT"), std::string::npos) << unknown.output;
+  EXPECT_NE(unknown.output.find("nowhere"), std::string::npos) << unknown.output;
+}
+
 namespace {
-
-int freeUdpPort() {
-  const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ::bind(s, reinterpret_cast<sockaddr*>(&address), sizeof address);
-  socklen_t length = sizeof address;
-  ::getsockname(s, reinterpret_cast<sockaddr*>(&address), &length);
-  ::close(s);
-  return ntohs(address.sin_port);
-}
-
-void sendTo(int port, const std::string& datagram) {
-  const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ::sendto(s, datagram.data(), datagram.size(), 0, reinterpret_cast<sockaddr*>(&address),
-           sizeof address);
-  ::close(s);
-}
 
 // A pose in the tracker's protocol: metres and an identity rotation (cave6 has no "tracking"
 // transform, so the room frame is the tracker's).

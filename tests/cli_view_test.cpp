@@ -8,11 +8,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "bake_holdup.hpp"
 #include "cli_test_support.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/png_io.hpp"
@@ -155,53 +158,93 @@ TEST(CliView, ResizeRecreatesTheSwapchainAndCloseEndsCleanly) {
   }
 }
 
-// The head walks 30 cm within the first half second: the map follower re-bakes in the
-// background while frames keep coming through the old map, and the new one is swapped in. No
-// frame with the bake in flight, nor the frame that swaps the new map in (the renderer prepares
-// its per-map tables there), may take much longer than the slow frames without one: the bake
-// shares the machine's cores with the renderer, so frames slow down, but a frame that waited
-// for the bake would take the bake's whole time (frame 0, which creates the swapchains, is left
-// out of both sides).
+namespace {
+
+// The frame number and map state of `view`'s progress lines ("view: frame N, ... map G[ (re-baking)],
+// ..."): the first frame seen with a swapped-in map and no bake running, and the latest frame.
+struct ProgressSeen {
+  int latest = -1, settledAt = -1;
+};
+
+ProgressSeen readProgress(const fs::path& log) {
+  ProgressSeen seen;
+  std::istringstream lines(confvis::readTextFile(log));
+  for (std::string line; std::getline(lines, line);) {
+    int frame = 0;
+    unsigned long long generation = 0;
+    const std::size_t map = line.find(", map ");
+    if (std::sscanf(line.c_str(), "view: frame %d,", &frame) != 1 || map == std::string::npos ||
+        std::sscanf(line.c_str() + map, ", map %llu", &generation) != 1)
+      continue;
+    seen.latest = frame;
+    if (seen.settledAt < 0 && generation >= 1 && line.find("re-baking") == std::string::npos)
+      seen.settledAt = frame;
+  }
+  return seen;
+}
+
+}  // namespace
+
+// The head steps 30 cm (a pose sent over UDP once the frames are going): the map follower
+// re-bakes in the background while frames keep coming through the old map, and the new one is
+// swapped in. A frame that waited for the bake would last as long as the bake; so no frame from
+// the one that starts it to the one that swaps its map in (the renderer prepares its per-map
+// tables there) may take 3/4 of that span, nor be slower than both 10 x the p99 of the frames
+// without a bake + 400 ms and 1.5 x the slowest of them (bake_holdup.hpp: bounds relative to
+// the same run, so a loaded machine, where every frame is slow, passes, and a waiting render
+// fails however loaded: tests/bake_holdup_test.cpp). The run goes on until its progress lines
+// show 150 frames after the swap, so a slow machine gets as many frames without a bake as a
+// quick one; then its window is closed.
 TEST(CliView, ReBakeInTheBackgroundHoldsNoFrameUp) {
   REQUIRE_DISPLAY();
-  const fs::path out = scratch("view-rebake"), path = scratch("view-rebake.csv");
-  std::ofstream(path) << "seconds,x,y,z,qw,qx,qy,qz\n0,0,0,0,1,0,0,0\n0.5,0.3,0,0,1,0,0,0\n"
-                         "1000,0.3,0,0,1,0,0,0\n";
-  const CliRun run = runView(config("cave5") + " --tracker path:" + path.string() +
-                             " --bake-resolution 64 --scale 0.02 --frames 300 -o " + out.string());
-  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const fs::path out = scratch("view-rebake"), log = scratch("view-rebake.log");
+  const int port = confvis::testing::freeUdpPort();
+  Display* display = XOpenDisplay(VirtualDisplay::shared().name().c_str());
+  ASSERT_NE(display, nullptr);
+  const pid_t pid = confvis::testing::startBackground(
+      "env " + VirtualDisplay::shared().environment() + " " + CONFVIS_CLI_PATH + " view " +
+          config("cave5") + " --tracker udp:" + std::to_string(port) +
+          " --bake-resolution 64 --scale 0.02 -o " + out.string(),
+      log);
+  const auto window = confvis::testing::waitForWindow(display, "confvis view: front", 60.0);
+  ASSERT_TRUE(window) << "no window appeared: " << confvis::readTextFile(log);
+  constexpr int kFramesBefore = 30, kFramesAfterSwap = 150;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(240);
+  ProgressSeen seen;
+  bool moved = false;
+  while (std::chrono::steady_clock::now() < deadline) {
+    seen = readProgress(log);
+    if (!moved && seen.latest >= kFramesBefore) {
+      for (int i = 0; i < 5; ++i)  // a few times: UDP may drop one
+        confvis::testing::sendTo(port, "{\"t\": 1, \"pos\": [0.3, 0, 0], \"quat\": [0, 0, 0, 1]}\n");
+      moved = true;
+    }
+    if (seen.settledAt >= 0 && seen.latest >= seen.settledAt + kFramesAfterSwap) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  confvis::testing::requestClose(display, *window);
+  const std::optional<int> exitCode = confvis::testing::waitExit(pid, 60.0);
+  XCloseDisplay(display);
+  ASSERT_TRUE(exitCode) << "still running after the close: " << confvis::readTextFile(log);
+  ASSERT_EQ(*exitCode, 0) << confvis::readTextFile(log);
+  EXPECT_GE(seen.settledAt, 0) << "no swapped map within 240 s: " << confvis::readTextFile(log);
+
   const nlohmann::json report = readReport(out);
   ASSERT_GE(report["rebakes"]["started"].get<int>(), 1) << report["rebakes"].dump();
   EXPECT_GE(report["rebakes"]["swapped"].get<int>(), 1) << report["rebakes"].dump();
   EXPECT_EQ(report["rebakes"]["failed"], 0);
-
   const nlohmann::json& frames = report["frames"];
-  std::vector<double> calm;
-  double worstBaking = 0.0;
-  int baking = 0, swappedAt = -1;
-  for (std::size_t i = 1; i < frames.size(); ++i) {
-    const double ms = frames[i]["ms"].get<double>();
-    if (frames[i]["bake_in_flight"].get<bool>() || frames[i]["map_swapped"].get<bool>()) {
-      ++baking;
-      worstBaking = std::max(worstBaking, ms);
-    } else {
-      calm.push_back(ms);
-    }
-    if (frames[i]["map_swapped"].get<bool>() && swappedAt < 0) swappedAt = static_cast<int>(i);
-  }
-  ASSERT_GE(calm.size(), 100u);
-  std::sort(calm.begin(), calm.end());
-  const double calmP99 = calm[static_cast<std::size_t>(std::ceil(0.99 * calm.size())) - 1];
-  std::printf("[ measured ] %zu frames without a bake: p50 %.2f ms, p99 %.2f ms; %d frames with "
-              "a bake in flight or swapping its map in: worst %.2f ms\n",
-              calm.size(), calm[calm.size() / 2], calmP99, baking, worstBaking);
-  EXPECT_GE(baking, 1) << "frames kept coming while the bake ran";
-  EXPECT_LE(worstBaking, 10.0 * calmP99 + 100.0);
+  const confvis::testing::BakeHoldup m = confvis::testing::measureBakeHoldup(frames);
+  std::printf("[ measured ] %d frames without a bake: p50 %.2f ms, p99 %.2f ms; the bake: %.0f ms "
+              "over %d frames from its start to its swap, worst %.2f ms\n",
+              m.calmFrames, m.calmP50Ms, m.calmP99Ms, m.bakeMs, m.bakingFrames, m.worstBakingMs);
+  for (const std::string& problem : confvis::testing::bakeHoldupProblems(m, 100))
+    ADD_FAILURE() << problem;
   // The log says when the map changed: generation 1 from the first swapped frame on.
-  ASSERT_GE(swappedAt, 1);
-  EXPECT_EQ(frames[swappedAt - 1]["map_generation"], 0);
-  EXPECT_EQ(frames[swappedAt]["map_generation"], 1);
-  EXPECT_TRUE(frames[swappedAt - 1]["bake_in_flight"].get<bool>());
+  ASSERT_GE(m.swappedAt, 1);
+  EXPECT_EQ(frames[m.swappedAt - 1]["map_generation"], 0);
+  EXPECT_EQ(frames[m.swappedAt]["map_generation"], 1);
+  EXPECT_TRUE(frames[m.swappedAt - 1]["bake_in_flight"].get<bool>());
 }
 
 TEST(CliView, NoDisplayOrBadPlacementIsOneClearError) {

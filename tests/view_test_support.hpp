@@ -1,15 +1,20 @@
 #pragma once
 // For the `confvis view` tests: an X display to open windows on (the caller's DISPLAY, or an
 // Xvfb of our own on a free display number), and what a window manager or a user does to a
-// window (resize, close), done through Xlib from outside the process under test.
+// window (resize, close), done through Xlib from outside the process under test; and head poses
+// sent to a tracker port on 127.0.0.1.
 #include <X11/Xatom.h>
 #include <X11/Xlib.h>
 #include <X11/Xutil.h>
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -149,6 +154,30 @@ inline std::optional<int> waitExit(pid_t pid, double seconds) {
   ::kill(pid, SIGKILL);
   ::waitpid(pid, &status, 0);
   return std::nullopt;
+}
+
+// A UDP port on 127.0.0.1 that was free a moment ago (for `--tracker udp:PORT`).
+inline int freeUdpPort() {
+  const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(s, reinterpret_cast<sockaddr*>(&address), sizeof address);
+  socklen_t length = sizeof address;
+  ::getsockname(s, reinterpret_cast<sockaddr*>(&address), &length);
+  ::close(s);
+  return ntohs(address.sin_port);
+}
+
+inline void sendTo(int port, const std::string& datagram) {
+  const int s = ::socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::sendto(s, datagram.data(), datagram.size(), 0, reinterpret_cast<sockaddr*>(&address),
+           sizeof address);
+  ::close(s);
 }
 
 }  // namespace confvis::testing

@@ -18,6 +18,7 @@
 #include "confvis/base/error.hpp"
 #include "confvis/base/input_limits.hpp"
 #include "confvis/engine/scene_loader.hpp"
+#include "render_options.hpp"
 #include "retarget_map_source.hpp"
 #include "scene_option.hpp"
 #include "shipped_files.hpp"
@@ -161,12 +162,8 @@ const RegisterCommand registration{Command{
       auto args = std::make_shared<RenderArgs>();
       sub.add_option("config", args->config,
                      "Display config (JSON); default: configs/cave5.json");
-      sub.add_option("--scene", args->scene,
-                     "Built-in scene (checker-sphere, checker-tunnel, graph) or an OBJ/glTF file")
-          ->capture_default_str();
-      sub.add_option("--backend", args->backend, "Renderer")
-          ->check(CLI::IsMember(backendNames()))
-          ->capture_default_str();
+      addSceneOption(sub, args->scene);
+      addBackendOption(sub, args->backend);
       sub.add_option("--device", args->device,
                      "Vulkan device: auto (discrete GPU first, then lavapipe), an index or part "
                      "of a name");
@@ -193,9 +190,7 @@ const RegisterCommand registration{Command{
       sub.add_option("--camera", args->camera,
                      "Virtual camera x,y,z[,yaw,pitch]: where the display's reference point is "
                      "in the scene (metres) and how it is turned (degrees)");
-      sub.add_option("--scale", args->scale, "Output resolution as a fraction of each wall's")
-          ->check(kPositiveNumber)
-          ->capture_default_str();
+      addOutputScaleOption(sub, args->scale);
       addSceneScaleOption(sub, args->sceneScale);
       sub.add_option("--map", args->mapDirectory,
                      "Baked map directory (ray.exr, geom.exr) for conformal mode");

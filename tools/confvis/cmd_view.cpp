@@ -5,6 +5,7 @@
 // DIR/view.json: frame times (mean, p50, p99; with and without a re-bake in flight), the frame
 // log, re-bakes, tracker packets, swapchain recreations and validation messages.
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -24,6 +25,8 @@
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/runtime/present_context.hpp"
 #include "confvis/runtime/tracker_factory.hpp"
+#include "confvis/runtime/zero_extent_injection.hpp"
+#include "render_options.hpp"
 #include "retarget_map_source.hpp"
 #include "shipped_files.hpp"
 
@@ -54,6 +57,16 @@ int runView(const ViewArgs& args) {
                                   ? shippedFile("configs/cave5.json", "display config")
                                   : fs::path(args.config);
   const DisplayConfig config = loadDisplayConfig(configPath);
+  // Test seam: a window whose surface reports 0 x 0 for some frames (zero_extent_injection.hpp).
+  if (const char* injected = std::getenv(kZeroExtentVariable); injected && *injected) {
+    ZeroExtentInjection injection = parseZeroExtentInjection(injected);
+    try {
+      (void)config.wall(injection.wall);
+    } catch (const Error& error) {
+      throw Error(error.code(), std::string(kZeroExtentVariable) + ": " + error.what());
+    }
+    setZeroExtentInjection(std::move(injection));
+  }
   // --cluster: rank 0 tracks, navigates and bakes; every rank shows its walls (cluster_view.hpp).
   std::optional<CliCluster> cluster;
   if (args.cluster.enabled) cluster.emplace(config, args.cluster);
@@ -148,13 +161,9 @@ const RegisterCommand registration{Command{
     "head",
     [](CLI::App& sub) {
       auto args = std::make_shared<ViewArgs>();
-      sub.add_option("config", args->config, "Display config; default: configs/cave5.json");
-      sub.add_option("--scene", args->scene,
-                     "Built-in scene (checker-sphere, checker-tunnel, graph) or an OBJ/glTF file")
-          ->capture_default_str();
-      sub.add_option("--backend", args->backend, "Renderer")
-          ->check(CLI::IsMember(backendNames()))
-          ->capture_default_str();
+      addDisplayConfigArgument(sub, args->config);
+      addSceneOption(sub, args->scene);
+      addBackendOption(sub, args->backend);
       sub.add_option("--device", args->device,
                      "Vulkan renderer's device: auto, an index or part of a name");
       sub.add_option("--eyes", args->eyes,
@@ -181,10 +190,7 @@ const RegisterCommand registration{Command{
       sub.add_option("--scale", args->scale, "Rendered pixels per wall pixel")
           ->check(kPositiveNumber)
           ->capture_default_str();
-      sub.add_option("--radius", args->radius,
-                     "Metres the head may stray from the map's reference before a re-bake")
-          ->check(kPositiveNumber)
-          ->capture_default_str();
+      addRebakeRadiusOption(sub, args->radius);
       sub.add_option("--bake-resolution", args->bakeResolution,
                      "Cube texels per face of every map, baked without the cache; default: the config's "
                      "(first map through the cache)")

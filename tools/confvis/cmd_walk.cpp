@@ -27,6 +27,7 @@
 #include "confvis/engine/scene_loader.hpp"
 #include "confvis/runtime/tracker.hpp"
 #include "frame_record_spool.hpp"
+#include "render_options.hpp"
 #include "retarget_map_source.hpp"
 #include "scene_option.hpp"
 #include "shipped_files.hpp"
@@ -276,35 +277,26 @@ const RegisterCommand registration{Command{
     "frames)",
     [](CLI::App& sub) {
       auto args = std::make_shared<WalkArgs>();
-      sub.add_option("config", args->config, "Display config; default: configs/cave5.json");
+      addDisplayConfigArgument(sub, args->config);
       sub.add_option("--path", args->path,
                      "Head path CSV (seconds,x,y,z,qw,qx,qy,qz); default: "
                      "configs/paths/cave-walk.csv");
-      sub.add_option("--scene", args->scene,
-                     "Built-in scene (checker-sphere, checker-tunnel, graph) or an OBJ/glTF file")
-          ->capture_default_str();
+      addSceneOption(sub, args->scene);
       addSceneScaleOption(sub, args->sceneScale);
       sub.add_option("--frames", args->frames, "Frames to render; default: one pass of the path")
           ->check(CLI::Range(1, 1000000));
       sub.add_option("--fps", args->fps, "Frames per second of path time")
           ->check(CLI::Range(0.01, 1000.0))
           ->capture_default_str();
-      sub.add_option("--scale", args->scale, "Output resolution as a fraction of each wall's")
-          ->check(kPositiveNumber)
-          ->capture_default_str();
-      sub.add_option("--radius", args->radius,
-                     "Metres the head may stray from the map's reference before a re-bake")
-          ->check(kPositiveNumber)
-          ->capture_default_str();
+      addOutputScaleOption(sub, args->scale);
+      addRebakeRadiusOption(sub, args->radius);
       sub.add_option("--bake-resolution", args->bakeResolution,
                      "Cube texels per face of the baked maps; default: the config's")
           ->check(CLI::Range(8, 4096));
       sub.add_option("--bake-edge-length", args->bakeEdgeLength,
                      "Mesh edge length of the bakes (metres); default: the config's")
           ->check(kPositiveNumber);
-      sub.add_option("--backend", args->backend, "Renderer")
-          ->check(CLI::IsMember(backendNames()))
-          ->capture_default_str();
+      addBackendOption(sub, args->backend);
       sub.add_flag("--no-pacing", args->noPacing,
                    "Render as fast as possible instead of frame i no earlier than i/fps seconds "
                    "after the first (with it, bakes rarely finish within the walk)");

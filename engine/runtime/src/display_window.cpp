@@ -96,6 +96,10 @@ DisplayWindow::~DisplayWindow() {
   if (window_) glfwDestroyWindow(window_);
 }
 
+const DisplayWindow* DisplayWindow::of(GLFWwindow* window) {
+  return window ? static_cast<const DisplayWindow*>(glfwGetWindowUserPointer(window)) : nullptr;
+}
+
 bool DisplayWindow::closeRequested() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 
 void DisplayWindow::framebufferSize(int& width, int& height) const {

@@ -8,6 +8,8 @@
 #include <GLFW/glfw3.h>
 
 #include "confvis/base/error.hpp"
+#include "confvis/runtime/display_window.hpp"
+#include "confvis/runtime/zero_extent_injection.hpp"
 #include "vk_check.hpp"
 
 namespace confvis {
@@ -65,6 +67,7 @@ constexpr VkImageSubresourceLayers kColourLayer{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0,
 WindowPresenter::WindowPresenter(PresentContext& context, GLFWwindow* window, bool vsync,
                                  bool preferSrgb)
     : context_(context), window_(window), vsync_(vsync), preferSrgb_(preferSrgb) {
+  if (const DisplayWindow* owner = DisplayWindow::of(window_)) wall_ = owner->plan().wall;
   const VkDevice device = context_.device();
   try {
     check(glfwCreateWindowSurface(context_.instance(), window_, nullptr, &surface_),
@@ -87,6 +90,7 @@ WindowPresenter::WindowPresenter(PresentContext& context, GLFWwindow* window, bo
     VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     check(vkCreateFence(device, &fence, nullptr, &frameDone_), "vkCreateFence");
     ensureSwapchainMatchesWindow();
+    frame_ = 0;  // frames count from the first present() or acquire()
   } catch (...) {
     release();
     throw;
@@ -121,7 +125,7 @@ void WindowPresenter::destroySwapchain(VkSwapchainKHR swapchain) noexcept {
   if (swapchain) vkDestroySwapchainKHR(context_.device(), swapchain, nullptr);
 }
 
-void WindowPresenter::createSwapchain() {
+VkExtent2D WindowPresenter::createSwapchain() {
   const VkPhysicalDevice physical = context_.physicalDevice();
   const VkDevice device = context_.device();
   VkSurfaceCapabilitiesKHR caps;
@@ -134,7 +138,7 @@ void WindowPresenter::createSwapchain() {
     extent.width = std::clamp<std::uint32_t>(width, caps.minImageExtent.width, caps.maxImageExtent.width);
     extent.height = std::clamp<std::uint32_t>(height, caps.minImageExtent.height, caps.maxImageExtent.height);
   }
-  if (extent.width == 0 || extent.height == 0) return;  // minimised: wait for a size
+  if (extent.width == 0 || extent.height == 0) return {0, 0};  // minimised: wait for a size
 
   std::uint32_t count = 0;
   vkGetPhysicalDeviceSurfaceFormatsKHR(physical, surface_, &count, nullptr);
@@ -194,22 +198,47 @@ void WindowPresenter::createSwapchain() {
   VkSemaphoreCreateInfo semaphore{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
   for (VkSemaphore& s : renderDone_)
     check(vkCreateSemaphore(device, &semaphore, nullptr, &s), "vkCreateSemaphore");
+  return extent;
 }
 
-// True when a swapchain of the window's current size exists (recreated if the size changed).
-bool WindowPresenter::ensureSwapchainMatchesWindow() {
+VkExtent2D WindowPresenter::surfaceExtent() {
+  if (zeroExtentInjected(wall_, frame_++)) return {0, 0};
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
   if (width <= 0 || height <= 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE)
-    return false;
-  if (swapchain_ && static_cast<std::uint32_t>(width) == extent_.width &&
-      static_cast<std::uint32_t>(height) == extent_.height)
-    return true;
-  const bool replacing = swapchain_ != VK_NULL_HANDLE || recreations_ > 0 || !images_.empty();
+    return {0, 0};
+  return {static_cast<std::uint32_t>(width), static_cast<std::uint32_t>(height)};
+}
+
+// True when a swapchain of the window's current size exists (recreated if the size changed or
+// it went stale); false when this frame presents nothing to the window.
+bool WindowPresenter::ensureSwapchainMatchesWindow() {
+  switch (state_.next(surfaceExtent())) {
+    case SwapchainStep::Skip:
+      return false;
+    case SwapchainStep::Present:
+      return true;
+    case SwapchainStep::Recreate:
+      break;
+  }
   vkDeviceWaitIdle(context_.device());  // no frame may still use the old images
-  createSwapchain();
-  if (replacing && swapchain_) ++recreations_;
-  return swapchain_ != VK_NULL_HANDLE;
+  state_.created(createSwapchain());
+  return state_.hasSwapchain() && !state_.stale();
+}
+
+bool WindowPresenter::acquireImage(std::uint32_t& index) {
+  const VkResult result = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX,
+                                                imageAcquired_, VK_NULL_HANDLE, &index);
+  switch (state_.afterAcquire(result)) {
+    case AcquireOutcome::Use:
+      return true;
+    case AcquireOutcome::Skip:  // out of date: recreated at the next frame
+      return false;
+    case AcquireOutcome::Fail:
+      break;
+  }
+  check(result, "vkAcquireNextImageKHR");  // throws: no failing result is VK_SUCCESS
+  throw Error(ErrorCode::Internal, "vkAcquireNextImageKHR: unexpected result");
 }
 
 void WindowPresenter::ensureBuffer(Buffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage) {
@@ -299,15 +328,8 @@ void WindowPresenter::finish() {
 bool WindowPresenter::present(bool capture) {
   if (!ensureSwapchainMatchesWindow()) return false;
   ensureContentImage(frameWidth_, frameHeight_);
-  const VkDevice device = context_.device();
   std::uint32_t index = 0;
-  const VkResult acquired =
-      vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAcquired_, VK_NULL_HANDLE, &index);
-  if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
-    extent_ = {0, 0};  // recreated at the next frame
-    return false;
-  }
-  if (acquired != VK_SUBOPTIMAL_KHR) check(acquired, "vkAcquireNextImageKHR");
+  if (!acquireImage(index)) return false;
   capture = capture && canCapture_;
   if (capture)
     ensureBuffer(readback_, static_cast<VkDeviceSize>(extent_.width) * extent_.height * 4,
@@ -315,12 +337,11 @@ bool WindowPresenter::present(bool capture) {
 
   check(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
   record(commands_, index, capture);
-  submitAndPresent(imageAcquired_, index, capture, acquired == VK_SUBOPTIMAL_KHR);
+  submitAndPresent(imageAcquired_, index, capture);
   return true;
 }
 
-void WindowPresenter::submitAndPresent(VkSemaphore wait, std::uint32_t index, bool capture,
-                                       bool suboptimal) {
+void WindowPresenter::submitAndPresent(VkSemaphore wait, std::uint32_t index, bool capture) {
   const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
@@ -340,24 +361,14 @@ void WindowPresenter::submitAndPresent(VkSemaphore wait, std::uint32_t index, bo
   info.swapchainCount = 1;
   info.pSwapchains = &swapchain_;
   info.pImageIndices = &index;
+  // Out of date or suboptimal: the window changed under the swapchain, recreated next frame.
   const VkResult presented = vkQueuePresentKHR(context_.queue(), &info);
-  if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR || suboptimal)
-    extent_ = {0, 0};  // the window changed under the swapchain: recreate at the next frame
-  else
-    check(presented, "vkQueuePresentKHR");
+  if (!state_.afterPresent(presented)) check(presented, "vkQueuePresentKHR");
 }
 
 std::optional<WindowPresenter::Acquired> WindowPresenter::acquire() {
   finish();
-  if (!ensureSwapchainMatchesWindow()) return std::nullopt;
-  const VkResult acquired = vkAcquireNextImageKHR(context_.device(), swapchain_, UINT64_MAX,
-                                                  imageAcquired_, VK_NULL_HANDLE, &acquiredIndex_);
-  if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
-    extent_ = {0, 0};  // recreated at the next frame
-    return std::nullopt;
-  }
-  if (acquired != VK_SUBOPTIMAL_KHR) check(acquired, "vkAcquireNextImageKHR");
-  acquiredSuboptimal_ = acquired == VK_SUBOPTIMAL_KHR;
+  if (!ensureSwapchainMatchesWindow() || !acquireImage(acquiredIndex_)) return std::nullopt;
   return Acquired{images_[acquiredIndex_], format_, extent_, imageAcquired_, imageWritten_};
 }
 
@@ -372,7 +383,7 @@ void WindowPresenter::presentAcquired(bool capture) {
   check(vkBeginCommandBuffer(commands_, &begin), "vkBeginCommandBuffer");
   recordCaptureAndPresentLayout(commands_, images_[acquiredIndex_], capture);
   check(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
-  submitAndPresent(imageWritten_, acquiredIndex_, capture, acquiredSuboptimal_);
+  submitAndPresent(imageWritten_, acquiredIndex_, capture);
 }
 
 bool WindowPresenter::srgb() const { return isSrgb(format_); }

@@ -90,11 +90,13 @@
 #include "confvis/runtime/frame_sync.hpp"
 #include "confvis/runtime/live_view.hpp"
 #include "confvis/runtime/present_context.hpp"
+#include "confvis/runtime/swapchain_state.hpp"
 #include "confvis/runtime/tracker_packets.hpp"
 #include "confvis/runtime/wall_assignment.hpp"
 #include "confvis/runtime/window_content.hpp"
 #include "confvis/runtime/window_plan.hpp"
 #include "confvis/runtime/window_presenter.hpp"
+#include "confvis/runtime/zero_extent_injection.hpp"
 
 // Rendering through the map (backends: Embree, Vulkan): render plans and eyeName(), typed frame
 // statistics (FrameStats), the warp in closed form, analytic test maps, map files (readRetargetMapDirectory: a baked map from disk).

@@ -41,6 +41,8 @@ class DisplayWindow {
   DisplayWindow& operator=(const DisplayWindow&) = delete;
 
   GLFWwindow* handle() const { return window_; }
+  // The DisplayWindow that made `window` (GLFW keeps it as the window's user pointer), or null.
+  static const DisplayWindow* of(GLFWwindow* window);
   const WindowPlan& plan() const { return plan_; }
   bool closeRequested() const;
   // Framebuffer pixels; 0 x 0 while minimised.

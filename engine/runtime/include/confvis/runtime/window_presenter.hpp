@@ -3,18 +3,21 @@
 // composed on the CPU from the renderer's wall images) go through a host-visible staging buffer
 // into an image and are blitted into the swapchain image, stretched to the window. The
 // swapchain is recreated when the window is resized or the surface reports it out of date;
-// a minimised window presents nothing. One frame in flight per window.
+// a minimised window (a 0 x 0 surface) presents nothing and gets a new swapchain once it has an
+// area again (SwapchainState decides: swapchain_state.hpp). One frame in flight per window.
 // Frames the GPU renders (the Vulkan backend on the presenting device) skip the staging buffer:
 // acquire() hands out the swapchain image, the backend blits each eye straight into it, and
 // presentAcquired() presents it.
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
 
 #include "confvis/base/export.hpp"
 #include "confvis/runtime/present_context.hpp"
+#include "confvis/runtime/swapchain_state.hpp"
 
 struct GLFWwindow;
 
@@ -66,7 +69,7 @@ class WindowPresenter {
   // The swapchain encodes sRGB (a GPU frame's linear values come out as the composed codes).
   bool srgb() const;
 
-  int recreations() const { return recreations_; }
+  int recreations() const { return state_.recreations(); }
   VkPresentModeKHR presentMode() const { return presentMode_; }
   VkExtent2D extent() const { return extent_; }
   VkFormat format() const { return format_; }
@@ -80,7 +83,11 @@ class WindowPresenter {
   };
 
   void release() noexcept;
-  void createSwapchain();
+  // The extent of the swapchain made, 0 x 0 when the surface has no area to make one for.
+  VkExtent2D createSwapchain();
+  // The window's surface extent this frame: 0 x 0 while minimised (or injected so,
+  // zero_extent_injection.hpp).
+  VkExtent2D surfaceExtent();
   void destroySwapchain(VkSwapchainKHR swapchain) noexcept;
   bool ensureSwapchainMatchesWindow();
   void ensureBuffer(Buffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage);
@@ -91,13 +98,18 @@ class WindowPresenter {
   // The image is in TRANSFER_SRC_OPTIMAL: the optional copy for a screenshot, then PRESENT_SRC.
   void recordCaptureAndPresentLayout(VkCommandBuffer commands, VkImage target, bool capture);
   // Submits commands_ (waiting for `wait` at the transfer stage) and presents images_[index].
-  void submitAndPresent(VkSemaphore wait, std::uint32_t index, bool capture, bool suboptimal);
+  void submitAndPresent(VkSemaphore wait, std::uint32_t index, bool capture);
+  // Acquires the next image into `index`; false when this frame presents nothing.
+  bool acquireImage(std::uint32_t& index);
   void collectScreenshot();
 
   PresentContext& context_;
   GLFWwindow* window_;
   bool vsync_;
   bool preferSrgb_;
+  std::string wall_;  // of the DisplayWindow that made window_ ("" for another window)
+  long frame_ = 0;    // frames asked for so far (for the zero-extent injection)
+  SwapchainState state_;
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
@@ -106,13 +118,11 @@ class WindowPresenter {
   std::vector<VkImage> images_;
   std::vector<VkSemaphore> renderDone_;  // per swapchain image: a present may still hold one
   bool canCapture_ = false;
-  int recreations_ = 0;
 
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkSemaphore imageAcquired_ = VK_NULL_HANDLE;
   VkSemaphore imageWritten_ = VK_NULL_HANDLE;  // GPU frames: signalled by their writer
   std::uint32_t acquiredIndex_ = 0;
-  bool acquiredSuboptimal_ = false;
   VkFence frameDone_ = VK_NULL_HANDLE;
   bool frameInFlight_ = false;
   bool captureInFlight_ = false;
