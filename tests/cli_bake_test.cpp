@@ -97,6 +97,28 @@ void expectFailure(const std::string& args, int exitCode, const std::string& fra
   EXPECT_NE(run.output.find(fragment), std::string::npos) << args << ": " << run.output;
 }
 
+// --preset: accurate (the default) halves the config's edges unless --edge-length is given and
+// grades the mesh; fast and accurate bakes of one config never share a cache entry.
+TEST(CliBake, PresetsAreRecordedAndKeepTheirOwnCacheEntries) {
+  const fs::path out = bakeScratch() / "presets";
+  auto bake = [&](const std::string& extra) {
+    const CliRun run = runCli("bake " + config("cave5.json") + " -o " + out.string() +
+                              " --resolution 16 --edge-length 0.5 -q" + extra);
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    return std::make_pair(run, confvis::loadBakeDirectory(out).sidecar);
+  };
+  const auto [fast, fastSidecar] = bake(" --preset fast");
+  EXPECT_EQ(fastSidecar["map_settings"]["grading"], "uniform");
+  const auto [accurate, accurateSidecar] = bake("");
+  EXPECT_EQ(accurate.output.find("from the cache"), std::string::npos) << accurate.output;
+  EXPECT_EQ(accurateSidecar["map_settings"]["grading"]["radius_degrees"], 20.0);
+  EXPECT_GT(accurateSidecar["meshes"]["target"]["vertices"].get<int>(),
+            fastSidecar["meshes"]["target"]["vertices"].get<int>());
+  const auto [again, againSidecar] = bake(" --preset fast");
+  EXPECT_NE(again.output.find("from the cache"), std::string::npos) << again.output;
+  EXPECT_EQ(againSidecar, fastSidecar);
+}
+
 TEST(CliBake, BadInputGivesOneClearErrorAndNonZeroExit) {
   expectFailure("/no/such/display.json", 2, "/no/such/display.json");
   // Option checks (CLI11's exit code) name the option.
@@ -105,6 +127,7 @@ TEST(CliBake, BadInputGivesOneClearErrorAndNonZeroExit) {
   expectFailure(config("cave5.json") + " --edge-length -0.1", -1, "--edge-length");
   expectFailure(config("cave5.json") + " --reference 1,2", -1, "--reference");
   expectFailure(config("cave5.json") + " --reference 1,2,z", -1, "--reference");
+  expectFailure(config("cave5.json") + " --preset best", -1, "--preset");
   // Behind the front wall: the config validation names the wall.
   expectFailure(config("cave5.json") + " --reference 0,0,-2 -q", 2, "front");
   const fs::path garbage = bakeScratch() / "garbage.json";
@@ -116,7 +139,7 @@ TEST(CliBake, HasHelp) {
   const CliRun run = runCli("bake --help");
   EXPECT_EQ(run.exitCode, 0);
   for (const char* option : {"--output", "--resolution", "--edge-length", "--reference",
-                             "--no-cache", "--cache-dir", "--quiet"})
+                             "--no-cache", "--cache-dir", "--quiet", "--preset"})
     EXPECT_NE(run.output.find(option), std::string::npos) << option;
 }
 

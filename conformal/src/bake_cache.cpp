@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "confvis/base/checksum.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/conformal/bake_files.hpp"
@@ -28,16 +29,17 @@ fs::path defaultCacheDirectory() {
   return fs::temp_directory_path() / "confvis-cache";
 }
 
-fs::path bakeCacheEntry(const fs::path& cacheDirectory, const DisplayConfig& effectiveConfig) {
+fs::path bakeCacheEntry(const fs::path& cacheDirectory, const DisplayConfig& effectiveConfig,
+                        const nlohmann::json& mapSettings) {
   return cacheDirectory /
          ("bake-v" + std::to_string(kBakeFormatVersion) + "-confvis-" + versionString()) /
-         effectiveConfig.hash;
+         (effectiveConfig.hash + "-" + fnv1a64Hex(mapSettings.dump()));
 }
 
 namespace detail {
 
 std::optional<LoadedBake> loadCacheEntry(const fs::path& entry, const DisplayConfig& config,
-                                         std::string& note) {
+                                         const nlohmann::json& mapSettings, std::string& note) {
   std::error_code ec;
   if (!fs::exists(entry / "bake.json", ec)) {
     if (fs::exists(entry, ec)) {  // a folder without its sidecar: an interrupted copy
@@ -54,6 +56,9 @@ std::optional<LoadedBake> loadCacheEntry(const fs::path& entry, const DisplayCon
     if (!hash.is_string() || hash.get<std::string>() != config.hash)
       throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() +
                                             "': bake.json is for config hash " + hash.dump());
+    if (!loaded.sidecar.contains("map_settings") || loaded.sidecar["map_settings"] != mapSettings)
+      throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() +
+                                            "': bake.json's map settings differ from the bake's");
     if (loaded.map.resolution() != config.cubeResolution)
       throw Error(ErrorCode::IoFailure, "cache entry '" + entry.string() + "' has resolution " +
                                             std::to_string(loaded.map.resolution()));

@@ -11,11 +11,13 @@
 
 namespace confvis::detail {
 
-// The entry's bake if it loads back and matches `config` (hash, resolution). Otherwise removes
+// The entry's bake if it loads back and matches `config` (hash, resolution) and `mapSettings`
+// (bake.json's "map_settings"). Otherwise removes
 // whatever is there, says why in `note` (empty when there was simply no entry) and returns
 // nullopt.
 std::optional<LoadedBake> loadCacheEntry(const std::filesystem::path& entry,
-                                         const DisplayConfig& config, std::string& note);
+                                         const DisplayConfig& config,
+                                         const nlohmann::json& mapSettings, std::string& note);
 
 // Writes the bake directory into a temporary folder beside `entry` and renames it into place.
 // If another process published the same entry first, keeps theirs. Returns the sidecar written.

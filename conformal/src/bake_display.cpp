@@ -13,6 +13,8 @@ DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplay
   std::string source = "display config '" + config.name + "'";
   if (options.resolution) json["cube_resolution"] = *options.resolution;
   if (options.edgeLength) json["edge_length"] = *options.edgeLength;
+  const double presetScale = presetSettings(options.preset).edgeScale;
+  if (!options.edgeLength && presetScale != 1) json["edge_length"] = config.edgeLength * presetScale;
   if (options.reference) {
     const Vec3d& r = *options.reference;
     if (!isFinite(r)) throw Error(ErrorCode::InvalidInput, "reference point override is not finite");
@@ -25,15 +27,27 @@ DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplay
   return parseDisplayConfig(json, source);
 }
 
+DisplayMapOptions bakeMapOptions(const BakeDisplayOptions& options) {
+  const BakePresetSettings preset = presetSettings(options.preset);
+  DisplayMapOptions map;
+  map.route = options.route.value_or(preset.route);
+  map.grading = options.grading.value_or(preset.grading);
+  map.showProgress = options.showProgress;
+  return map;
+}
+
 BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptions& options,
                              const DisplayMapSource& computeMap) {
   BakedDisplay result;
   result.config = effectiveBakeConfig(config, options);
+  const DisplayMapOptions mapOptions = bakeMapOptions(options);
+  const nlohmann::json mapSettings = mapSettingsJson(mapOptions.route, mapOptions.grading);
   if (options.useCache) {
     const std::filesystem::path directory =
         options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory;
-    result.cacheEntry = bakeCacheEntry(directory, result.config);
-    if (auto loaded = detail::loadCacheEntry(result.cacheEntry, result.config, result.cacheNote)) {
+    result.cacheEntry = bakeCacheEntry(directory, result.config, mapSettings);
+    if (auto loaded = detail::loadCacheEntry(result.cacheEntry, result.config, mapSettings,
+                                             result.cacheNote)) {
       result.map = std::move(loaded->map);
       result.sidecar = std::move(loaded->sidecar);
       result.fromCache = true;
@@ -49,6 +63,7 @@ BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptio
   result.map = bakeRetargetMap(displayMap, result.config.cubeResolution, bake, &result.timings);
   result.sidecar = makeBakeSidecar(result.config, displayMap, result.map, result.timings, 0,
                                    options.showProgress);
+  result.sidecar["map_settings"] = mapSettings;
   if (options.useCache) {
     // A cache that cannot be written (read-only, full disk) costs the next call a bake, no more.
     try {

@@ -84,9 +84,7 @@ DisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
     if (plan[k].hemisphere) config.source = SourceField::Hemisphere;
     DisplayMap map;
     try {
-      DisplayMapOptions mapOptions;
-      mapOptions.showProgress = options.showProgress;
-      map = computeDisplayMap(config, mapOptions);
+      map = computeDisplayMap(config, bakeMapOptions(options));  // the preset's route, grading
     } catch (const Error& e) {
       // A flow that fails, a mesh too coarse to map or a repair the display does not allow is one
       // more failed attempt; bad input fails every attempt alike and keeps its own error (below).

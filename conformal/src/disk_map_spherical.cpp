@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <numbers>
 
@@ -44,6 +45,81 @@ std::vector<Point> layOutOnSphere(const IntrinsicTriangulation& tri,
   return vertexPositions(tri, developFaces<Point>(tri, {}, placeFirstEdge, placeThird));
 }
 
+// Adds to metric.u the factor of z^(π/α) around each boundary corner of angle α off π by more
+// than 0.3, (π/α − 1)·log|p − q| on the embedded points (copies of one point, a cut's centre,
+// count once with their mean exponent), smoothed over 0.22 of the corner's mean side as the
+// Euclidean flattening guess does (disk_map_initial_guess.cpp). A cone whose triangles the guess
+// leaves invalid is halved, up to 4 times, then dropped.
+void addCornerGuess(const IntrinsicTriangulation& tri, const std::vector<Vec3d>& points,
+                    CirclePackingMetric& metric) {
+  const std::vector<double> curvature = vertexCurvature(tri, metric);
+  std::vector<double> sideSum(tri.vertexCount, 0.0);
+  std::vector<int> sides(tri.vertexCount, 0);
+  for (int f = 0; f < tri.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int v = tri.faceVertices[f][k];
+      if (!tri.vertexOnBoundary[v]) continue;
+      for (int j : {1, 2}) sideSum[v] += norm(points[tri.faceVertices[f][(k + j) % 3]] - points[v]);
+      sides[v] += 2;
+    }
+  struct Cone {
+    Vec3d position;
+    double exponent, smoothing2;
+    int copies;
+  };
+  std::vector<Cone> cones;
+  for (int v = 0; v < tri.vertexCount; ++v) {
+    const double angle = std::numbers::pi - curvature[v];  // boundary: K = π − angle
+    if (!tri.vertexOnBoundary[v] || std::abs(angle - std::numbers::pi) < 0.3) continue;
+    const double radius = 0.22 * sideSum[v] / sides[v];
+    auto same = std::find_if(cones.begin(), cones.end(), [&](const Cone& c) {
+      return norm(c.position - points[v]) <= 1e-9 * radius;
+    });
+    if (same == cones.end()) {
+      cones.push_back({points[v], std::numbers::pi / angle - 1, radius * radius, 1});
+    } else {
+      same->exponent += std::numbers::pi / angle - 1;
+      same->smoothing2 += radius * radius;
+      ++same->copies;
+    }
+  }
+  for (Cone& c : cones) c.exponent /= c.copies, c.smoothing2 /= c.copies;
+  const std::vector<double> start = metric.u;
+  std::vector<double> scale(cones.size(), 1.0);
+  for (int attempt = 0; attempt <= 5 * static_cast<int>(cones.size()); ++attempt) {
+    for (int v = 0; v < tri.vertexCount; ++v) {
+      double g = 0;
+      for (std::size_t k = 0; k < cones.size(); ++k) {
+        const Vec3d d = points[v] - cones[k].position;
+        g += scale[k] * 0.5 * cones[k].exponent * std::log(dot(d, d) + cones[k].smoothing2);
+      }
+      metric.u[v] = start[v] + g;
+    }
+    std::vector<int> invalid;
+    try {
+      const std::vector<double> l = metricEdgeLengths(tri, metric);
+      for (int f = 0; f < tri.faceCount(); ++f) {
+        const double a = l[tri.faceEdges[f][0]], b = l[tri.faceEdges[f][1]],
+                     c = l[tri.faceEdges[f][2]];
+        if (!(a < b + c && b < a + c && c < a + b && a + b + c < 2 * std::numbers::pi))
+          invalid.push_back(f);
+      }
+    } catch (const Error&) {  // an edge without a length: blame every cone
+      for (std::size_t k = 0; k < cones.size(); ++k) scale[k] = scale[k] > 0.07 ? scale[k] / 2 : 0;
+      continue;
+    }
+    if (invalid.empty()) return;
+    for (int f : invalid) {
+      const Vec3d& p = points[tri.faceVertices[f][0]];
+      std::size_t nearest = 0;
+      for (std::size_t k = 1; k < cones.size(); ++k)
+        if (norm(p - cones[k].position) < norm(p - cones[nearest].position)) nearest = k;
+      scale[nearest] = scale[nearest] > 0.07 ? scale[nearest] / 2 : 0;
+    }
+  }
+  metric.u = start;
+}
+
 // The spherical energy is not convex: from a mesh far from a hemisphere (a lopsided disk) the
 // flow straight to zero curvature can stall in a local minimum of |K̄ - K|. Then the target
 // moves there by continuation, K̄(s) = (1 - s)·K₀ from the initial curvature K₀ (every stage
@@ -74,7 +150,9 @@ RicciFlowReport flowToHemisphere(IntrinsicTriangulation& tri, CirclePackingMetri
       if (e.code() != ErrorCode::Unreachable || --maxStalledStages < 0) throw;
       tri = savedTri;
       metric = savedMetric;
-      step /= 4;
+      // A quarter of the distance that failed (not of the step before it: after a success
+      // doubled the step past the end, step / 4 retried the same final stage).
+      step = (s - reached) / 4;
       if (step < 1.0 / 1024)
         throw Error(ErrorCode::Unreachable,
                     std::string("spherical disk map: the flow to a hemisphere stalls (") +
@@ -94,6 +172,7 @@ DiskMap sphericalDiskMap(const std::vector<Vec3d>& points, const IntrinsicTriang
   CirclePackingMetric metric = initialMetric(
       tri, lengthsScaledToArea(tri, points, 2 * std::numbers::pi), options.scheme,
       Geometry::Spherical);
+  if (options.cornerGuess) addCornerGuess(tri, points, metric);
   result.flow =
       flowToHemisphere(tri, metric, diskMapFlowOptions(options), options.maxStalledStages);
   result.usedFlips = result.flow.flipsStartedAt >= 0;

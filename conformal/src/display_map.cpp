@@ -69,7 +69,8 @@ struct FlowResult {
   double seconds = 0;
 };
 
-FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, Progress& progress) {
+FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool graded,
+                      Progress& progress) {
   const auto start = Clock::now();
   FlowResult result;
   // Inversive distance (exact for any initial lengths, like Yamabe) converged in 5 Newton
@@ -92,6 +93,9 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, Progres
   // Continuation reaches the hemisphere for cut sources (cave3's) in a stall or two; a display it
   // cannot reach after 3 (a thin band of monitors) takes the Euclidean route instead of minutes.
   options.maxStalledStages = 3;
+  // A graded mesh has many rings of tiny triangles around each corner, all of which must open:
+  // start them near z^(π/α) (disk_map.hpp). Uniform meshes keep their start (and their maps).
+  options.cornerGuess = graded;
   try {
     if (options.geometry == conformal::Geometry::Euclidean)
       throw Error(ErrorCode::Unreachable, "the Euclidean route was asked for");
@@ -139,10 +143,11 @@ DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOption
   // parallel"); a closed display's source is its target, so one map serves both.
   start = Clock::now();
   const bool identical = templates.sourceKind == SourceKind::Closed;
+  const bool graded = options.grading.radiusDegrees > 0;
   auto sourceFuture = std::async(std::launch::async, [&] {
-    return identical ? FlowResult{} : runDiskMap(map.source, options.route, progress);
+    return identical ? FlowResult{} : runDiskMap(map.source, options.route, graded, progress);
   });
-  const FlowResult targetFlow = runDiskMap(map.target, options.route, progress);
+  const FlowResult targetFlow = runDiskMap(map.target, options.route, graded, progress);
   FlowResult sourceFlow = sourceFuture.get();
   if (identical) {
     sourceFlow = targetFlow;

@@ -176,7 +176,8 @@ TEST(BakeCache, SecondBakeOfTheSameConfigIsAHit) {
   EXPECT_TRUE(first.displayMap.has_value());
   EXPECT_TRUE(first.cacheNote.empty()) << first.cacheNote;
   EXPECT_TRUE(fs::exists(first.cacheEntry / "bake.json"));
-  EXPECT_EQ(first.cacheEntry, bakeCacheEntry(cache, first.config));
+  EXPECT_EQ(first.cacheEntry,
+            bakeCacheEntry(cache, first.config, first.sidecar.at("map_settings")));
   const BakedDisplay second = bakeDisplayWith(cave5(), smallBake(cache), std::ref(source));
   EXPECT_TRUE(second.fromCache);
   EXPECT_FALSE(second.displayMap.has_value());
@@ -191,6 +192,63 @@ TEST(BakeCache, SecondBakeOfTheSameConfigIsAHit) {
   EXPECT_TRUE(uncached.cacheEntry.empty());
   EXPECT_TRUE(fs::is_empty(noCache.cacheDirectory));
   EXPECT_TRUE(sameMaps(first.map, uncached.map));
+}
+
+// Every setting that changes the map is part of the key (issue 22, point 4): two bakes that
+// differ only in the grading, only in the route or only in the preset never share an entry, and
+// an entry whose bake.json names other map settings is not used.
+TEST(BakeCache, MapSettingsChangeTheKey) {
+  CountingSource source;
+  const fs::path cache = scratchDirectory("cache-settings");
+  BakeDisplayOptions uniform = smallBake(cache);
+  uniform.edgeLength = 0.2;  // the same config (edge included) for every bake below
+  BakeDisplayOptions graded = uniform;
+  graded.grading = TemplateGrading{.radiusDegrees = 20};
+  BakeDisplayOptions graded30 = uniform;
+  graded30.grading = TemplateGrading{.radiusDegrees = 30};
+  BakeDisplayOptions euclidean = uniform;
+  euclidean.route = DisplayMapRoute::Euclidean;
+  BakeDisplayOptions accurate = uniform;
+  accurate.preset = BakePreset::Accurate;  // its grading; the explicit edge stays
+  std::set<fs::path> entries;
+  for (const BakeDisplayOptions* o : {&uniform, &graded, &graded30, &euclidean, &accurate}) {
+    const BakedDisplay baked = bakeDisplayWith(cave5(), *o, std::ref(source));
+    EXPECT_FALSE(baked.fromCache);
+    EXPECT_EQ(baked.config.hash, effectiveBakeConfig(cave5(), uniform).hash);
+    EXPECT_TRUE(entries.insert(baked.cacheEntry).second) << baked.cacheEntry;
+    const DisplayMapOptions map = bakeMapOptions(*o);
+    EXPECT_EQ(baked.sidecar.at("map_settings"), mapSettingsJson(map.route, map.grading));
+  }
+  EXPECT_EQ(source.calls, 5);
+  EXPECT_TRUE(bakeDisplayWith(cave5(), graded, std::ref(source)).fromCache);
+  EXPECT_EQ(source.calls, 5);
+  // An entry under the graded key whose bake.json says uniform (hand-copied) is rebuilt.
+  const fs::path uniformEntry = bakeDisplayWith(cave5(), uniform, std::ref(source)).cacheEntry;
+  const fs::path gradedEntry = bakeDisplayWith(cave5(), graded, std::ref(source)).cacheEntry;
+  fs::remove_all(gradedEntry);
+  fs::copy(uniformEntry, gradedEntry);
+  const BakedDisplay rebuilt = bakeDisplayWith(cave5(), graded, std::ref(source));
+  EXPECT_FALSE(rebuilt.fromCache);
+  EXPECT_NE(rebuilt.cacheNote.find("map settings"), std::string::npos) << rebuilt.cacheNote;
+  EXPECT_EQ(source.calls, 6);
+}
+
+TEST(BakeCache, PresetsScaleTheConfigEdgeUnlessOneIsGiven) {
+  const DisplayConfig config = cave5();
+  BakeDisplayOptions fast;
+  fast.preset = BakePreset::Fast;
+  BakeDisplayOptions accurate;
+  accurate.preset = BakePreset::Accurate;
+  EXPECT_EQ(effectiveBakeConfig(config, fast).hash, config.hash);
+  EXPECT_DOUBLE_EQ(effectiveBakeConfig(config, accurate).edgeLength,
+                   presetSettings(BakePreset::Accurate).edgeScale * config.edgeLength);
+  accurate.edgeLength = 0.3;
+  EXPECT_DOUBLE_EQ(effectiveBakeConfig(config, accurate).edgeLength, 0.3);
+  EXPECT_GT(bakeMapOptions(accurate).grading.radiusDegrees, 0);
+  EXPECT_EQ(bakeMapOptions(fast).grading.radiusDegrees, 0);
+  EXPECT_EQ(parseBakePreset("fast"), BakePreset::Fast);
+  EXPECT_EQ(parseBakePreset("accurate"), BakePreset::Accurate);
+  test::expectError([] { parseBakePreset("best"); }, ErrorCode::InvalidInput, "fast or accurate");
 }
 
 TEST(BakeCache, OverridesChangeTheKeyAndAreValidated) {

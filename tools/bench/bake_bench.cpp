@@ -10,12 +10,15 @@
 //
 //   build/confvis_bench_bake [--config configs/cave5.json] [--edges 0.2,0.1,0.05]
 //                            [--resolutions 256,512,1024] [--repeat 5] [--threads 0]
-//                            [--route spherical|euclidean]
+//                            [--route spherical|euclidean] [--preset fast|accurate]
+// --preset takes the preset's route and grading (bake_preset.hpp) and, without --edges, its
+// edge length (the preset's scale of the config's edge_length).
 #include <CLI/CLI.hpp>
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -24,6 +27,7 @@
 
 #include "confvis/conformal/bake.hpp"
 #include "confvis/conformal/bake_display.hpp"
+#include "confvis/conformal/bake_preset.hpp"
 #include "confvis/conformal/baked_map_quality.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/engine/display_config.hpp"
@@ -83,9 +87,20 @@ int main(int argc, char** argv) {
   std::string route = "spherical";
   app.add_option("--route", route, "Disk-map route of the display map: spherical | euclidean")
       ->capture_default_str();
+  std::string presetName;
+  app.add_option("--preset", presetName, "Bake preset: fast | accurate (route, grading, edges)")
+      ->check(CLI::IsMember({"fast", "accurate"}));
+  auto* edgesOption = app.get_option("--edges");
   CLI11_PARSE(app, argc, argv);
 
   const DisplayConfig base = loadDisplayConfig(configPath);
+  std::optional<BakePresetSettings> preset;
+  if (!presetName.empty()) {
+    preset = presetSettings(parseBakePreset(presetName));
+    if (edgesOption->count() == 0) edges = std::to_string(preset->edgeScale * base.edgeLength);
+    std::printf("preset %s: route %s, grading %s\n", presetName.c_str(), toString(preset->route),
+                mapSettingsJson(preset->route, preset->grading)["grading"].dump().c_str());
+  }
   const Vec3d moved{0.15, 0.1, -0.2};  // a head 27 cm off centre
   std::printf("config %s, %u hardware threads, bake threads %d, median of %d runs; times in ms\n",
               configPath.c_str(), std::thread::hardware_concurrency(), threads, repeat);
@@ -112,6 +127,7 @@ int main(int argc, char** argv) {
           DisplayMapOptions mapOptions;
           mapOptions.route =
               route == "euclidean" ? DisplayMapRoute::Euclidean : DisplayMapRoute::Spherical;
+          if (preset) mapOptions.route = preset->route, mapOptions.grading = preset->grading;
           last = computeDisplayMap(config, mapOptions);
           const double bakeCpuStart = processCpuSeconds();
           BakeOptions bake;

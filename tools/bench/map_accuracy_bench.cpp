@@ -172,6 +172,8 @@ int main(int argc, char** argv) {
   app.add_option("--reference-min", referenceMin, "Finest reference level (scale)")->capture_default_str();
   app.add_option("--reference-grading", referenceGrading.radiusDegrees,
                  "Grading radius of the reference, degrees (0: uniform)")->capture_default_str();
+  app.add_option("--reference-grading-min", referenceGrading.minScale,
+                 "Smallest edge of the reference, x its edge length")->capture_default_str();
   app.add_option("--converge-px", convergePx, "Stop refining the reference below this p99 change")->capture_default_str();
   app.add_option("--cache-dir", cacheDir, "Where reference maps are cached")->capture_default_str();
   app.add_option("--samples", samples, "Error samples per wall side")->capture_default_str();

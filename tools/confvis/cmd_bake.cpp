@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.hpp"
+#include "preset_option.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/input_limits.hpp"
 #include "confvis/conformal/bake_display.hpp"
@@ -20,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct BakeArgs {
-  std::string config, output, cacheDir;
+  std::string config, output, cacheDir, preset;
   std::vector<double> reference;  // x, y, z when given
   int resolution = 0;
   double edgeLength = 0;
@@ -71,6 +72,7 @@ int runBake(const BakeArgs& args) {
   options.cacheDirectory = args.cacheDir;
   options.threads = args.threads;
   options.showProgress = !args.quiet;
+  options.preset = parseBakePreset(args.preset);
 
   const BakedDisplay baked = bakeDisplay(config, options);
   if (!baked.cacheNote.empty()) std::fprintf(stderr, "confvis bake: note: %s\n", baked.cacheNote.c_str());
@@ -107,6 +109,7 @@ const RegisterCommand registration{Command{
                      "Reference point x,y,z in metres (default: the config's)")
           ->delimiter(',')
           ->expected(3);
+      addPresetOption(sub, args->preset, kOfflineBakePreset);
       sub.add_flag("--no-cache", args->noCache, "Neither read nor write the bake cache");
       sub.add_option("--cache-dir", args->cacheDir,
                      "Bake cache directory (default: $CONFVIS_CACHE_DIR, $XDG_CACHE_HOME/confvis "

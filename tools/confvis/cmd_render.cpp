@@ -12,6 +12,7 @@
 #include "backend_factory.hpp"
 #include "cluster_cli.hpp"
 #include "command.hpp"
+#include "preset_option.hpp"
 #include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
 #include "confvis/backends/render_plan.hpp"
@@ -32,7 +33,7 @@ struct RenderArgs {
   std::string config, scene = "checker-sphere", backend = "embree", mode = "conformal";
   std::string device;
   std::optional<double> tessellationErrorPixels;
-  std::string eyes = "mono", stereoRays = "exact", camera, mapDirectory, output;
+  std::string eyes = "mono", stereoRays = "exact", camera, mapDirectory, output, preset;
   std::vector<std::string> walls;
   int spp = 1;
   double scale = 1.0, sceneScale = 1.0;
@@ -103,7 +104,7 @@ int runRender(const RenderArgs& args) {
   if (args.cluster.enabled) cluster.emplace(config, args.cluster);
   std::optional<MapSource> map;  // one bake for all: rank 0's, shared with the others
   if (settings.mode == RenderMode::Conformal && (!cluster || cluster->isRoot()))
-    map = retargetMapFor(config, args.mapDirectory, !args.quiet);
+    map = retargetMapFor(config, args.mapDirectory, !args.quiet, parseBakePreset(args.preset));
   const RetargetMap* renderMap = map ? &map->map : nullptr;
   if (cluster) renderMap = cluster->shareMap(renderMap, kClusterBakeSeconds);
   // Check walls, eyes and map before the (possibly slow) scene load.
@@ -192,6 +193,7 @@ const RegisterCommand registration{Command{
                      "in the scene (metres) and how it is turned (degrees)");
       addOutputScaleOption(sub, args->scale);
       addSceneScaleOption(sub, args->sceneScale);
+      addPresetOption(sub, args->preset, kOfflineBakePreset);
       sub.add_option("--map", args->mapDirectory,
                      "Baked map directory (ray.exr, geom.exr) for conformal mode");
       sub.add_flag("--ao", args->ambientOcclusion, "Ambient occlusion");

@@ -17,6 +17,7 @@
 #include "cluster_cli.hpp"
 #include "cluster_view.hpp"
 #include "command.hpp"
+#include "preset_option.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/engine/scene_loader.hpp"
@@ -37,7 +38,7 @@ namespace fs = std::filesystem;
 
 struct ViewArgs {
   std::string config, scene = "checker-sphere", backend = "embree", device, eyes, tracker;
-  std::string mode = "conformal", stereoRays = "exact", screenshotDirectory, output;
+  std::string mode = "conformal", stereoRays = "exact", screenshotDirectory, output, preset;
   int frames = 0, bakeResolution = 0;
   double scale = 1.0, radius = 0.10;
   bool noVsync = false, validate = false, quiet = false;
@@ -87,7 +88,8 @@ int runView(const ViewArgs& args) {
   // skip the cache.
   // Re-bakes at a low priority, so the frames keep their cores while one runs; the first map is
   // made here, at the caller's priority.
-  const BakeFunction bake = followerBake(args.bakeResolution, 0.0);
+  const BakePreset preset = parseBakePreset(args.preset);
+  const BakeFunction bake = followerBake(args.bakeResolution, 0.0, preset);
   const MapFollowerOptions followerOptions{.radius = args.radius};
   std::string mapOrigin = "baked now at " + std::to_string(args.bakeResolution) + " texels";
   std::optional<MapFollower> follower;
@@ -96,7 +98,7 @@ int runView(const ViewArgs& args) {
     if (args.bakeResolution > 0) {
       firstMap = bake(config, config.reference);
     } else {
-      MapSource first = retargetMapFor(config, "", !args.quiet);
+      MapSource first = retargetMapFor(config, "", !args.quiet, preset);
       mapOrigin = first.origin;
       firstMap = std::move(first.map);
     }
@@ -191,6 +193,7 @@ const RegisterCommand registration{Command{
           ->check(kPositiveNumber)
           ->capture_default_str();
       addRebakeRadiusOption(sub, args->radius);
+      addPresetOption(sub, args->preset, kLiveBakePreset);
       sub.add_option("--bake-resolution", args->bakeResolution,
                      "Cube texels per face of every map, baked without the cache; default: the config's "
                      "(first map through the cache)")

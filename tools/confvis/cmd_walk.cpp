@@ -18,6 +18,7 @@
 #include "backend_factory.hpp"
 #include "cluster_cli.hpp"
 #include "command.hpp"
+#include "preset_option.hpp"
 #include "confvis/runtime/map_follower.hpp"
 #include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"
@@ -40,6 +41,7 @@ using Clock = std::chrono::steady_clock;
 
 struct WalkArgs {
   std::string config, path, scene = "checker-tunnel", backend = "embree", output = "out/walk";
+  std::string preset;
   int frames = 0;  // 0: one pass of the path
   int bakeResolution = 0;
   double fps = 30.0, scale = 0.1, radius = 0.10, bakeEdgeLength = 0.0, sceneScale = 1.0;
@@ -96,7 +98,9 @@ int runWalk(const WalkArgs& args) {
     std::fprintf(stderr, "walk: baking the first map of '%s'...\n", config.name.c_str());
   std::optional<MapFollower> follower;
   if (decider)
-    follower.emplace(config, followerBake(args.bakeResolution, args.bakeEdgeLength),
+    follower.emplace(config,
+                     followerBake(args.bakeResolution, args.bakeEdgeLength,
+                                  parseBakePreset(args.preset)),
                      MapFollowerOptions{.radius = args.radius});
   const double setupSeconds = secondsSince(start);
   // --cluster: this rank's frame states, on disk until the end as walk.json's records are.
@@ -290,6 +294,7 @@ const RegisterCommand registration{Command{
           ->capture_default_str();
       addOutputScaleOption(sub, args->scale);
       addRebakeRadiusOption(sub, args->radius);
+      addPresetOption(sub, args->preset, kLiveBakePreset);
       sub.add_option("--bake-resolution", args->bakeResolution,
                      "Cube texels per face of the baked maps; default: the config's")
           ->check(CLI::Range(8, 4096));

@@ -9,7 +9,7 @@
 namespace confvis::cli {
 
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
-                         bool showProgress) {
+                         bool showProgress, BakePreset preset) {
   if (!mapDirectory.empty())
     return {readRetargetMapDirectory(mapDirectory), mapDirectory};
   if (displayMapIsIdentity(config)) {
@@ -19,6 +19,7 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
   }
   BakeDisplayOptions options;
   options.showProgress = showProgress;
+  options.preset = preset;
   BakedDisplay baked = bakeDisplay(config, options);
   std::string origin = baked.fromCache ? "baked earlier" : "baked now";
   if (!baked.cacheEntry.empty()) origin += " (cache " + baked.cacheEntry.string() + ")";
@@ -27,8 +28,9 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
   return {std::move(baked.map), std::move(origin)};
 }
 
-BakeFunction followerBake(int resolution, double edgeLength) {
+BakeFunction followerBake(int resolution, double edgeLength, BakePreset preset) {
   BakeDisplayOptions options;
+  options.preset = preset;
   options.useCache = false;
   if (resolution > 0) options.resolution = resolution;
   if (edgeLength > 0.0) options.edgeLength = edgeLength;

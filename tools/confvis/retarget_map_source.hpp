@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "confvis/conformal/bake_preset.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/runtime/map_follower.hpp"
@@ -18,11 +19,11 @@ struct MapSource {
 // whose map is the identity (displayMapIsIdentity); otherwise bakeDisplay (through the on-disk cache, so only the
 // first render of a display pays for the bake).
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
-                         bool showProgress);
+                         bool showProgress, BakePreset preset);
 
 // The bake a MapFollower re-bakes with as the head moves: bakeDisplay without the on-disk cache
 // (every head position is a new config: the cache would only fill up). resolution, edgeLength:
 // the config's where 0.
-BakeFunction followerBake(int resolution, double edgeLength);
+BakeFunction followerBake(int resolution, double edgeLength, BakePreset preset);
 
 }  // namespace confvis::cli

@@ -6,9 +6,10 @@
 //   on a miss: computeDisplayMap -> bakeRetargetMap -> bake directory written into the cache.
 //
 // The cache key is the effective config's hash (DisplayConfig::hash covers every field,
-// resolution, edge length and reference point included) under a folder named for the bake
-// format and confvis version, so overrides, format changes and new releases never hit stale
-// entries. An entry is a bake directory (bake_files.hpp), written into a temporary folder and
+// resolution, edge length and reference point included) plus a digest of the map settings the
+// config does not hold (route and grading: mapSettingsJson, bake_preset.hpp), under a folder
+// named for the bake format and confvis version, so overrides, presets, format changes and new
+// releases never hit stale entries. An entry is a bake directory (bake_files.hpp), written into a temporary folder and
 // renamed into place; one that does not load back (truncated EXR, sidecar that does not match)
 // is removed and rebuilt. Maps that follow a tracked head (a new reference point every few
 // centimetres) are better baked with useCache = false: each reference point is a new entry.
@@ -21,6 +22,7 @@
 
 #include "confvis/base/export.hpp"
 #include "confvis/conformal/bake.hpp"
+#include "confvis/conformal/bake_preset.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/engine/display_config.hpp"
 
@@ -31,6 +33,12 @@ struct BakeDisplayOptions {
   std::optional<int> resolution;      // texels per face; default: config.cubeResolution
   std::optional<double> edgeLength;   // metres; default: config.edgeLength
   std::optional<glm::dvec3> reference;     // default: config.reference
+  // The accuracy / speed trade (bake_preset.hpp). The API's default is the live one (fast: what a
+  // map follower re-bakes with); `confvis bake` and `render` ask for accurate. Without an
+  // explicit edgeLength the preset scales the config's edge_length (accurate: half).
+  BakePreset preset = kLiveBakePreset;
+  std::optional<DisplayMapRoute> route;    // default: the preset's
+  std::optional<TemplateGrading> grading;  // default: the preset's
   bool useCache = true;
   std::filesystem::path cacheDirectory;  // empty: defaultCacheDirectory()
   int threads = 0;                       // 0: one per hardware thread
@@ -54,13 +62,19 @@ struct BakedDisplay {
 // <temp>/confvis-cache.
 std::filesystem::path defaultCacheDirectory();
 
-// The config with the options' overrides applied, validated again (e.g. a reference point
-// outside the display) and re-hashed. Throws Error(InvalidInput) naming the override.
+// The config with the options' overrides applied (the preset's edge scale where no edge length is
+// given), validated again (e.g. a reference point outside the display) and re-hashed. Throws
+// Error(InvalidInput) naming the override.
 DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplayOptions& options);
 
-// Where the cache keeps the bake of an effective config.
+// The route and grading a bake with these options uses (the preset's unless overridden).
+DisplayMapOptions bakeMapOptions(const BakeDisplayOptions& options);
+
+// Where the cache keeps the bake of an effective config with these map settings
+// (mapSettingsJson of bakeMapOptions).
 std::filesystem::path bakeCacheEntry(const std::filesystem::path& cacheDirectory,
-                                     const DisplayConfig& effectiveConfig);
+                                     const DisplayConfig& effectiveConfig,
+                                     const nlohmann::json& mapSettings);
 
 // computeDisplayMap (templates, flows, alignment) and bakeRetargetMap, through the cache.
 BakedDisplay bakeDisplay(const DisplayConfig& config, const BakeDisplayOptions& options = {});

@@ -54,6 +54,11 @@ struct DiskMapOptions {
   // costs up to 20 Newton steps), for callers with a cheaper fallback (the display map's
   // Euclidean route). The default never gives up before the step falls below 1/1024.
   int maxStalledStages = 1000;
+  // Spherical route: start from the factor of z^(π/α) around each boundary corner of angle α
+  // (the flattening guess's corner cones, no log term). For meshes graded toward their corners,
+  // where many rings of tiny triangles must open: cave3's graded source then converges directly
+  // (8 Newton steps) instead of stalling into continuation; cave5 graded 5 + 4 -> 4 + 4 steps.
+  bool cornerGuess = false;
   std::function<void(int, double)> onIteration;
 };
 

@@ -51,6 +51,7 @@
 // with the on-disk cache), their files and their measured quality.
 #include "confvis/conformal/bake.hpp"
 #include "confvis/conformal/bake_display.hpp"
+#include "confvis/conformal/bake_preset.hpp"
 #include "confvis/conformal/bake_files.hpp"
 #include "confvis/conformal/baked_map_quality.hpp"
 #include "confvis/conformal/display_map.hpp"

@@ -1,0 +1,50 @@
+#pragma once
+// Bake presets (issue 22, point 4): the accuracy / re-bake time trade of a display map as one
+// word. Measured on cave5 against its converged map (conformal/README.md, "Map accuracy" and
+// "Presets"):
+//   fast      the config's edge_length, uniform edges, spherical route: the re-bake fits the
+//             33 ms budget of a tracked head (cave5 at 20 cm: ~27 ms on the idle 2-core
+//             machine), but content lands up to ~54 px (p99) / 113 px (max) off near the
+//             singular corners.
+//   accurate  half the config's edge_length, graded toward the singular corners (20 degrees,
+//             edges down to 1/64), spherical route: cave5 at p99 0.87 px, max 1.3 px, for about
+//             7x the CPU of `fast` (~0.5 s): what offline bakes and renders use.
+// `confvis bake` and `render` default to accurate (baked once, then cached); `view`, `walk` and
+// the live map follower (backgroundBake) to fast. BakeDisplayOptions (bake_display.hpp) takes a
+// preset and lets route and grading be overridden one by one.
+#include <string>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
+#include "confvis/base/export.hpp"
+#include "confvis/conformal/display_map.hpp"
+
+namespace confvis CONFVIS_API {
+
+enum class BakePreset { Fast, Accurate };
+
+inline constexpr BakePreset kOfflineBakePreset = BakePreset::Accurate;  // bake, render
+inline constexpr BakePreset kLiveBakePreset = BakePreset::Fast;         // view, walk, followers
+
+const char* toString(BakePreset preset);
+// "fast" or "accurate"; anything else throws Error(InvalidInput) naming the value and the choices.
+BakePreset parseBakePreset(std::string_view name);
+
+// What a preset sets: the edge length as a multiple of the config's edge_length (used where no
+// edge length is given explicitly), the disk-map route and the grading.
+struct BakePresetSettings {
+  double edgeScale = 1;
+  DisplayMapRoute route = DisplayMapRoute::Spherical;
+  TemplateGrading grading;
+};
+BakePresetSettings presetSettings(BakePreset preset);
+
+// The settings of a display map that the config does not hold (route, grading), as JSON: part of
+// the bake cache's key and of bake.json ("map_settings"), so that bakes differing in any of them
+// never share a cache entry.
+nlohmann::json mapSettingsJson(DisplayMapRoute route, const TemplateGrading& grading);
+
+const char* toString(DisplayMapRoute route);
+
+}  // namespace confvis

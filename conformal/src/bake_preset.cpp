@@ -1,0 +1,53 @@
+// Bake presets (bake_preset.hpp).
+#include "confvis/conformal/bake_preset.hpp"
+
+#include <string>
+
+#include "confvis/base/error.hpp"
+
+namespace confvis {
+
+const char* toString(BakePreset preset) {
+  return preset == BakePreset::Fast ? "fast" : "accurate";
+}
+
+BakePreset parseBakePreset(std::string_view name) {
+  if (name == "fast") return BakePreset::Fast;
+  if (name == "accurate") return BakePreset::Accurate;
+  throw Error(ErrorCode::InvalidInput,
+              "unknown bake preset '" + std::string(name) + "' (choose fast or accurate)");
+}
+
+BakePresetSettings presetSettings(BakePreset preset) {
+  BakePresetSettings settings;
+  if (preset == BakePreset::Fast) return settings;  // the config's edges, uniform, spherical
+  // Measured on cave5 (conformal/README.md, "Presets"): halving the edges takes the bulk of the
+  // error (p50) down 4x; grading 20 degrees around the singular corners down to 1/64 of the edge
+  // takes the tail (p99 15 -> 0.87 px, max 80 -> 1.3 px at 10 cm).
+  settings.edgeScale = 0.5;
+  settings.grading.radiusDegrees = 20;
+  settings.grading.minScale = 1.0 / 64;
+  return settings;
+}
+
+const char* toString(DisplayMapRoute route) {
+  switch (route) {
+    case DisplayMapRoute::Spherical: return "spherical";
+    case DisplayMapRoute::Euclidean: return "euclidean";
+    case DisplayMapRoute::Hyperbolic: return "hyperbolic";
+  }
+  return "?";
+}
+
+nlohmann::json mapSettingsJson(DisplayMapRoute route, const TemplateGrading& grading) {
+  nlohmann::json json = {{"route", toString(route)}};
+  if (grading.radiusDegrees > 0)
+    json["grading"] = {{"radius_degrees", grading.radiusDegrees},
+                       {"exponent", grading.exponent},
+                       {"min_scale", grading.minScale}};
+  else
+    json["grading"] = "uniform";
+  return json;
+}
+
+}  // namespace confvis
