@@ -149,7 +149,19 @@ layout(push_constant) uniform Prepass {
   uint cutVertexBase; // cut vertex slot s is vertex cutVertexBase + s (GpuScene::cutVertexBase)
   uint errorWallCount; // ErrorWalls entries in use
   uint snapCutToRim;  // VulkanOptions::snapCutToRim (classify_edges_at_cut.comp)
+  uint dropOutside;   // VulkanOptions::dropOutsideSourceField (keptValidity)
 } prepass;
+
+// The validity the pre-pass keeps for a warp (of a vertex or an edge's midpoint): 1, so that
+// nothing is dropped or sent to the geometry shader for lying outside the source field, unless
+// prepass.dropOutside. The map's extension beyond the field (the analytic maps' closed form, a
+// baked map's extrapolated rings) places such points beyond the rim seen from c, where no wall
+// pixel is lit from c; but from an eye off c the part of them inside the room shows on the walls,
+// next to the rim, where Embree's rays, bent through the ray map's extension, draw it too. Dropped,
+// they left a saw-toothed band of a 0.6 m ceiling unshown along the top of the CAVE's side walls
+// with the head 20 cm off c (issue 23).
+float keptValidity(float validity) { return prepass.dropOutside != 0u ? validity : 1.0; }
+vec4 keptWarp(vec4 warp) { return vec4(warp.xyz, keptValidity(warp.w)); }
 
 // Writes triangle t (vertex indices i) of the current mesh into its flat list, whose slots are
 // the mesh's own index range: classify_triangles.comp fills every slot, with a degenerate

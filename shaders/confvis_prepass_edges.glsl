@@ -149,12 +149,12 @@ void writeEdge(uint e, EdgeEnds ends, vec4 midpoint, float segments, bool across
                  (tame ? kEdgeTame : 0u) |
                  (max(ends.wa.w, ends.wb.w) < 0.5 ? kEdgeUnseen : 0u) |
                  (acrossCut ? kEdgeAcrossCut : 0u) |
-                 (min(midpoint.w, min(ends.wa.w, ends.wb.w)) < 0.5 ? kEdgeOutside : 0u);
+                 (min(keptValidity(midpoint.w), min(ends.wa.w, ends.wb.w)) < 0.5 ? kEdgeOutside : 0u);
 }
 
 // Part of the edge lies outside the source field (its corners' or midpoint's validity below 1).
 bool edgeLeavesField(EdgeEnds ends, vec4 midpoint) {
-  return min(midpoint.w, min(ends.wa.w, ends.wb.w)) < 1.0;
+  return min(keptValidity(midpoint.w), min(ends.wa.w, ends.wb.w)) < 1.0;
 }
 
 // writeEdgeLevel for an edge edgeSurelyStraight accepts: one segment.

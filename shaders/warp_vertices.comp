@@ -15,6 +15,6 @@ void main() {
   relative[v] = vec4(r, 0.0);
   vec4 w;
   bool plain = confvisWarpRelativeBilinear(r, w);
-  warped[v] = w;
+  warped[v] = keptWarp(w);
   if (!plain) enqueue(kQueueVertices, v);
 }

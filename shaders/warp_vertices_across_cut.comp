@@ -11,5 +11,5 @@ void main() {
   uint slot = gl_GlobalInvocationID.x;
   if (slot >= queueDispatch[kQueueVertices].count) return;
   uint v = queuedVertices[slot];
-  warped[v] = confvisWarpRelative(vertexRelative(v));
+  warped[v] = keptWarp(confvisWarpRelative(vertexRelative(v)));
 }

@@ -7,13 +7,21 @@
 // kilometres (x 1e3); per-pixel tolerance and a bad-pixel budget, and deliberately broken renders
 // (the thin geometry or the texture lost, wide triangles drawn whole) that must fail it.
 //
-// Found by this suite and not fixed yet: conformal Vulkan with the head 20 cm off the warp's
-// centre loses a saw-toothed band of the ceiling (two 40 m triangles 0.6 m above) at the top of
-// the front and left walls, 11-33 % of those images off Embree at every scale (the right and back
-// walls: <= 0.12 %); with the head at the centre every image is within 0.34 %. That case is
-// DISABLED_ below until the Vulkan split/tessellation handles it (issue 23, points 3 and 5).
+// Found by this suite: conformal Vulkan with the head 20 cm off the warp's centre differs from
+// Embree at the top of the front and left walls, 11-33 % of those images at every scale, for two
+// reasons. (1) A saw-toothed band of the ceiling (two 40 m triangles 0.6 m above) was not drawn
+// (1.1 % and 4.3 % of those walls' top quarter, centre eye): the map places the ceiling's middle
+// outside its source field (above the rim seen from c, but inside the room), the head off c sees
+// it along the top rim, where Embree's rays, bent through the map's extension, draw it, and Vulkan
+// dropped the triangles outside the field. Fixed: the rim test below (coverage), which fails with
+// VulkanOptions::dropOutsideSourceField. (2) Not fixed: the ceiling is shaded up to ~15 % darker
+// there. Embree lights along the bent ray's last segment (|n . ray direction|), Vulkan with a point
+// light at the eye's virtual position (|n . dir(eyeVirtual - x)|); the two agree for the centre
+// eye at c, where rays are straight, but not for an eye off c. The full comparison stays
+// DISABLED_ until the backends share one headlight for bent rays.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "../backends/vulkan/test/vulkan_test_scenes.hpp"
@@ -114,9 +122,54 @@ TEST(BackendCrossCheckContent, ConformalRoomMatchesEmbreeForEveryEyeAndScale) {
   expectBackendsAgree(RenderMode::Conformal, glm::dvec3(0.0));
 }
 
-// Fails (see the top of this file): the ceiling's band at the top of the front and left walls.
+// Fails (see the top of this file): the ceiling's shading at the top of the front and left walls.
 TEST(BackendCrossCheckContent, DISABLED_ConformalRoomWithTheHeadOffCentreMatchesEmbree) {
   expectBackendsAgree(RenderMode::Conformal, kHeadOffCentre);
+}
+
+// The top quarter of an image's rows: the rim of a side wall, next to the missing ceiling.
+ImageRGBA topRim(const ImageRGBA& image) {
+  ImageRGBA rim(image.width, image.height / 4);
+  std::copy_n(image.pixels.begin(), rim.pixels.size(), rim.pixels.begin());
+  return rim;
+}
+
+// Coverage alone (alpha: 1 where something is drawn): the colours differ there for another
+// reason (the headlight, top of this file).
+ImageRGBA coverage(const ImageRGBA& image) {
+  ImageRGBA alpha(image.width, image.height);
+  for (std::size_t i = 0; i < image.pixelCount(); ++i) alpha.pixels[4 * i] = image.pixels[4 * i + 3];
+  return alpha;
+}
+
+// Worst share of a side wall's top rim drawn by one backend and not by the other, over the walls
+// and eyes.
+double worstSideWallRimCoverageMismatch(const RenderResult& vulkan, const RenderResult& embree) {
+  double worst = 0.0;
+  for (const WallImage& image : embree.images) {
+    if (image.wall == "floor") continue;
+    const ImageRGBA& drawn = test::imageOf(vulkan, image.wall, image.eye).image;
+    worst = std::max(worst, test::comparePixels(coverage(topRim(drawn)),
+                                                coverage(topRim(image.image)), 0.5f)
+                                .badFraction());
+  }
+  return worst;
+}
+
+// Measured: none of the rim's pixels; 1.1 % (front) and 4.3 % (left) with the old drop.
+constexpr double kRimCoverageBudget = 0.002;
+
+// Along the top rim of the side walls, seen by the head off c (every eye), conformal Vulkan draws
+// wherever Embree draws: no band; with the triangles outside the source field dropped (the old
+// behaviour: a saw-toothed band) the same comparison fails.
+TEST(BackendCrossCheckContent, ConformalTopRimOfTheSideWallsShowsNoBandWithTheHeadOffCentre) {
+  const ContentCase c = contentCase(1.0, RenderMode::Conformal, kHeadOffCentre);
+  const RenderResult embree = embreeRender(c);
+  EXPECT_LE(worstSideWallRimCoverageMismatch(vulkanRender(c), embree), kRimCoverageBudget);
+  VulkanOptions dropping;
+  dropping.dropOutsideSourceField = true;
+  EXPECT_GT(worstSideWallRimCoverageMismatch(vulkanRender(c, dropping), embree),
+            5 * kRimCoverageBudget);
 }
 
 // The comparison can fail: the thin poles and wires lost, the ground's texture lost (Embree

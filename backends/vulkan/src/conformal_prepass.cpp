@@ -252,6 +252,7 @@ void ConformalPrepass::record(VkCommandBuffer cmd, const GpuScene& scene,
   push.maxGap = thresholds.maxGap;
   push.splitAlongCut = thresholds.splitAlongCut ? 1u : 0u;
   push.snapCutToRim = thresholds.snapCutToRim ? 1u : 0u;
+  push.dropOutside = thresholds.dropOutsideSourceField ? 1u : 0u;
   push.midpointBase = scene.midpointBase();
   push.cutVertexBase = scene.cutVertexBase();
   push.errorWallCount = static_cast<std::uint32_t>(errorWalls);

@@ -45,6 +45,7 @@ struct PrepassThresholds {
   // The walls' local bend error bounds (FramePlan::errorWalls): segments of bent edges keep to
   // errorPixels of the pixels where they are shown; maxErrorAngle is the smallest anywhere.
   std::vector<ErrorWall> errorWalls;
+  bool dropOutsideSourceField = false;  // VulkanOptions::dropOutsideSourceField
   bool operator==(const PrepassThresholds&) const = default;
 };
 

@@ -69,6 +69,7 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   plan.splitAlongCut = tessellation.splitAlongCut;
   plan.snapCutToRim = tessellation.snapCutToRim;
   plan.reusePrepass = tessellation.reusePrepass;
+  plan.dropOutsideSourceField = tessellation.dropOutsideSourceField;
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;
   const bool conformal = settings.mode == RenderMode::Conformal;

@@ -17,6 +17,7 @@ struct TessellationOptions {
   bool splitAlongCut = true;  // VulkanOptions::splitAlongCut
   bool reusePrepass = true;   // VulkanOptions::reusePrepass
   bool snapCutToRim = true;   // VulkanOptions::snapCutToRim
+  bool dropOutsideSourceField = false;  // VulkanOptions::dropOutsideSourceField
 };
 
 struct FramePlan {
@@ -30,6 +31,7 @@ struct FramePlan {
   bool splitAlongCut = true;  // TessellationOptions::splitAlongCut
   bool snapCutToRim = true;   // TessellationOptions::snapCutToRim
   bool reusePrepass = true;   // TessellationOptions::reusePrepass
+  bool dropOutsideSourceField = false;  // TessellationOptions::dropOutsideSourceField
 };
 
 // `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.

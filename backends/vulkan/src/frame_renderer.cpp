@@ -251,8 +251,9 @@ void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
   if (conformal) {
     std::vector<glm::vec4> viewParams;
     for (const ViewData& view : plan.views) viewParams.push_back(view.params);
-    const PrepassThresholds thresholds =
+    PrepassThresholds thresholds =
         prepassThresholds(viewParams, plan.errorWalls, plan.splitAlongCut, plan.snapCutToRim);
+    thresholds.dropOutsideSourceField = plan.dropOutsideSourceField;
     const PrepassInputs inputs{scene.id(), mapHash_, plan.frame, thresholds};
     prepassReused_ = plan.reusePrepass && prepassCurrent_ && inputs == prepassInputs_;
     prepassSeconds_ = 0.0;

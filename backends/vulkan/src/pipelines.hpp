@@ -90,6 +90,7 @@ struct PrepassConstants {
   std::uint32_t cutVertexBase;  // GpuScene::cutVertexBase()
   std::uint32_t errorWallCount;  // ErrorWall entries in use (at most kMaxErrorWalls)
   std::uint32_t snapCutToRim;    // 0 or 1
+  std::uint32_t dropOutside;     // 0 or 1: VulkanOptions::dropOutsideSourceField
 };
 
 // std430 element `ErrorWall` of confvis_prepass_common.glsl: a wall's lit rectangle relative to

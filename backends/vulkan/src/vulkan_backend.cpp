@@ -167,7 +167,8 @@ class VulkanBackend final : public VulkanRenderer {
     const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
                                                    options_.maxSegmentDegrees, options_.tessellate,
                                                    options_.splitAlongCut, options_.reusePrepass,
-                                                   options_.snapCutToRim};
+                                                   options_.snapCutToRim,
+                                                   options_.dropOutsideSourceField};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
                           context_->capabilities().maxMultiviewViewCount);

@@ -62,6 +62,12 @@ struct VulkanOptions {
   // quad next to the viewer, a ground plane under them) are split before the warp, so that the
   // pre-pass bends pieces it can follow. False: drawn whole, as before issue 23 (for tests).
   bool splitWideTriangles = true;
+  // Conformal mode: triangles lying outside the map's source field are drawn where the map's
+  // extension beyond it places them: beyond the rim seen from c, but an eye off c sees the part
+  // of them inside the room next to the rim, as Embree does. True: they are dropped (partly
+  // outside ones through the geometry shader), as before issue 23, which left a saw-toothed band
+  // along the rim for a head off c (for tests).
+  bool dropOutsideSourceField = false;
   // Conformal mode: a frame whose scene, map, navigation (RenderSettings::camera) and error
   // bounds equal the previous conformal frame's reuses its compute pre-pass (warps, edge levels,
   // draw lists); head tracking alone changes none of them. False: every frame runs it (the
