@@ -11,9 +11,10 @@
 // b_j^2 / (b0^2 + b1^2 + b2^2) of the barycentric coordinates b: continuous across edges (an
 // edge's points blend only its two vertices, with the same weights from both sides), exact where
 // the discrete map is one Möbius map, and it turns straight lines by O(h^2..h^3) instead of O(h).
-// At a singular boundary corner (its angle on the sphere and in the disk differ by more than
-// 0.2 rad: a display corner, a cut leaf) the map behaves like a power of the distance, so that
-// vertex's chart is first raised to the power disk angle / sphere angle.
+// At a singular boundary corner (its angle on the sphere and in the disk polygon differ by more
+// than 0.2 rad: a display corner, a cut leaf, a copy of the cut's centre) the map behaves like a
+// power of the distance, so that vertex's chart is first raised to the power
+// disk angle / sphere angle.
 // The disk -> sphere blend is not the exact inverse of the sphere -> disk blend: T_ray and
 // T_geom are inverse to the interpolation's error (well below a pixel at 20 cm edges).
 // Measured on cave5 in conformal/README.md ("Smooth interpolation"); it costs ~2-3x the linear
