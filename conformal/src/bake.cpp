@@ -11,6 +11,7 @@
 #include "cube_texels.hpp"
 #include "disk_locator.hpp"
 #include "parallel_for.hpp"
+#include "smooth_interpolation.hpp"
 #include "sphere_raster.hpp"
 
 namespace confvis {
@@ -24,16 +25,7 @@ double secondsSince(Clock::time_point start) {
 
 constexpr int kMaxResolution = 8192;
 
-// Normalises `sum` into the RGBA texel. Only a triangle spanning antipodal corners could sum to
-// (nearly) zero; its corner stands in then.
-inline void writeDirection(float* texel, const Vec3d& sum, const Vec3d& fallback, float alpha) {
-  const double length = norm(sum);
-  const Vec3d dir = length > 1e-12 ? (1.0 / length) * sum : fallback;
-  texel[0] = static_cast<float>(dir.x);
-  texel[1] = static_cast<float>(dir.y);
-  texel[2] = static_cast<float>(dir.z);
-  texel[3] = alpha;
-}
+using detail::writeDirection;
 
 void validateMesh(const SphereDiskMesh& mesh, const std::string& name) {
   auto fail = [&](const std::string& what) {
@@ -269,9 +261,16 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
   auto stage = Clock::now();
   // Both point-location structures at once (a tracked head re-bakes: wall time counts).
   std::optional<detail::DiskLocator> sourceLocator, targetLocator;
+  std::optional<detail::MobiusBlend> sourceBlend, targetBlend;
+  const bool smooth = options.interpolation == MapInterpolation::Mobius;
   detail::parallelFor(2, options.threads, [&](std::size_t which) {
-    if (which == 0) sourceLocator.emplace(map.source.disk, map.source.triangles);
-    else targetLocator.emplace(map.target.disk, map.target.triangles);
+    if (which == 0) {
+      sourceLocator.emplace(map.source.disk, map.source.triangles);
+      if (smooth) sourceBlend.emplace(map.source);
+    } else {
+      targetLocator.emplace(map.target.disk, map.target.triangles);
+      if (smooth) targetBlend.emplace(map.target);
+    }
   });
   const detail::DiskLocator& sourceDisk = *sourceLocator;
   const detail::DiskLocator& targetDisk = *targetLocator;
@@ -286,12 +285,20 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
     if (cube->faceSize != resolution) *cube = CubeMap(resolution);
   std::vector<std::uint8_t> rayCovered, geomCovered;
   stage = Clock::now();
-  bakeDirectionMap(map.target, map.source, sourceDisk, options.threads, result.ray, rayCovered,
-                   progress.get());
+  if (smooth)
+    detail::bakeDirectionMapSmooth(map.target, map.source, *targetBlend, *sourceBlend, sourceDisk,
+                                   options.threads, result.ray, rayCovered, progress.get());
+  else
+    bakeDirectionMap(map.target, map.source, sourceDisk, options.threads, result.ray, rayCovered,
+                     progress.get());
   t.ray = secondsSince(stage);
   stage = Clock::now();
-  bakeDirectionMap(map.source, map.target, targetDisk, options.threads, result.geom, geomCovered,
-                   progress.get());
+  if (smooth)
+    detail::bakeDirectionMapSmooth(map.source, map.target, *sourceBlend, *targetBlend, targetDisk,
+                                   options.threads, result.geom, geomCovered, progress.get());
+  else
+    bakeDirectionMap(map.source, map.target, targetDisk, options.threads, result.geom,
+                     geomCovered, progress.get());
   t.geom = secondsSince(stage);
   stage = Clock::now();
   detail::parallelFor(2, options.threads, [&](std::size_t which) {

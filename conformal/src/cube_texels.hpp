@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "confvis/base/cube_map.hpp"
+#include "confvis/base/vec3.hpp"
 
 namespace confvis::detail {
 
@@ -36,6 +37,17 @@ inline constexpr int kNeighbourSteps[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
 // 0, capped at `cap`; all texels get `cap` when no mask entry is 0.
 std::vector<std::uint8_t> distanceToUnmasked(const std::vector<std::uint8_t>& mask, int n,
                                              std::uint8_t cap);
+
+// Normalises `sum` into the RGBA texel. Only a triangle spanning antipodal corners could sum to
+// (nearly) zero; its corner stands in then.
+inline void writeDirection(float* texel, const Vec3d& sum, const Vec3d& fallback, float alpha) {
+  const double length = norm(sum);
+  const Vec3d dir = length > 1e-12 ? (1.0 / length) * sum : fallback;
+  texel[0] = static_cast<float>(dir.x);
+  texel[1] = static_cast<float>(dir.y);
+  texel[2] = static_cast<float>(dir.z);
+  texel[3] = alpha;
+}
 
 // The bake's extension past the covered region (see bake.hpp).
 void extendPastBoundary(CubeMap& map, const std::vector<std::uint8_t>& covered);

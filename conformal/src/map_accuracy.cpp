@@ -7,6 +7,7 @@
 
 #include "disk_locator.hpp"
 #include "parallel_for.hpp"
+#include "smooth_interpolation.hpp"
 #include "sphere_locator.hpp"
 
 namespace confvis {
@@ -67,12 +68,17 @@ Vec3d someTangent(const Vec3d& v) {
 
 }  // namespace
 
-DisplayMapEvaluator::DisplayMapEvaluator(const DisplayMap& map)
+DisplayMapEvaluator::DisplayMapEvaluator(const DisplayMap& map, MapInterpolation interpolation)
     : map_(map),
       sourceSphere_(std::make_unique<detail::SphereLocator>(map.source.sphere, map.source.triangles)),
       targetSphere_(std::make_unique<detail::SphereLocator>(map.target.sphere, map.target.triangles)),
       sourceDisk_(std::make_unique<detail::DiskLocator>(map.source.disk, map.source.triangles)),
-      targetDisk_(std::make_unique<detail::DiskLocator>(map.target.disk, map.target.triangles)) {}
+      targetDisk_(std::make_unique<detail::DiskLocator>(map.target.disk, map.target.triangles)) {
+  if (interpolation == MapInterpolation::Mobius) {
+    sourceBlend_ = std::make_unique<detail::MobiusBlend>(map.source);
+    targetBlend_ = std::make_unique<detail::MobiusBlend>(map.target);
+  }
+}
 
 DisplayMapEvaluator::~DisplayMapEvaluator() = default;
 
@@ -84,14 +90,21 @@ std::optional<DisplayMapEvaluator::Image> DisplayMapEvaluator::evaluate(const Ve
   const detail::DiskLocator& disk = ray ? *sourceDisk_ : *targetDisk_;
   const detail::SphereLocator::Hit hit = sphere.locate(normalized(d));
   if (hit.triangle < 0) return std::nullopt;
+  const detail::MobiusBlend* domainBlend = ray ? targetBlend_.get() : sourceBlend_.get();
+  const detail::MobiusBlend* codomainBlend = ray ? sourceBlend_.get() : targetBlend_.get();
   std::complex<double> z = 0;
   const auto& corners = domain.triangles[hit.triangle];
-  for (int i = 0; i < 3; ++i) z += hit.barycentric[i] * domain.disk[corners[i]];
+  if (domainBlend) z = domainBlend->toDisk(hit.triangle, hit.barycentric, normalized(d));
+  else
+    for (int i = 0; i < 3; ++i) z += hit.barycentric[i] * domain.disk[corners[i]];
   int hint = -1;
   const detail::DiskLocator::Hit image = disk.locate(z, hint);
   const auto& to = codomain.triangles[image.triangle];
   Vec3d sum{0.0};
-  for (int i = 0; i < 3; ++i) sum += image.barycentric[i] * codomain.sphere[to[i]];
+  if (codomainBlend)  // outside the codomain's polygon: extended by the nearest blend, as the bake
+    sum = codomainBlend->toSphere(image.triangle, image.barycentric, z);
+  else
+    for (int i = 0; i < 3; ++i) sum += image.barycentric[i] * codomain.sphere[to[i]];
   return Image{normalized(sum), hit.triangle, image.triangle};
 }
 
@@ -134,8 +147,11 @@ std::vector<Vec3d> singularCorners(const DisplayMap& map, double minTurn) {
 }
 
 MapError measureMapError(const DisplayConfig& config, const DisplayMap& test,
-                         const DisplayMap& reference, int samplesPerSide, int threads) {
-  const DisplayMapEvaluator testMap(test), referenceMap(reference);
+                         const DisplayMap& reference, int samplesPerSide, int threads,
+                         MapInterpolation testInterpolation,
+                         MapInterpolation referenceInterpolation) {
+  const DisplayMapEvaluator testMap(test, testInterpolation),
+      referenceMap(reference, referenceInterpolation);
   const Vec3d c = config.reference;
   const int n = samplesPerSide;
   struct Sample {
@@ -252,8 +268,8 @@ std::vector<double> kinkTurns(const DisplayMapEvaluator& eval, const std::vector
 
 KinkStats measureKinks(const DisplayConfig& config, const DisplayMap& map, int linesPerSide,
                        double arcDegrees, double stepDegrees, double excludeDegrees,
-                       int threads) {
-  const DisplayMapEvaluator eval(map);
+                       int threads, MapInterpolation interpolation) {
+  const DisplayMapEvaluator eval(map, interpolation);
   const Vec3d c = config.reference;
   const int n = linesPerSide;
   std::vector<VirtualLine> lines;

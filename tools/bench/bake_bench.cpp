@@ -58,6 +58,13 @@ std::vector<T> parseList(const std::string& text) {
   return values;
 }
 
+std::vector<std::string> splitNames(const std::string& text) {
+  std::vector<std::string> names;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) names.push_back(item);
+  return names;
+}
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0 : v[v.size() / 2];
@@ -91,6 +98,10 @@ int main(int argc, char** argv) {
   app.add_option("--preset", presetName, "Bake preset: fast | accurate (route, grading, edges)")
       ->check(CLI::IsMember({"fast", "accurate"}));
   auto* edgesOption = app.get_option("--edges");
+  std::string interpolations = "linear";
+  app.add_option("--interpolations", interpolations,
+                 "Map interpolations, comma-separated: linear, mobius (one row each)")
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   const DisplayConfig base = loadDisplayConfig(configPath);
@@ -110,7 +121,8 @@ int main(int argc, char** argv) {
               "fresh bake cpu", "baseline", "bake/b", "ray ratio p50/p95/max, flipped");
   for (double edge : parseList<double>(edges))
     for (int n : parseList<int>(resolutions))
-      for (const bool movedReference : {false, true}) {
+      for (const bool movedReference : {false, true})
+        for (const std::string& interpolation : splitNames(interpolations)) {
         BakeDisplayOptions overrides;
         overrides.edgeLength = edge;
         overrides.resolution = n;
@@ -133,6 +145,8 @@ int main(int argc, char** argv) {
           BakeOptions bake;
           bake.reference = {config.reference.x, config.reference.y, config.reference.z};
           bake.threads = threads;
+          bake.interpolation =
+              interpolation == "mobius" ? MapInterpolation::Mobius : MapInterpolation::Linear;
           BakeTimings t;
           bakeRetargetMapInto(last, n, bake, map, &t);
           Sample s;
@@ -173,7 +187,9 @@ int main(int argc, char** argv) {
         const BakedConformality q =
             measureBakedConformality(map.ray, {.margin = 2, .discontinuityTolerance = 0.5, .stride = std::max(1, n / 256)});
         std::printf("%-6.2f %5d %-9s %6zu %6zu | %8.2f %8.2f %9.2f %8.2f (%6.2f %6.2f %6.2f %6.2f) | %8.2f | %15s %15s %15s | %8.2f %6.2f | %.4f/%.4f/%.3f, %zu\n",
-                    edge, n, movedReference ? "moved" : "config", last.source.triangles.size(),
+                    edge, n,
+                    ((movedReference ? "moved/" : "config/") + interpolation.substr(0, 3)).c_str(),
+                    last.source.triangles.size(),
                     last.target.triangles.size(), med(&Sample::templ), med(&Sample::flow),
                     med(&Sample::alignment), med(&Sample::bake), med(&Sample::locators), med(&Sample::ray),
                     med(&Sample::geom), med(&Sample::extend), med(&Sample::total),

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -151,6 +152,12 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
+MapInterpolation parseInterpolation(const std::string& name) {
+  if (name == "linear") return MapInterpolation::Linear;
+  if (name == "mobius") return MapInterpolation::Mobius;
+  throw std::invalid_argument("unknown interpolation '" + name + "' (linear, mobius)");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -187,8 +194,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--repeat", repeat, "Re-bakes timed per row (median)")->capture_default_str();
   app.add_option("--threads", threads, "Threads (0: one per core)")->capture_default_str();
+  std::string interpolations = "linear", referenceInterpolationName = "linear";
+  app.add_option("--interpolations", interpolations,
+                 "Map interpolations, comma-separated: linear, mobius")->capture_default_str();
+  app.add_option("--reference-interpolation", referenceInterpolationName,
+                 "Interpolation of the converged map: linear, mobius")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
+    const MapInterpolation referenceInterpolation = parseInterpolation(referenceInterpolationName);
     for (const std::string& configPath : splitList(configs)) {
       const DisplayConfig config = loadDisplayConfig(configPath);
       std::printf("\n%s (default edge %.3f m, cube %d; px of its walls)\n", config.name.c_str(),
@@ -203,7 +216,8 @@ int main(int argc, char** argv) {
         scale *= 0.5;
         DisplayMap finer =
             referenceMap(config, refRoute, referenceRoute, scale * config.edgeLength, referenceGrading, cacheDir);
-        const MapError change = measureMapError(config, reference, finer, samples, threads);
+        const MapError change = measureMapError(config, reference, finer, samples, threads,
+                                                referenceInterpolation, referenceInterpolation);
         std::printf("reference %s %.4f m -> %.4f m: change p50 %.3f p95 %.3f p99 %.3f max %.3f px\n",
                     referenceRoute.c_str(), 2 * scale * config.edgeLength,
                     scale * config.edgeLength, change.p50, change.p95, change.p99, change.max);
@@ -211,11 +225,13 @@ int main(int argc, char** argv) {
         reference = std::move(finer);
         if (change.p99 < convergePx) break;
       }
-      std::printf("| edge m | route | grading deg | S+T vertices | p50 | p95 | p99 | max px (worst wall s,t) | kink p99 / max deg | re-bake ms wall / CPU |\n");
-      std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+      std::printf("| edge m | route | interpolation | grading deg | S+T vertices | p50 | p95 | p99 | max px (worst wall s,t) | kink p50 / p95 / p99 / max deg | re-bake ms wall / CPU |\n");
+      std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
       for (const std::string& s : splitList(scales))
         for (const std::string& routeName : splitList(routes))
-          for (const std::string& g : splitList(gradings)) {
+          for (const std::string& g : splitList(gradings))
+          for (const std::string& interpolationName : splitList(interpolations)) {
+          const MapInterpolation interpolation = parseInterpolation(interpolationName);
           const double edge = std::stod(s) * config.edgeLength;
           DisplayMapOptions options;
           options.edgeLength = edge;
@@ -228,6 +244,7 @@ int main(int argc, char** argv) {
           BakeOptions bake;
           bake.reference = config.reference;
           bake.threads = threads;
+          bake.interpolation = interpolation;
           for (int r = 0; r < std::max(1, repeat); ++r) {
             const auto start = Clock::now();
             const double cpuStart = processCpuSeconds();
@@ -238,13 +255,14 @@ int main(int argc, char** argv) {
           }
           const std::string taken = map.stats["source"]["route"].get<std::string>() + "/" +
                                     map.stats["target"]["route"].get<std::string>();
-          const MapError e = measureMapError(config, map, reference, samples, threads);
-          const KinkStats k = measureKinks(config, map, lines, 10, 0.01, 3, threads);
-          std::printf("| %.4f | %s%s | %s | %zu+%zu | %.3f | %.3f | %.3f | %.2f (%s %.2f,%.2f) | %.2f / %.1f | %.1f / %.1f |\n",
+          const MapError e = measureMapError(config, map, reference, samples, threads,
+                                             interpolation, referenceInterpolation);
+          const KinkStats k = measureKinks(config, map, lines, 10, 0.01, 3, threads, interpolation);
+          std::printf("| %.4f | %s%s | %s | %s | %zu+%zu | %.3f | %.3f | %.3f | %.2f (%s %.2f,%.2f) | %.3f / %.3f / %.3f / %.1f | %.1f / %.1f |\n",
                       edge, routeName.c_str(),
                       taken == routeName + "/" + routeName ? "" : (" (took " + taken + ")").c_str(),
-                      g.c_str(), map.source.sphere.size(), map.target.sphere.size(), e.p50, e.p95, e.p99,
-                      e.max, e.worstWall.c_str(), e.worstS, e.worstT, k.p99, k.max, median(times), median(cpu));
+                      interpolationName.c_str(), g.c_str(), map.source.sphere.size(), map.target.sphere.size(), e.p50, e.p95, e.p99,
+                      e.max, e.worstWall.c_str(), e.worstS, e.worstT, k.p50, k.p95, k.p99, k.max, median(times), median(cpu));
           std::fflush(stdout);
         }
     }

@@ -20,6 +20,7 @@
 // ever NaN. Runs on `threads` threads.
 #include "confvis/base/export.hpp"
 #include "confvis/conformal/display_map.hpp"
+#include "confvis/conformal/map_interpolation.hpp"
 #include "confvis/conformal/retarget_map.hpp"
 
 namespace confvis CONFVIS_API {
@@ -28,6 +29,8 @@ struct BakeOptions {
   glm::dvec3 reference{};  // the reference point stored in the map (DisplayMap is relative to it)
   int threads = 0;    // 0: one per hardware thread
   bool showProgress = false;
+  // Between the mesh vertices: linear per chord triangle, or Möbius blending (smooth).
+  MapInterpolation interpolation = kDefaultMapInterpolation;
 };
 
 struct BakeTimings {  // seconds

@@ -21,6 +21,7 @@
 #include "confvis/base/export.hpp"
 #include "confvis/base/vec3.hpp"
 #include "confvis/conformal/display_map.hpp"
+#include "confvis/conformal/map_interpolation.hpp"
 #include "confvis/engine/display_config.hpp"
 
 namespace confvis CONFVIS_API {
@@ -28,6 +29,7 @@ namespace confvis CONFVIS_API {
 namespace detail CONFVIS_API {
 class SphereLocator;
 class DiskLocator;
+class MobiusBlend;
 }  // namespace detail
 
 // Evaluates T_ray and T_geom of a DisplayMap by point location (no cube maps). Keeps references
@@ -40,7 +42,8 @@ class DisplayMapEvaluator {
     Vec3d direction{0.0};
     int domainTriangle = -1, codomainTriangle = -1;  // the element: which triangle of each mesh
   };
-  explicit DisplayMapEvaluator(const DisplayMap& map);
+  explicit DisplayMapEvaluator(const DisplayMap& map,
+                               MapInterpolation interpolation = kDefaultMapInterpolation);
   ~DisplayMapEvaluator();
   DisplayMapEvaluator(const DisplayMapEvaluator&) = delete;
   DisplayMapEvaluator& operator=(const DisplayMapEvaluator&) = delete;
@@ -55,6 +58,7 @@ class DisplayMapEvaluator {
   const DisplayMap& map_;
   std::unique_ptr<detail::SphereLocator> sourceSphere_, targetSphere_;
   std::unique_ptr<detail::DiskLocator> sourceDisk_, targetDisk_;
+  std::unique_ptr<detail::MobiusBlend> sourceBlend_, targetBlend_;  // null: linear
 };
 
 // The display's singular corners, where the map behaves like a power of the distance: target
@@ -76,8 +80,11 @@ struct MapError : ErrorPercentiles {  // pixels of the wall each sample lies on
 
 // samplesPerSide^2 points per wall, at cell centres of its lit rectangle. Both maps must be of
 // `config` (same reference point).
+// `testInterpolation` and `referenceInterpolation` say how each map is evaluated.
 MapError measureMapError(const DisplayConfig& config, const DisplayMap& test,
-                         const DisplayMap& reference, int samplesPerSide = 96, int threads = 0);
+                         const DisplayMap& reference, int samplesPerSide = 96, int threads = 0,
+                         MapInterpolation testInterpolation = kDefaultMapInterpolation,
+                         MapInterpolation referenceInterpolation = kDefaultMapInterpolation);
 
 struct KinkStats : ErrorPercentiles {  // degrees, per element-boundary crossing
   std::size_t lines = 0;
@@ -102,6 +109,7 @@ std::vector<double> kinkTurns(const DisplayMapEvaluator& map, const std::vector<
 // singular corner, and jumps across the source's cut, are left out.
 KinkStats measureKinks(const DisplayConfig& config, const DisplayMap& map, int linesPerSide = 10,
                        double arcDegrees = 10, double stepDegrees = 0.01,
-                       double excludeDegrees = 3, int threads = 0);
+                       double excludeDegrees = 3, int threads = 0,
+                       MapInterpolation interpolation = kDefaultMapInterpolation);
 
 }  // namespace confvis
