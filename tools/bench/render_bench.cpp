@@ -102,7 +102,8 @@ struct StereoSeconds {
 // Stereo frames (both eyes of every wall) as a frame loop renders them (renderInto, interleaved
 // repeats, best of each): plain, conformal with exact and with fast stereo rays, each with the
 // head still (from the second frame on the eyes' ray tables are read) and with a head that moves
-// every frame (by 0.1 mm: no table is ever reused, every ray is computed per sample).
+// every frame (by 0.1 mm: no exact tails' table is ever reused, their tails are computed per
+// packet; fast rays read the table of targets W(p), which serves every head).
 StereoSeconds stereoFigures(EmbreeBackend& backend, const DisplayConfig& config,
                             const RetargetMap& map, const RenderSettings& plain,
                             const RenderSettings& conformal, int repeats) {
@@ -135,7 +136,8 @@ StereoSeconds stereoFigures(EmbreeBackend& backend, const DisplayConfig& config,
   std::printf("stereo     plain %.4f s, conformal exact %.4f s (x%.3f, goal <= 1.10), fast %.4f s "
               "(x%.3f, goal <= 1.05)\n",
               best.plain, best.exact, best.exact / best.plain, best.fast, best.fast / best.plain);
-  std::printf("           a head moving every frame (rays per sample, no table): exact %.4f s "
+  std::printf("           a head moving every frame (exact: tails per packet, no table; fast: "
+              "the eye-independent target table): exact %.4f s "
               "(x%.3f), fast %.4f s (x%.3f)\n",
               best.exactMoving, best.exactMoving / best.plain, best.fastMoving,
               best.fastMoving / best.plain);

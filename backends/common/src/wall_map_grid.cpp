@@ -4,6 +4,9 @@
 #include <cmath>
 
 #include <glm/gtc/constants.hpp>
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
 #include <tbb/parallel_for.h>
 
 namespace confvis {
@@ -68,6 +71,61 @@ WallMapGrid::Sample WallMapGrid::at(float px, float py) const {
   const glm::vec4* row1 = row0 + (columns_ + 1);
   const glm::vec4 s = glm::mix(glm::mix(row0[0], row0[1], tx), glm::mix(row1[0], row1[1], tx), ty);
   return {glm::vec3(s), s.w};
+}
+
+void WallMapGrid::at(int count, const float* px, const float* py, float* x, float* y, float* z,
+                     float* alpha) const {
+  int k = 0;
+#if defined(__SSE2__)
+  // Four positions at a time: at()'s cell and weights as vectors (its clamps, truncations and
+  // minimum, exact in float for grids under 2^24 samples; larger ones take at()), the four corners' blends four
+  // components at a time (glm::mix(a, b, t) = a (1 - t) + b t), transposed into x, y, z, alpha.
+  const __m128 columns = _mm_set1_ps(static_cast<float>(columns_));
+  const __m128 rows = _mm_set1_ps(static_cast<float>(rows_));
+  const __m128 lastColumn = _mm_set1_ps(static_cast<float>(columns_ - 1));
+  const __m128 lastRow = _mm_set1_ps(static_cast<float>(rows_ - 1));
+  const __m128 rowStride = _mm_set1_ps(static_cast<float>(columns_ + 1));
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+  const bool exactInFloat = samples_.size() < (std::size_t{1} << 24);
+  for (; exactInFloat && k + 4 <= count; k += 4) {
+    const __m128 gx = _mm_min_ps(
+        _mm_max_ps(_mm_mul_ps(_mm_loadu_ps(px + k), _mm_set1_ps(cellsPerPixelX_)), zero), columns);
+    const __m128 gy = _mm_min_ps(
+        _mm_max_ps(_mm_mul_ps(_mm_loadu_ps(py + k), _mm_set1_ps(cellsPerPixelY_)), zero), rows);
+    const __m128 i = _mm_min_ps(_mm_cvtepi32_ps(_mm_cvttps_epi32(gx)), lastColumn);
+    const __m128 j = _mm_min_ps(_mm_cvtepi32_ps(_mm_cvttps_epi32(gy)), lastRow);
+    alignas(16) float takeX[4], takeY[4];
+    alignas(16) int first[4];
+    _mm_store_ps(takeX, _mm_sub_ps(gx, i));
+    _mm_store_ps(takeY, _mm_sub_ps(gy, j));
+    _mm_store_si128(reinterpret_cast<__m128i*>(first),
+                    _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(j, rowStride), i)));
+    __m128 s[4];
+    for (int lane = 0; lane < 4; ++lane) {
+      const float* row0 = &samples_[static_cast<std::size_t>(first[lane])].x;
+      const float* row1 = row0 + 4 * (columns_ + 1);
+      const __m128 tx = _mm_set1_ps(takeX[lane]), ty = _mm_set1_ps(takeY[lane]);
+      const __m128 kx = _mm_sub_ps(one, tx), ky = _mm_sub_ps(one, ty);
+      const __m128 top = _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(row0), kx),
+                                    _mm_mul_ps(_mm_loadu_ps(row0 + 4), tx));
+      const __m128 bottom = _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(row1), kx),
+                                       _mm_mul_ps(_mm_loadu_ps(row1 + 4), tx));
+      s[lane] = _mm_add_ps(_mm_mul_ps(top, ky), _mm_mul_ps(bottom, ty));
+    }
+    _MM_TRANSPOSE4_PS(s[0], s[1], s[2], s[3]);
+    _mm_storeu_ps(x + k, s[0]);
+    _mm_storeu_ps(y + k, s[1]);
+    _mm_storeu_ps(z + k, s[2]);
+    _mm_storeu_ps(alpha + k, s[3]);
+  }
+#endif
+  for (; k < count; ++k) {
+    const Sample s = at(px[k], py[k]);
+    x[k] = s.direction.x;
+    y[k] = s.direction.y;
+    z[k] = s.direction.z;
+    alpha[k] = s.alpha;
+  }
 }
 
 double WallMapGrid::spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,

@@ -6,6 +6,23 @@
 
 namespace confvis::embree {
 
+void packetPositions(const TileJob& job, const PacketSamples& samples,
+                     std::array<float, kPacketSize>& px, std::array<float, kPacketSize>& py) {
+  if (job.samplesPerPixel == 1) {  // at the pixel centres, as the benchmark's raw loop
+    pixelCentres(samples.x, samples.y, samples.columns, samples.count, job.pixelToWall.x,
+                 job.pixelToWall.y, px, py);
+    return;
+  }
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const int from = std::min(lane, samples.count - 1);
+    const glm::dvec2 p = samplePosition(job, samples.laneX(from), samples.laneY(from),
+                                        samples.sample,
+                                        samples.pixelSeeds[static_cast<std::size_t>(from)]);
+    px[lane] = static_cast<float>(p.x);
+    py[lane] = static_cast<float>(p.y);
+  }
+}
+
 namespace {
 
 using Lanes = std::array<float, kPacketSize>;
@@ -18,41 +35,34 @@ glm::dvec2 lanePosition(const TileJob& job, const PacketSamples& samples, int la
 // Plain rays: the affine directions of the whole packet at once.
 void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
                  PacketHits& hits) {
-  alignas(32) Lanes px{}, py{};
-  if (job.samplesPerPixel == 1) {  // at the pixel centres, as the benchmark's raw loop
-    pixelCentres(samples.x, samples.y, samples.columns, samples.count, job.pixelToWall.x,
-                 job.pixelToWall.y, px, py);
-  } else {
-    for (int lane = 0; lane < kPacketSize; ++lane) {
-      const glm::dvec2 p = lanePosition(job, samples, std::min(lane, samples.count - 1));
-      px[lane] = static_cast<float>(p.x);
-      py[lane] = static_cast<float>(p.y);
-    }
-  }
+  alignas(32) Lanes px, py;
+  packetPositions(job, samples, px, py);
   for (int lane = 0; lane < kPacketSize; ++lane) hits.valid[lane] = lane < samples.count ? -1 : 0;
   RTCRay8& ray = hits.rayhit.ray;
   rays.plainDirections().at(px, py, ray.dir_x, ray.dir_y, ray.dir_z);
 }
 
-// Rays from a table (DirectionTable): the stored directions turned by the camera and normalised,
-// as CameraRays::centreDirection does (glm's order of operations), and, for tables with origins,
-// the stored origins placed as CameraRays::placeOffset does, for the whole packet at once (tables
-// without origins: the rays' origins are set already). Unlit samples hold a zero direction.
-void tablePacket(const CameraRays& rays, const DirectionTable& table,
-                 const PacketSamples& samples, PacketHits& hits) {
+// Rays from a run of a packet's straight rays (a DirectionTable's packet, or one computed for this
+// frame by CameraRays::fastTargets or exactTails): the stored vectors, less the camera's
+// targetShift, turned by the camera and normalised, as CameraRays::centreDirection does (glm's
+// order of operations), and, for runs with origins, the stored origins placed as
+// CameraRays::placeOffset does, for the whole packet at once (runs without origins: the rays'
+// origins are set already). Unlit samples hold a zero vector.
+void runPacket(const CameraRays& rays, const float* run, bool withOrigins, PacketHits& hits) {
   // Copied into locals, which the compiler knows alias nothing (the loop then vectorises).
   alignas(32) Lanes fx, fy, fz;
-  const float* run = table.packet(samples.x, samples.y, samples.sample);  // zeros past the count
   std::memcpy(fx.data(), run, sizeof fx);
   std::memcpy(fy.data(), run + kPacketSize, sizeof fy);
   std::memcpy(fz.data(), run + 2 * kPacketSize, sizeof fz);
   const glm::mat3& m = rays.rotation();
+  const glm::vec3 shift = rays.targetShift();
   RTCRay8& ray = hits.rayhit.ray;
   for (int lane = 0; lane < kPacketSize; ++lane) {
-    const float x = m[0][0] * fx[lane] + m[1][0] * fy[lane] + m[2][0] * fz[lane];
-    const float y = m[0][1] * fx[lane] + m[1][1] * fy[lane] + m[2][1] * fz[lane];
-    const float z = m[0][2] * fx[lane] + m[1][2] * fy[lane] + m[2][2] * fz[lane];
-    // Unlit (F = 0) lanes are not traced; their direction only has to stay finite (a blend, not
+    const float sx = fx[lane] - shift.x, sy = fy[lane] - shift.y, sz = fz[lane] - shift.z;
+    const float x = m[0][0] * sx + m[1][0] * sy + m[2][0] * sz;
+    const float y = m[0][1] * sx + m[1][1] * sy + m[2][1] * sz;
+    const float z = m[0][2] * sx + m[1][2] * sy + m[2][2] * sz;
+    // Unlit (zero) lanes are not traced; their direction only has to stay finite (a blend, not
     // a select, so that the loop vectorises).
     const bool lit = fx[lane] != 0.0f || fy[lane] != 0.0f || fz[lane] != 0.0f;
     const float unlit = lit ? 0.0f : 1.0f;
@@ -62,7 +72,7 @@ void tablePacket(const CameraRays& rays, const DirectionTable& table,
     ray.dir_z[lane] = z * inverseLength;
     hits.valid[lane] = lit ? -1 : 0;
   }
-  if (!table.hasOrigins()) return;
+  if (!withOrigins) return;
   alignas(32) Lanes ox, oy, oz;
   std::memcpy(ox.data(), run + 3 * kPacketSize, sizeof ox);
   std::memcpy(oy.data(), run + 4 * kPacketSize, sizeof oy);
@@ -86,9 +96,15 @@ void setUpStraightPacket(const CameraRays& rays, const TileJob& job, const Packe
     ray.org_z[lane] = origin.z;
   }
   if (job.directions) {
-    tablePacket(rays, *job.directions, samples, hits);
+    runPacket(rays, job.directions->packet(samples.x, samples.y, samples.sample), false, hits);
   } else if (rays.plain()) {
     plainPacket(rays, job, samples, hits);
+  } else if (!rays.centreEyeConformal()) {  // fast stereo rays: towards W(p), per packet
+    alignas(32) Lanes px, py;
+    alignas(32) std::array<float, 3 * kPacketSize> run;
+    packetPositions(job, samples, px, py);
+    rays.fastTargets(px.data(), py.data(), samples.count, run.data());
+    runPacket(rays, run.data(), false, hits);
   } else {  // a map lookup per sample
     hits.valid.fill(0);
     for (int lane = 0; lane < samples.count; ++lane) {
@@ -100,23 +116,40 @@ void setUpStraightPacket(const CameraRays& rays, const TileJob& job, const Packe
   }
 }
 
-// Exact stereo rays: the packet's paths; where every lit one is a straight tail (its bent part
-// lies where no scene is, CameraRays::setEmptyRadius), they are written into hits as straight
-// rays and true is returned, so that they trace as plain rays do.
+// Exact stereo rays: where every lit curve of the packet bends inside the empty ball
+// (CameraRays::setEmptyRadius), its tails are written into hits as straight rays and true is
+// returned, so that they trace as plain rays do; else the packet's paths (tails where a lane's
+// curve bends inside the ball, whole curves elsewhere).
 bool setUpPaths(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
                 std::array<RayPath, kPacketSize>& paths, PacketHits& hits) {
   // A table of the tails, where every curve of the packet bends inside the empty ball.
   if (job.directions && job.directions->hasOrigins() &&
       job.directions->reach(samples.x, samples.y, samples.sample) < rays.emptyRadius()) {
-    tablePacket(rays, *job.directions, samples, hits);
+    runPacket(rays, job.directions->packet(samples.x, samples.y, samples.sample), true, hits);
+    return true;
+  }
+  alignas(32) Lanes px, py, reach;
+  alignas(32) std::array<float, 6 * kPacketSize> run;
+  packetPositions(job, samples, px, py);
+  if (rays.exactTails(px.data(), py.data(), samples.count, run.data(), reach.data()) <
+      rays.emptyRadius()) {
+    runPacket(rays, run.data(), true, hits);
     return true;
   }
   bool straight = true;
   for (int lane = 0; lane < samples.count; ++lane) {
-    const glm::dvec2 p = lanePosition(job, samples, lane);
     RayPath& path = paths[static_cast<std::size_t>(lane)];
-    rays.make(p.x, p.y, path);
-    straight = straight && (!path.lit || path.vertexCount == 1);
+    path.vertexCount = 1;
+    path.lit = reach[lane] > 0.0f;
+    if (!path.lit) continue;
+    if (reach[lane] < rays.emptyRadius()) {  // the tail alone, as the straight packets trace it
+      const auto at = [&](int component) { return run[component * kPacketSize + lane]; };
+      path.vertices[0] = rays.placeOffset({at(3), at(4), at(5)});
+      path.tail = rays.centreDirection({at(0), at(1), at(2)});
+    } else {
+      rays.curvedPath(px[lane], py[lane], path);
+    }
+    straight = straight && path.vertexCount == 1;
   }
   if (!straight) return false;
   hits.valid.fill(0);

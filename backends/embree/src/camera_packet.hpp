@@ -45,6 +45,12 @@ inline PacketSamples blockAt(int x, int y, int x1, int y1) {
   return samples;
 }
 
+// The wall-pixel positions of the packet's samples, in float (lanes from samples.count on repeat
+// the last sample): the pixel centres at 1 spp (pixelCentres), else samplePosition with the
+// lanes' pixelSeeds. The renderer and its direction tables sample at these.
+void packetPositions(const TileJob& job, const PacketSamples& samples,
+                     std::array<float, kPacketSize>& px, std::array<float, kPacketSize>& py);
+
 // Fills `hits` for the packet; returns the number of camera rays cast (see traceStraight).
 std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays,
                                 const TileJob& job, const PacketSamples& samples,

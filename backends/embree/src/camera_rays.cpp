@@ -103,7 +103,28 @@ CameraRays::CameraRays(const WallView& view, const OverrideRays& rays,
   if (view.wall) {
     pixelsPerMetreX_ = view.wall->width / (view.right - view.left);
     pixelsPerMetreY_ = view.wall->height / (view.top - view.bottom);
+    packet_.width = static_cast<float>(view.wall->width);
+    packet_.height = static_cast<float>(view.wall->height);
+    const Wall lit = view.wall->litRectangle();  // the view's pixels span the lit rectangle
+    packet_.corner = glm::vec3(lit.upperLeft - reference);
+    packet_.across = glm::vec3((lit.lowerRight - lit.lowerLeft) / static_cast<double>(view.wall->width));
+    packet_.down = glm::vec3((lit.lowerLeft - lit.upperLeft) / static_cast<double>(view.wall->height));
   }
+  packet_.right = glm::vec3(wallRight_);
+  packet_.up = glm::vec3(wallUp_);
+  packet_.normal = glm::vec3(wallNormal_);
+  packet_.cRight = static_cast<float>(cRight_);
+  packet_.cUp = static_cast<float>(cUp_);
+  packet_.cNormal = static_cast<float>(cNormal_);
+  packet_.nearDistance = static_cast<float>(view.nearDistance);
+  packet_.left = static_cast<float>(view.left);
+  packet_.top = static_cast<float>(view.top);
+  packet_.pixelsPerMetreX = static_cast<float>(pixelsPerMetreX_);
+  packet_.pixelsPerMetreY = static_cast<float>(pixelsPerMetreY_);
+  packet_.base = glm::vec3(directionBase_);
+  packet_.stepX = glm::vec3(directionStepX_);
+  packet_.stepY = glm::vec3(directionStepY_);
+  packet_.eye = glm::vec3(view.eye_position - reference);
 }
 
 CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
@@ -119,6 +140,7 @@ CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
   stereoRays_ = stereoRays;
   curvedSegments_ = curvedSegments;
   eyeAtReference_ = glm::length(view.eye_position - reference_) < kCentreEyeTolerance;
+  if (!eyeAtReference_ && stereoRays == StereoRays::Fast) targetShift_ = packet_.eye;
 }
 
 glm::vec3 CameraRays::place(const glm::dvec3& p) const {
@@ -133,28 +155,12 @@ bool CameraRays::straightDirection(double px, double py, glm::vec3& direction) c
     direction = plain_.at(fx, fy);
     return true;
   }
-  if (!eyeAtReference_) {
-    glm::vec3 physical;
-    if (!fastDirection(px, py, physical)) return false;
-    direction = centreDirection(physical);
-    return true;
-  }
+  if (!eyeAtReference_)
+    throw Error(ErrorCode::Internal, "straightDirection: stereo eyes use their packet rays");
   glm::dvec3 wallPoint;
   const WallMapGrid::Sample pixel = mapSample(px, py, wallPoint);
   if (!(pixel.alpha >= 0.5f)) return false;
   direction = centreDirection(pixel.direction);
-  return true;
-}
-
-bool CameraRays::fastDirection(double px, double py, glm::vec3& physicalDirection) const {
-  glm::dvec3 wallPoint;
-  const WallMapGrid::Sample pixel = mapSample(px, py, wallPoint);
-  if (!(pixel.alpha >= 0.5f)) return false;
-  // From the eye towards W(p), p on the wall.
-  const glm::dvec3 eye = view_.eye_position;
-  const glm::dvec3 target = reference_ + glm::length(wallPoint - reference_) *
-                                             glm::normalize(glm::dvec3(pixel.direction));  // W(p)
-  physicalDirection = glm::vec3(glm::normalize(target - eye));
   return true;
 }
 
@@ -164,7 +170,7 @@ WallMapGrid::Sample CameraRays::mapSample(double px, double py, glm::dvec3& wall
     wallPoint = view_.eye_position + toWall;
     return grid_->at(static_cast<float>(px), static_cast<float>(py));
   }
-  // Where the override's ray meets the wall's plane (gridDirection's plane), in wall pixels.
+  // Where the override's ray meets the wall's plane (mapDirections' plane), in wall pixels.
   const double towardWall = glm::dot(toWall, wallNormal_);
   const double t = towardWall < 0.0 ? -view_.nearDistance / towardWall : -1.0;
   wallPoint = view_.eye_position + (t > 0.0 ? t : 1.0) * toWall;
@@ -180,85 +186,15 @@ WallMapGrid::Sample CameraRays::mapSample(double px, double py, glm::dvec3& wall
   return {glm::vec3(exact.direction), exact.lit ? 1.0f : 0.0f};
 }
 
-bool CameraRays::gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const {
-  const double towardWall = glm::dot(fromC, wallNormal_);
-  if (!(towardWall < 0.0)) return false;
-  const double t = (-view_.nearDistance - cNormal_) / towardWall;
-  if (!(t > 0.0)) return false;
-  // Where c + t fromC meets the wall, relative to the eye, in wall pixels.
-  const double px = (cRight_ + t * glm::dot(fromC, wallRight_) - view_.left) * pixelsPerMetreX_;
-  const double py = (view_.top - (cUp_ + t * glm::dot(fromC, wallUp_))) * pixelsPerMetreY_;
-  const Wall& wall = *view_.wall;
-  if (!(px >= 0.0 && py >= 0.0 && px <= wall.width && py <= wall.height)) return false;
-  direction = glm::normalize(
-      glm::dvec3(grid_->at(static_cast<float>(px), static_cast<float>(py)).direction));
-  return true;
-}
-
-float CameraRays::tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& offset) const {
-  constexpr float kUnbounded = std::numeric_limits<float>::infinity();
-  const glm::dvec3 a = view_.eye_position - reference_;
-  const double along = glm::dot(a, u);
-  const glm::dvec3 perpendicular = a - along * u;
-  const double h = glm::length(perpendicular);
-  // The angle between u and dir(e - c), atan2(h, along), at most kAsymptoteAngle: a line through
-  // c (curvedRay).
-  static const double tanAsymptote = std::tan(kAsymptoteAngle);
-  static const double sinAsymptote = std::sin(kAsymptoteAngle);
-  if (!(h > along * tanAsymptote)) return kUnbounded;
-  // The curve's vertices lie between |e - c| and h / sin(kAsymptoteAngle) from c (curvedRay).
-  const double lastDistance = h / sinAsymptote;
-  const double reach = std::max(glm::length(a), lastDistance);
-  const glm::dvec3 last = perpendicular + (h / tanAsymptote) * u;  // relative to c
-  // Where the ray from c misses this wall (near its edges), the cube map itself (the grid
-  // reproduces it to ~1e-5 rad).
-  const auto mapDirection = [this](const glm::dvec3& fromC) {
-    glm::dvec3 mapped;
-    if (!gridDirection(fromC, mapped)) mapped = glm::normalize(warp_->direction(fromC));
-    return mapped;
-  };
-  const glm::dvec3 lastDirection = mapDirection(last), tailDirection = mapDirection(u);
-  offset = glm::vec3(lastDistance * lastDirection);  // |last| = h / sin(kAsymptoteAngle)
-  direction = glm::vec3(tailDirection);
-  // Rounded up: the float never claims a smaller ball than the curve needs.
-  return std::nextafter(static_cast<float>(reach), kUnbounded);
-}
-
-bool CameraRays::tailRay(double px, double py, glm::vec3& direction, glm::vec3& offset,
-                         float& reach) const {
-  glm::dvec3 wallPoint;
-  if (!(mapSample(px, py, wallPoint).alpha >= 0.5f)) return false;
-  // eye + toWall lies on the wall's plane (WallView::rayDirection, affine in px, py; an
-  // override's ray points the same way)
-  const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
-  reach = tail(glm::normalize(toWall), direction, offset);
-  return true;
-}
-
 double CameraRays::curvedReach() const {
   return glm::length(view_.eye_position - reference_) / std::sin(kAsymptoteAngle);
 }
 
-void CameraRays::make(double px, double py, RayPath& path) const {
-  path.vertexCount = 1;
-  path.vertices[0] = placedEye_;
-  if (straight()) {
-    path.lit = straightDirection(px, py, path.tail);
-    return;
-  }
-  glm::vec3 direction, offset;
-  float reach = 0.0f;
-  path.lit = tailRay(px, py, direction, offset, reach);
-  if (!path.lit) return;
-  // The whole bent part lies in the empty ball: the tail alone (as the table packets trace it).
-  if (reach < emptyRadius_) {
-    path.vertices[0] = placeOffset(offset);
-    path.tail = centreDirection(direction);
-    return;
-  }
+void CameraRays::curvedPath(double px, double py, RayPath& path) const {
   const glm::dvec3 toWall = directionBase_ + px * directionStepX_ + py * directionStepY_;
   std::array<glm::dvec3, kMaxCurvedSegments + 2> vertices;
   glm::dvec3 tailDirection;
+  path.lit = true;
   path.vertexCount = curvedRay(*warp_, view_.eye_position, glm::normalize(toWall), curvedSegments_,
                                vertices.data(), tailDirection, emptyRadius_);
   for (int i = 0; i < path.vertexCount; ++i) path.vertices[i] = place(vertices[i]);

@@ -19,6 +19,8 @@
 namespace confvis::embree {
 
 inline constexpr int kMaxCurvedSegments = 32;
+// Camera samples traced together (one rtcIntersect8 packet).
+inline constexpr int kPacketSize = 8;
 
 // The angle (seen from c) at which the curved ray hands over to its straight tail along F(u).
 // The curve's distance from its asymptote there is about h * angle * |F''| / 2, with h = |e - c|
@@ -61,8 +63,6 @@ class CameraRays {
              const WallMapGrid& grid, StereoRays stereoRays, int curvedSegments,
              const ViewOverride* custom = nullptr);
 
-  // The path through pixel-space point (px, py) of the wall (see WallView::rayDirection).
-  void make(double px, double py, RayPath& path) const;
   // Exact stereo rays: no scene lies within `radius` of the warp's centre (clearance.hpp); the
   // curves' segments inside that ball are not traced.
   void setEmptyRadius(double radius) { emptyRadius_ = radius; }
@@ -71,15 +71,29 @@ class CameraRays {
 
   double emptyRadius() const { return emptyRadius_; }
 
-  // Fast stereo rays: the unit direction from the eye towards W(p), in the physical frame
-  // (before the camera; straightDirection turns it with centreDirection); false where unlit.
-  bool fastDirection(double px, double py, glm::vec3& physicalDirection) const;
-  // Exact stereo rays: the straight tail of the bent ray through (px, py) in the physical frame:
-  // its start relative to the warp's centre and its unit direction F(u), with `reach`, the
-  // farthest from c the curve bends (the eye's distance included): where the scene keeps beyond
-  // it (setEmptyRadius), the tail alone is traced (placed with placeOffset and
-  // centreDirection). Infinite reach: the curve needs curvedRay. False where unlit.
-  bool tailRay(double px, double py, glm::vec3& direction, glm::vec3& offset, float& reach) const;
+  // Per packet, in float, structure of arrays in a DirectionTable packet's layout, for `count`
+  // (1..kPacketSize) samples at wall-pixel positions (px, py) (lanes from `count` on repeat a
+  // valid position and are written as unlit). The per-sample rays and the tables both come from
+  // these, so a table holds exactly what a frame without one computes. Unlit: zeros.
+  //
+  // Fast stereo rays: W(p) relative to the warp's centre, p the sample's wall point, at
+  // [0, 3 kPacketSize): independent of the eye, so one table serves every head position (the
+  // ray is from the eye towards W(p); packets turn it with targetShift()).
+  void fastTargets(const float* px, const float* py, int count, float* run) const;
+  // Exact stereo rays: the straight tail of the bent ray, its direction F(u) at [0, 3 kPacketSize)
+  // and its start W(last vertex) relative to the warp's centre at [3, 6 kPacketSize), both from
+  // the wall's grid (where the ray from c along u, or the last vertex, misses the wall: the cube
+  // map), and per lane `reach`, the farthest from c the curve bends (the eye's distance
+  // included; 0 where unlit, infinite where the ray lies on a line through c and needs
+  // curvedPath). Where the scene keeps beyond a lane's reach (setEmptyRadius), the tail alone is
+  // traced. Returns the largest reach of the lit lanes.
+  float exactTails(const float* px, const float* py, int count, float* run, float* reach) const;
+  // The whole bent path of the sample at (px, py) (curvedRay, the segments inside the empty ball
+  // left out), placed by the camera; lit.
+  void curvedPath(double px, double py, RayPath& path) const;
+  // What a packet subtracts from a run's vectors before turning them (fast stereo: the eye
+  // relative to c, as runs hold W(p); others: zero).
+  const glm::vec3& targetShift() const { return targetShift_; }
   // A point given relative to the warp's centre, placed by the camera (in float, as the table
   // packets do: camera position + rotation x offset).
   glm::vec3 placeOffset(const glm::vec3& offset) const { return placedCentre_ + rotationF_ * offset; }
@@ -89,7 +103,8 @@ class CameraRays {
   // eye and fast stereo rays (exact stereo rays bend).
   bool straight() const { return !warp_ || eyeAtReference_ || stereoRays_ == StereoRays::Fast; }
   const glm::vec3& origin() const { return placedEye_; }
-  // Straight cameras: the unit direction through (px, py); false where the sample is unlit.
+  // Plain and conformal centre-eye cameras: the unit direction through (px, py); false where the
+  // sample is unlit (fast stereo rays: fastTargets).
   bool straightDirection(double px, double py, glm::vec3& direction) const;
   bool plain() const { return !warp_; }
   // Plain cameras: the direction through (px, py) is affine in the position (evaluated in float).
@@ -110,15 +125,17 @@ class CameraRays {
   CameraRays(const WallView& view, const OverrideRays& rays, const VirtualCamera& camera,
              const glm::dvec3& reference);
   glm::vec3 place(const glm::dvec3& physicalPoint) const;
-  // F(dir(fromC)) from this wall's map grid where the ray from c along fromC meets the wall
-  // (bilinear over samples half a map texel apart: within ~1e-5 rad of the cube map's lookup,
-  // at a fraction of its cost); false where it meets the wall's plane outside the wall.
-  bool gridDirection(const glm::dvec3& fromC, glm::dvec3& direction) const;
-  // tailRay's tail for the unit physical direction u: its start W(last vertex) relative to c and
-  // direction F(u), both looked up in the grid (curvedRay's vertex and tail up to the grid's
-  // accuracy), in the cube map where the ray from c misses the wall. Returns the reach, infinite
-  // where the ray lies on a line through c (curvedRay).
-  float tail(const glm::dvec3& u, glm::vec3& direction, glm::vec3& offset) const;
+  // F(dir(fromC)) for kPacketSize vectors fromC (relative to c, in float), not normalised:
+  // bilinear from this wall's map grid where the ray from c meets the wall (samples half a map
+  // texel apart: within ~1e-5 rad of the cube map's lookup, at a fraction of its cost), from the
+  // cube map where it meets the wall's plane outside the wall (lanes from `count` on: finite).
+  void mapDirections(const float* x, const float* y, const float* z, int count, float* fx,
+                     float* fy, float* fz) const;
+  // mapSample for kPacketSize samples: F and alpha at each sample's wall point, and (where
+  // `wallX` is given) the wall point relative to c. Lanes from `count` on get alpha 0.
+  void pixelSamples(const float* px, const float* py, int count, float* fx, float* fy, float* fz,
+                    float* alpha, float* wallX = nullptr, float* wallY = nullptr,
+                    float* wallZ = nullptr) const;
   glm::vec3 turn(const glm::dvec3& physicalDirection) const;
   // The map at the wall point that the ray through (px, py) meets (`wallPoint`, physical
   // frame): the grid's sample of that wall pixel; for an override's ray that meets the wall's
@@ -136,10 +153,23 @@ class CameraRays {
   glm::mat3 rotationF_;
   // The same affine direction, turned by the camera, in float: plain rays need nothing else.
   AffineDirections plain_;
-  // gridDirection's wall plane, from the view matrix (WallView::rayDirection): the wall's right,
+  // mapDirections' wall plane, from the view matrix (WallView::rayDirection): the wall's right,
   // up and normal, the eye-to-c offset along each, and wall pixels per metre across and down.
   glm::dvec3 wallRight_, wallUp_, wallNormal_;
   double cRight_ = 0.0, cUp_ = 0.0, cNormal_ = 0.0, pixelsPerMetreX_ = 0.0, pixelsPerMetreY_ = 0.0;
+  // The same in float for the per-packet lookups, with the rays' affine direction towards the
+  // wall (unturned) and the eye relative to c.
+  struct PacketGeometry {
+    glm::vec3 right{0.0f}, up{0.0f}, normal{0.0f};
+    float cRight = 0, cUp = 0, cNormal = 0, nearDistance = 0, left = 0, top = 0;
+    float pixelsPerMetreX = 0, pixelsPerMetreY = 0, width = 0, height = 0;
+    glm::vec3 base{0.0f}, stepX{0.0f}, stepY{0.0f};
+    glm::vec3 eye{0.0f};  // e - c
+    // The wall point of pixel (px, py) relative to c: corner + px across + py down, from the
+    // wall alone, so that every eye computes the same W(p) (fast rays' shared table).
+    glm::vec3 corner{0.0f}, across{0.0f}, down{0.0f};
+  } packet_;
+  glm::vec3 targetShift_{0.0f};
   const ConformalWarp* warp_ = nullptr;
   const WallMapGrid* grid_ = nullptr;
   StereoRays stereoRays_ = StereoRays::Exact;

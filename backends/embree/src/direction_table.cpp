@@ -7,14 +7,19 @@ namespace confvis::embree {
 DirectionTable::DirectionTable(const WallMapGrid& grid, const TileJob& job)
     : DirectionTable(
           job,
-          [&grid](double px, double py, glm::vec3& direction, glm::vec3&, float&) {
-            const WallMapGrid::Sample s = grid.at(static_cast<float>(px), static_cast<float>(py));
-            direction = s.direction;
-            return s.alpha >= 0.5f;
+          [&grid](const float* px, const float* py, int count, float* run) {
+            for (int lane = 0; lane < count; ++lane) {
+              const WallMapGrid::Sample s = grid.at(px[lane], py[lane]);
+              if (!(s.alpha >= 0.5f)) continue;  // unlit: stays zero
+              run[lane] = s.direction.x;
+              run[kPacketSize + lane] = s.direction.y;
+              run[2 * kPacketSize + lane] = s.direction.z;
+            }
+            return 0.0f;
           },
           false) {}
 
-DirectionTable::DirectionTable(const TileJob& job, const Sampler& sampler, bool withOrigins)
+DirectionTable::DirectionTable(const TileJob& job, const PacketSampler& sampler, bool withOrigins)
     : width_(job.width),
       height_(job.height),
       samplesPerPixel_(job.samplesPerPixel),
@@ -39,29 +44,26 @@ DirectionTable::DirectionTable(const TileJob& job, const Sampler& sampler, bool 
   fill(job, sampler);
 }
 
-void DirectionTable::fill(const TileJob& job, const Sampler& sampler) {
-  // Rows of tiles in parallel: a packet's lanes (and so its reach) belong to one task.
-  const int tileRows = (job.height + tileSize_ - 1) / tileSize_;
-  tbb::parallel_for(0, tileRows, [&](int tileRow) {
-    const int yEnd = std::min(job.height, (tileRow + 1) * tileSize_);
-    for (int y = tileRow * tileSize_; y < yEnd; ++y)
-      for (int x = 0; x < job.width; ++x)
-        for (int sample = 0; sample < job.samplesPerPixel; ++sample) {
-          const glm::dvec2 p = samplePosition(job, x, y, sample);
-          glm::vec3 direction(0.0f), origin(0.0f);
-          float reach = 0.0f;
-          if (!sampler(p.x, p.y, direction, origin, reach)) continue;  // unlit: stays zero
+void DirectionTable::fill(const TileJob& job, const PacketSampler& sampler) {
+  // Tiles in parallel, each packet from the sampler straight into its run.
+  const int tiles = static_cast<int>(tileFirstPacket_.size());
+  tbb::parallel_for(0, tiles, [&](int tile) {
+    const int x0 = (tile % tilesAcross_) * tileSize_, y0 = (tile / tilesAcross_) * tileSize_;
+    const int x1 = std::min(x0 + tileSize_, width_), y1 = std::min(y0 + tileSize_, height_);
+    for (int sample = 0; sample < samplesPerPixel_; ++sample)
+      for (int y = y0; y < y1; y += kBlockRows)
+        for (int x = x0; x < x1; x += kBlockColumns) {
+          PacketSamples samples = blockAt(x, y, x1, y1);
+          samples.sample = sample;
+          for (int lane = 0; lane < samples.count; ++lane)
+            samples.pixelSeeds[static_cast<std::size_t>(lane)] =
+                pixelSeed(job, samples.laneX(lane), samples.laneY(lane));
+          std::array<float, kPacketSize> px, py;
+          packetPositions(job, samples, px, py);
           const std::size_t packet = packetIndex(x, y, sample);
-          float* run = &components_[stride() * packet];
-          const int lane = laneOf(x, y);
-          run[lane] = direction.x;
-          run[kPacketSize + lane] = direction.y;
-          run[2 * kPacketSize + lane] = direction.z;
-          if (!withOrigins_) continue;
-          run[3 * kPacketSize + lane] = origin.x;
-          run[4 * kPacketSize + lane] = origin.y;
-          run[5 * kPacketSize + lane] = origin.z;
-          reach_[packet] = std::max(reach_[packet], reach);
+          const float reach = sampler(px.data(), py.data(), samples.count,
+                                      &components_[stride() * packet]);
+          if (withOrigins_) reach_[packet] = reach;
         }
   });
 }

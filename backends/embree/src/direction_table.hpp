@@ -3,9 +3,10 @@
 // conformal frame does no map lookup at all (only the rotation and translation by the virtual
 // camera, as a plain frame does):
 //   - conformal centre eye: F(dir(p)) read from the WallMapGrid;
-//   - fast stereo rays: the direction from the eye towards W(p) (CameraRays::fastDirection);
+//   - fast stereo rays: W(p) relative to the warp's centre, p the sample's wall point
+//     (CameraRays::fastTargets): the same for every eye position, so a moving head reads it too;
 //   - exact stereo rays: the straight tail of the bent ray, its start relative to the warp's
-//     centre and its direction (CameraRays::tailRay), with each packet's reach: the farthest
+//     centre and its direction (CameraRays::exactTails), with each packet's reach: the farthest
 //     from c any of its curves bends, so that a render whose scene keeps farther than that
 //     (CameraRays::setEmptyRadius) traces the packet as straight rays from the table.
 // Unlit samples hold the zero direction. All in the physical frame, before the camera.
@@ -32,17 +33,19 @@ namespace confvis::embree {
 
 class DirectionTable {
  public:
-  // What one sample at wall-pixel position (px, py) holds: false = unlit (zero direction).
-  // `origin` (tables with origins only) relative to the warp's centre; `reach` (likewise): how
-  // far from c the sample's curve bends (infinity: the sample needs its whole curve traced).
-  using Sampler = std::function<bool(double px, double py, glm::vec3& direction,
-                                     glm::vec3& origin, float& reach)>;
+  // Fills one packet's run (the layout of packet(): 3 or 6 x kPacketSize floats, zeros where
+  // unlit) for `count` samples at wall-pixel positions (px, py) (packetPositions: lanes from
+  // `count` on repeat the last); returns the packet's reach (tables with origins: the farthest
+  // from c any of its curves bends; infinity: a curve must be traced whole).
+  using PacketSampler =
+      std::function<float(const float* px, const float* py, int count, float* run)>;
 
   // Conformal centre eye: F at job.width x job.height pixels x job.samplesPerPixel at
   // samplePosition(job, ...), in tiles of job.tileSize.
   DirectionTable(const WallMapGrid& grid, const TileJob& job);
-  // Any straight rays, one per sample, from `sampler`; `withOrigins`: each its own origin.
-  DirectionTable(const TileJob& job, const Sampler& sampler, bool withOrigins);
+  // Any straight rays, one per sample, packet by packet from `sampler`; `withOrigins`: each its
+  // own origin.
+  DirectionTable(const TileJob& job, const PacketSampler& sampler, bool withOrigins);
 
   // The packet of sample `sample` of the block whose top-left pixel is (x, y) (a tile's corner
   // plus multiples of the block size): the direction's x components at [0, 8), y at [8, 16), z at
@@ -59,7 +62,7 @@ class DirectionTable {
 
  private:
   std::size_t stride() const { return (withOrigins_ ? 6 : 3) * kPacketSize; }
-  void fill(const TileJob& job, const Sampler& sampler);
+  void fill(const TileJob& job, const PacketSampler& sampler);
   // The packet holding sample `sample` of pixel (x, y), and the pixel's lane in it.
   std::size_t packetIndex(int x, int y, int sample) const {
     const int tileX = x / tileSize_, tileY = y / tileSize_;
@@ -72,14 +75,6 @@ class DirectionTable {
     return tileFirstPacket_[tile] +
            static_cast<std::size_t>((sample * blocksDown + (y - y0) / kBlockRows) * blocksAcross +
                                     (x - x0) / kBlockColumns);
-  }
-  int laneOf(int x, int y) const {
-    const int x0 = x - x % tileSize_, y0 = y - y % tileSize_;
-    const PacketSamples block =
-        blockAt(x0 + (x - x0) / kBlockColumns * kBlockColumns,
-                y0 + (y - y0) / kBlockRows * kBlockRows, std::min(x0 + tileSize_, width_),
-                std::min(y0 + tileSize_, height_));
-    return (y - block.y) * block.columns + (x - block.x);
   }
 
   int width_ = 0, height_ = 0, samplesPerPixel_ = 1, tileSize_ = 1, tilesAcross_ = 1;

@@ -64,15 +64,23 @@ struct EmbreeBackend::Impl {
                                          double& buildSeconds) {
     const bool centre = rays.centreEyeConformal();
     const bool withOrigins = !centre && stereoRays == StereoRays::Exact;
+    // Fast stereo rays' targets W(p) do not depend on the eye; one sample a pixel sits at its
+    // centre whatever the image's seed, so both eyes share that table (and a moving head reads
+    // it).
+    const bool anyEye = !centre && stereoRays == StereoRays::Fast;
     std::uint64_t key = gridKey;
-    for (int value : {job.width, job.height, job.samplesPerPixel, static_cast<int>(job.seed),
+    const int seed = anyEye && job.samplesPerPixel == 1 ? -1 : static_cast<int>(job.seed);
+    for (int value : {job.width, job.height, job.samplesPerPixel, seed,
                       centre ? 0 : 1 + static_cast<int>(stereoRays)})
       key = mixHash(key, static_cast<double>(value));
-    if (!centre)  // the eye's place relative to the warp's centre decides the rays
+    if (!centre && !anyEye)  // the eye's place relative to the warp's centre decides the rays
       for (int i = 0; i < 3; ++i) key = mixHash(key, view.eye_position[i] - reference[i]);
     TableEntry& entry = tables[key];
+    // Renders, not lookups, count: the second image of a frame that shares a table (both eyes)
+    // must not build it on the first frame.
+    if (entry.lastUsed != renders) ++entry.renders;
     entry.lastUsed = renders;
-    if (entry.table || ++entry.renders < 2) return entry.table.get();
+    if (entry.table || entry.renders < 2) return entry.table.get();
     const std::size_t bytes = static_cast<std::size_t>(job.width) *
                               static_cast<std::size_t>(job.height) *
                               static_cast<std::size_t>(job.samplesPerPixel) *
@@ -88,15 +96,17 @@ struct EmbreeBackend::Impl {
     } else if (withOrigins) {
       entry.table = std::make_unique<embree::DirectionTable>(
           job,
-          [&rays](double px, double py, glm::vec3& direction, glm::vec3& origin, float& reach) {
-            return rays.tailRay(px, py, direction, origin, reach);
+          [&rays](const float* px, const float* py, int count, float* run) {
+            std::array<float, embree::kPacketSize> reach;
+            return rays.exactTails(px, py, count, run, reach.data());
           },
           true);
     } else {
       entry.table = std::make_unique<embree::DirectionTable>(
           job,
-          [&rays](double px, double py, glm::vec3& direction, glm::vec3&, float&) {
-            return rays.fastDirection(px, py, direction);
+          [&rays](const float* px, const float* py, int count, float* run) {
+            rays.fastTargets(px, py, count, run);
+            return 0.0f;
           },
           false);
     }

@@ -13,8 +13,6 @@
 
 namespace confvis::embree {
 
-inline constexpr int kPacketSize = 8;
-
 // One packet of camera samples. The camera fills the rays; tracing fills the hits. Per lane,
 // rayhit holds the ray (segment) that ended the path: unit direction, tfar at the hit, and
 // Embree's hit record, so shading reads Embree's structure-of-arrays layout as it is.

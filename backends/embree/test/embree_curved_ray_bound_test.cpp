@@ -14,22 +14,6 @@
 namespace confvis::embree {
 namespace {
 
-// The point where a polyline (then its tail) first reaches distance rho from c = 0.
-glm::dvec3 atDistance(const std::vector<glm::dvec3>& vertices, const glm::dvec3& tail, double rho) {
-  const auto crossing = [&](const glm::dvec3& from, const glm::dvec3& unit, double maxT) {
-    // |from + t unit| = rho, the larger root (leaving the sphere).
-    const double b = glm::dot(from, unit), c = glm::dot(from, from) - rho * rho;
-    const double t = -b + std::sqrt(std::max(0.0, b * b - c));
-    return t <= maxT ? std::optional<glm::dvec3>(from + t * unit) : std::nullopt;
-  };
-  for (std::size_t i = 0; i + 1 < vertices.size(); ++i) {
-    if (glm::length(vertices[i + 1]) < rho) continue;
-    const glm::dvec3 step = vertices[i + 1] - vertices[i];
-    if (const auto p = crossing(vertices[i], step / glm::length(step), glm::length(step))) return *p;
-  }
-  return *crossing(vertices.back(), tail, 1e30);
-}
-
 // The exact curve W(foot + s u) densely: 5,000 points geometric in the angle at c from the eye's
 // down to 1e-7 rad, then its tail (the map's F(u)).
 std::vector<glm::dvec3> denseCurve(const ConformalWarp& warp, const glm::dvec3& eye,
@@ -75,7 +59,8 @@ double worstPixelsOffTheExactCurve(int segments, double minRho) {
           const double cosine = distance / glm::length(p);
           const double pixelAngle = pitch * cosine * cosine / distance;
           for (double rho = minRho; rho <= 100.0; rho *= 1.25) {
-            const glm::dvec3 a = atDistance(traced, tail, rho), b = atDistance(dense, tail, rho);
+            const glm::dvec3 a = test::curveAtDistance(traced, tail, rho),
+                             b = test::curveAtDistance(dense, tail, rho);
             const double angle = std::acos(std::clamp(glm::dot(a, b) / (rho * rho), -1.0, 1.0));
             worst = std::max(worst, angle / pixelAngle);
           }

@@ -61,9 +61,10 @@ void expectSamePixels(const RenderResult& a, const RenderResult& b) {
   }
 }
 
-// Stereo eyes keep a table of their own straight rays (fast rays: the directions; exact rays:
-// the tails beyond the bend, where the checker-sphere's 10 m keep beyond every curve's reach):
-// the same pixels as the per-sample rays, and a moved head gets no stale table.
+// Stereo eyes keep a table of their straight rays (fast rays: the targets W(p), shared by every
+// head; exact rays: the tails beyond the bend, where the checker-sphere's 10 m keep beyond every
+// curve's reach, per head): the same pixels as the per-sample rays, and a moved head gets no
+// stale table.
 TEST(EmbreeDirectionTable, StereoEyesReadTheirOwnTableFromTheSecondRender) {
   const DisplayConfig config = test::shippedConfig("cave5");
   const RetargetMap dilation = ceilinglessDilationMap(1.5, 128);
@@ -79,11 +80,18 @@ TEST(EmbreeDirectionTable, StereoEyesReadTheirOwnTableFromTheSecondRender) {
     for (const WallImage& image : second.images) samples += image.image.pixelCount();
     EXPECT_EQ(tableSamples(second), samples);
     expectSamePixels(first, second);
-    // The head 2 cm to the right: the eyes' rays change, their tables must not be reused.
+    // The head 2 cm to the right: the eyes' rays change. Exact tails belong to a head and must
+    // not be reused; fast rays' targets W(p) serve every head (and both eyes) and are read at
+    // once, drawing what a backend without the table draws per sample.
     stereo.head.position += glm::dvec3(0.02, 0.0, 0.0);
     const RenderResult moved = backend.render(config, &dilation, stereo);
-    EXPECT_EQ(tableSamples(moved), 0u);
+    EXPECT_EQ(tableSamples(moved), rays == StereoRays::Fast ? samples : 0u);
     EXPECT_NE(moved.images[0].image.pixels, second.images[0].image.pixels);
+    EmbreeBackend fresh;
+    fresh.setScene(builtinScene("checker-sphere"));
+    const RenderResult perSample = fresh.render(config, &dilation, stereo);
+    EXPECT_EQ(tableSamples(perSample), 0u);
+    expectSamePixels(moved, perSample);
     expectSamePixels(moved, backend.render(config, &dilation, stereo));  // its own table
   }
 }

@@ -3,11 +3,13 @@
 // per-pixel tolerance and a bad-pixel budget, and simple analytic scenes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "confvis/backends/embree/embree_backend.hpp"
 #include "confvis/backends/render_plan.hpp"
@@ -107,6 +109,24 @@ inline glm::dvec2 coverageCentroid(const ImageRGBA& image, std::size_t* count = 
       }
   if (count) *count = n;
   return n ? sum / static_cast<double>(n) : glm::dvec2(-1.0);
+}
+
+// The point where a polyline (then its straight tail from the last vertex) first reaches
+// distance rho from the origin, leaving the ball (the first vertex inside it).
+inline glm::dvec3 curveAtDistance(const std::vector<glm::dvec3>& vertices, const glm::dvec3& tail,
+                                  double rho) {
+  const auto crossing = [&](const glm::dvec3& from, const glm::dvec3& unit, double maxT) {
+    // |from + t unit| = rho, the larger root (leaving the sphere).
+    const double b = glm::dot(from, unit), c = glm::dot(from, from) - rho * rho;
+    const double t = -b + std::sqrt(std::max(0.0, b * b - c));
+    return t <= maxT ? std::optional<glm::dvec3>(from + t * unit) : std::nullopt;
+  };
+  for (std::size_t i = 0; i + 1 < vertices.size(); ++i) {
+    if (glm::length(vertices[i + 1]) < rho) continue;
+    const glm::dvec3 step = vertices[i + 1] - vertices[i];
+    if (const auto p = crossing(vertices[i], step / glm::length(step), glm::length(step))) return *p;
+  }
+  return *crossing(vertices.back(), tail, 1e30);
 }
 
 // One backend holding the checker-sphere, shared by the tests (the BVH is built once).

@@ -28,6 +28,11 @@ class WallMapGrid {
   };
   // At wall-pixel position (px, py), py = 0 at the top edge, px in [0, width], py in [0, height].
   Sample at(float px, float py) const;
+  // at() for `count` positions at once, as structure of arrays (F's x, y, z and alpha per
+  // position): the same floats as at() (its operations in its order), the blend done four
+  // components at a time. For the stereo rays' per-packet lookups.
+  void at(int count, const float* px, const float* py, float* x, float* y, float* z,
+          float* alpha) const;
 
   // Spacing in wall pixels: half a map texel as seen from c where the wall is closest, but no
   // finer than one output pixel (1 / outputScale wall pixels).

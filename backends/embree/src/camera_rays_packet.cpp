@@ -1,0 +1,151 @@
+// CameraRays' per-packet stereo rays (fast targets, exact tails): float, structure of arrays, in
+// loops the compiler vectorises; the grid lookups four components at a time.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "camera_rays.hpp"
+
+namespace confvis::embree {
+
+namespace {
+
+using Lanes = std::array<float, kPacketSize>;
+
+}  // namespace
+
+void CameraRays::pixelSamples(const float* px, const float* py, int count, float* fx, float* fy,
+                              float* fz, float* alpha, float* wallX, float* wallY,
+                              float* wallZ) const {
+  if (custom_) {  // an override's ray meets the wall elsewhere than its pixel: mapSample's rule
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      glm::dvec3 wallPoint;
+      const WallMapGrid::Sample s = mapSample(px[lane], py[lane], wallPoint);
+      fx[lane] = s.direction.x, fy[lane] = s.direction.y, fz[lane] = s.direction.z;
+      alpha[lane] = lane < count ? s.alpha : 0.0f;
+      if (!wallX) continue;
+      const glm::vec3 w(wallPoint - reference_);
+      wallX[lane] = w.x, wallY[lane] = w.y, wallZ[lane] = w.z;
+    }
+    return;
+  }
+  grid_->at(kPacketSize, px, py, fx, fy, fz, alpha);
+  for (int lane = count; lane < kPacketSize; ++lane) alpha[lane] = 0.0f;
+  if (!wallX) return;
+  const PacketGeometry& g = packet_;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    wallX[lane] = g.corner.x + px[lane] * g.across.x + py[lane] * g.down.x;
+    wallY[lane] = g.corner.y + px[lane] * g.across.y + py[lane] * g.down.y;
+    wallZ[lane] = g.corner.z + px[lane] * g.across.z + py[lane] * g.down.z;
+  }
+}
+
+void CameraRays::mapDirections(const float* x, const float* y, const float* z, int count,
+                               float* fx, float* fy, float* fz) const {
+  const PacketGeometry& g = packet_;
+  alignas(32) Lanes wallPx, wallPy, alpha;
+  alignas(32) std::array<int, kPacketSize> inside;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    // Where c + t fromC meets the wall's plane, relative to the eye, in wall pixels.
+    const float towardWall = x[lane] * g.normal.x + y[lane] * g.normal.y + z[lane] * g.normal.z;
+    const float t = (-g.nearDistance - g.cNormal) / towardWall;
+    const float right = x[lane] * g.right.x + y[lane] * g.right.y + z[lane] * g.right.z;
+    const float up = x[lane] * g.up.x + y[lane] * g.up.y + z[lane] * g.up.z;
+    const float wx = (g.cRight + t * right - g.left) * g.pixelsPerMetreX;
+    const float wy = (g.top - (g.cUp + t * up)) * g.pixelsPerMetreY;
+    const bool in = towardWall < 0.0f && t > 0.0f && wx >= 0.0f && wy >= 0.0f &&
+                    wx <= g.width && wy <= g.height;
+    inside[lane] = in ? 1 : 0;
+    wallPx[lane] = in ? wx : 0.0f;
+    wallPy[lane] = in ? wy : 0.0f;
+  }
+  grid_->at(kPacketSize, wallPx.data(), wallPy.data(), fx, fy, fz, alpha.data());
+  for (int lane = 0; lane < count; ++lane) {
+    if (inside[lane]) continue;  // near the wall's edges only
+    const glm::dvec3 mapped = warp_->direction(glm::dvec3(x[lane], y[lane], z[lane]));
+    fx[lane] = static_cast<float>(mapped.x);
+    fy[lane] = static_cast<float>(mapped.y);
+    fz[lane] = static_cast<float>(mapped.z);
+  }
+}
+
+void CameraRays::fastTargets(const float* px, const float* py, int count, float* run) const {
+  alignas(32) Lanes fx, fy, fz, alpha, wx, wy, wz;
+  pixelSamples(px, py, count, fx.data(), fy.data(), fz.data(), alpha.data(), wx.data(), wy.data(),
+               wz.data());
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    // W(p) = c + |p - c| F / |F|.
+    const float distance = std::sqrt(wx[lane] * wx[lane] + wy[lane] * wy[lane] + wz[lane] * wz[lane]);
+    const float lengthF = std::sqrt(fx[lane] * fx[lane] + fy[lane] * fy[lane] + fz[lane] * fz[lane]);
+    const bool lit = alpha[lane] >= 0.5f && lengthF > 0.0f;
+    const float scale = lit ? distance / lengthF : 0.0f;
+    run[lane] = fx[lane] * scale;
+    run[kPacketSize + lane] = fy[lane] * scale;
+    run[2 * kPacketSize + lane] = fz[lane] * scale;
+  }
+}
+
+float CameraRays::exactTails(const float* px, const float* py, int count, float* run,
+                             float* reach) const {
+  static const float tanAsymptote = static_cast<float>(std::tan(kAsymptoteAngle));
+  static const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
+  constexpr float kUnbounded = std::numeric_limits<float>::infinity();
+  const PacketGeometry& g = packet_;
+  const glm::vec3 a = g.eye;
+  const float eyeDistance = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+  alignas(32) Lanes fx, fy, fz, alpha, ux, uy, uz, lastX, lastY, lastZ, lastDistance;
+  pixelSamples(px, py, count, fx.data(), fy.data(), fz.data(), alpha.data());
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    // u: the physical ray's unit direction (towards the sample's wall point).
+    const float tx = g.base.x + px[lane] * g.stepX.x + py[lane] * g.stepY.x;
+    const float ty = g.base.y + px[lane] * g.stepX.y + py[lane] * g.stepY.y;
+    const float tz = g.base.z + px[lane] * g.stepX.z + py[lane] * g.stepY.z;
+    const float inverseLength = 1.0f / std::sqrt(tx * tx + ty * ty + tz * tz);
+    const float x = tx * inverseLength, y = ty * inverseLength, z = tz * inverseLength;
+    // The eye's offset across the ray (curvedRay's foot relative to c) and its length h.
+    const float along = a.x * x + a.y * y + a.z * z;
+    const float perpX = a.x - along * x, perpY = a.y - along * y, perpZ = a.z - along * z;
+    const float h = std::sqrt(perpX * perpX + perpY * perpY + perpZ * perpZ);
+    // The angle between u and dir(e - c), atan2(h, along), at most kAsymptoteAngle: a line
+    // through c, for curvedPath.
+    const bool onLine = !(h > along * tanAsymptote);
+    // The last vertex, where the angle at c is kAsymptoteAngle: h / sin(angle) from c. The
+    // curve's vertices lie between |e - c| and that from c; the margin covers float rounding
+    // (the clearance query reaches 1 % beyond the widest reach, curvedReach).
+    const float toLast = h / tanAsymptote;
+    lastDistance[lane] = h / sinAsymptote;
+    lastX[lane] = onLine ? x : perpX + toLast * x;
+    lastY[lane] = onLine ? y : perpY + toLast * y;
+    lastZ[lane] = onLine ? z : perpZ + toLast * z;
+    ux[lane] = x, uy[lane] = y, uz[lane] = z;
+    const float laneReach = onLine ? kUnbounded : 1.0001f * std::max(eyeDistance, lastDistance[lane]);
+    reach[lane] = alpha[lane] >= 0.5f ? laneReach : 0.0f;
+  }
+  alignas(32) Lanes tailX, tailY, tailZ;
+  mapDirections(ux.data(), uy.data(), uz.data(), count, tailX.data(), tailY.data(), tailZ.data());
+  mapDirections(lastX.data(), lastY.data(), lastZ.data(), count, fx.data(), fy.data(), fz.data());
+  alignas(32) Lanes tails[6];  // direction F(u) normalised, W(last) relative to c
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const float tailLength =
+        std::sqrt(tailX[lane] * tailX[lane] + tailY[lane] * tailY[lane] + tailZ[lane] * tailZ[lane]);
+    const float lastLength = std::sqrt(fx[lane] * fx[lane] + fy[lane] * fy[lane] + fz[lane] * fz[lane]);
+    const float tailScale = 1.0f / tailLength;
+    const float lastScale = lastDistance[lane] / lastLength;  // W(last) = |last| F
+    tails[0][lane] = tailX[lane] * tailScale;
+    tails[1][lane] = tailY[lane] * tailScale;
+    tails[2][lane] = tailZ[lane] * tailScale;
+    tails[3][lane] = fx[lane] * lastScale;
+    tails[4][lane] = fy[lane] * lastScale;
+    tails[5][lane] = fz[lane] * lastScale;
+  }
+  float packetReach = 0.0f;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const bool lit = reach[lane] > 0.0f;  // unlit lanes: zeros (lit ones have a unit direction)
+    for (int component = 0; component < 6; ++component)
+      run[component * kPacketSize + lane] = lit ? tails[component][lane] : 0.0f;
+    packetReach = std::max(packetReach, reach[lane]);
+  }
+  return packetReach;
+}
+
+}  // namespace confvis::embree
