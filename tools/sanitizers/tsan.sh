@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ThreadSanitizer over the threaded parts (the last stage of tools/sanitize.sh, so of CI):
+# ThreadSanitizer over the threaded parts (the last stage of tools/sanitize.sh with CONFVIS_TSAN=1):
 # builds confvis_threaded_tests (the threaded suites' files only, tests/CMakeLists.txt) and the CLI
 # they run with clang-14 -fsanitize=thread into ./build-tsan and runs the suites that start threads:
 #   the map follower and its background bake (MapFollower, BackgroundBake, BackgroundPriority),
