@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# ThreadSanitizer over the threaded parts (the last stage of tools/sanitize.sh, so of CI):
-# builds confvis_tests and the CLI it runs with clang-14 -fsanitize=thread into ./build-tsan and
-# runs the suites that start threads:
+# ThreadSanitizer over the threaded parts (the last stage of tools/sanitize.sh with CONFVIS_TSAN=1):
+# builds confvis_threaded_tests (the threaded suites' files only, tests/CMakeLists.txt) and the CLI
+# they run with clang-14 -fsanitize=thread into ./build-tsan and runs the suites that start threads:
 #   the map follower and its background bake (MapFollower, BackgroundBake, BackgroundPriority),
 #   the UDP trackers' receiver threads (UdpTracker, TrackerFactory, RecordedPath),
 #   the bake's parallel cube faces and disk-map stages, the bake cache (Bake*, DisplayMap),
@@ -18,6 +18,6 @@ if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=cc
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_COMPILER=clang++-14 \
   "-DCMAKE_CXX_FLAGS=-O1 -gline-tables-only -fno-omit-frame-pointer -fsanitize=thread" \
   -DCONFVIS_WERROR=OFF "${launcher[@]}" >/dev/null
-cmake --build build-tsan -j"$(nproc)" --target confvis_tests
+cmake --build build-tsan -j"$(nproc)" --target confvis_threaded_tests
 source tools/sanitizers/env.sh
-./build-tsan/confvis_tests --gtest_filter="${filter}"
+./build-tsan/confvis_threaded_tests --gtest_filter="${filter}"

@@ -86,7 +86,8 @@ std::string prepareMtl(const std::filesystem::path& file) {
 std::vector<std::filesystem::path> mtlFiles(const std::filesystem::path& directory,
                                             const std::string& rest) {
   const std::filesystem::path whole = directory / forwardSlashes(rest);
-  if (std::filesystem::is_regular_file(whole)) return {whole};
+  std::error_code unreadable;  // a name too long for the file system is not that file
+  if (std::filesystem::is_regular_file(whole, unreadable)) return {whole};
   std::vector<std::filesystem::path> files;
   std::istringstream words(rest);
   for (std::string w; words >> w;) files.push_back(directory / forwardSlashes(w));
@@ -118,7 +119,8 @@ ObjText prepareObjText(const std::filesystem::path& path) {
     }
   }
   for (const auto& file : libraries) {
-    if (!std::filesystem::is_regular_file(file)) {
+    std::error_code unreadable;  // e.g. a name too long for the file system: not found either
+    if (!std::filesystem::is_regular_file(file, unreadable)) {
       warn(path, "material library '" + file.string() + "' not found; materials keep defaults");
       continue;
     }

@@ -49,7 +49,8 @@ Texture textureFromPixels(const void* pixels, int width, int height, int channel
 }
 
 Texture loadTextureFile(const std::filesystem::path& path) {
-  if (!std::filesystem::is_regular_file(path))
+  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
+  if (!std::filesystem::is_regular_file(path, unreadable))
     throw Error(ErrorCode::FileNotFound, "texture image '" + path.string() + "' does not exist");
   int width = 0, height = 0, channels = 0;
   if (stbi_info(path.c_str(), &width, &height, &channels) && !texturePixelsAllowed(width, height))

@@ -156,6 +156,17 @@ TEST(HostileObj, TrailingCommentsAndColoursOnVertexLinesAreFine) {
   fs::remove_all(dir);
 }
 
+// Found by fuzz_obj_scene: an `mtllib` name longer than the file system allows made
+// is_regular_file throw std::filesystem::filesystem_error (ENAMETOOLONG) out of the loader.
+TEST(HostileObj, OverlongMaterialLibraryNameIsAMissingLibrary) {
+  const fs::path dir = fs::temp_directory_path() / ("confvis_obj_mtllib_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "m.obj") << "mtllib " << std::string(300, 'm') << ".mtl\n"
+                                  "v 0 0 -2\nv 1 0 -2\nv 0 1 -2\nf 1 2 3\n";
+  EXPECT_EQ(loadScene(dir / "m.obj").triangleCount(), 1u);
+  fs::remove_all(dir);
+}
+
 // Saved as UTF-16 by a Windows editor: "contains no triangles".
 TEST(HostileObj, Utf16FileIsRead) {
   const Scene scene = loadScene(hostile("utf16.obj"));
