@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_test_support.hpp"
+#include "projector_sample.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/png_io.hpp"
@@ -19,6 +20,7 @@
 
 namespace fs = std::filesystem;
 using confvis::testing::CliRun;
+using confvis::testing::leftProjectorWeight;
 using confvis::testing::runCli;
 using confvis::testing::scratch;
 
@@ -27,19 +29,13 @@ namespace {
 const std::string kSample =
     (fs::path(CONFVIS_SOURCE_DIR) / "configs/imported/sgct-projectors2.xml").string();
 
-// The left projector spans x in [-2.2, 0.2] over its width, the overlap is x in [-0.2, 0.2].
-double leftWeight(int column, int width) {
-  const double x = -2.2 + (column + 0.5) * 2.4 / width;
-  return x <= -0.2 ? 1.0 : (0.2 - x) / 0.4;
-}
-
 // Pixels of the left projector whose blended colour differs from the plain one ramped by
 // weight^(1/gamma) in the sRGB signal (tolerance: half floats in the EXR).
 int badPixels(const confvis::ImageRGBA& plain, const confvis::ImageRGBA& blended, double gamma) {
   int bad = 0;
   for (int y = 0; y < plain.height; ++y)
     for (int x = 0; x < plain.width; ++x) {
-      const float factor = static_cast<float>(std::pow(leftWeight(x, plain.width), 1 / gamma));
+      const float factor = static_cast<float>(std::pow(leftProjectorWeight(x, plain.width), 1 / gamma));
       for (int c = 0; c < 4; ++c) {
         const float p = plain.at(x, y)[c];
         const float expected =

@@ -18,6 +18,7 @@
 
 namespace fs = std::filesystem;
 using confvis::testing::CliRun;
+using confvis::testing::leftProjectorWeight;
 using confvis::testing::importedProjectorConfig;
 using confvis::testing::runCli;
 using confvis::testing::scratch;
@@ -25,19 +26,13 @@ using confvis::testing::VirtualDisplay;
 
 namespace {
 
-// The left projector spans x in [-2.2, 0.2] over its width, the overlap is x in [-0.2, 0.2].
-double leftWeight(int column, int width) {
-  const double x = -2.2 + (column + 0.5) * 2.4 / width;
-  return x <= -0.2 ? 1.0 : (0.2 - x) / 0.4;
-}
-
 // Pixels of the left projector's blended screenshot (8-bit sRGB codes) that differ from the
 // plain one's codes scaled by weight^(1/gamma) by more than the screenshots' tolerance.
 int badPixels(const confvis::ImageRGBA& plain, const confvis::ImageRGBA& blended, double gamma) {
   int bad = 0;
   for (int y = 0; y < plain.height; ++y)
     for (int x = 0; x < plain.width; ++x) {
-      const double factor = std::pow(leftWeight(x, plain.width), 1 / gamma);
+      const double factor = std::pow(leftProjectorWeight(x, plain.width), 1 / gamma);
       for (int c = 0; c < 3; ++c) {
         const double expected = plain.at(x, y)[c] * 255.0 * factor;
         if (std::abs(blended.at(x, y)[c] * 255.0 - expected) >

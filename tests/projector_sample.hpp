@@ -13,6 +13,13 @@
 
 namespace confvis::testing {
 
+// The sample's light weight of the left projector at `column` of its `width`: it spans x in
+// [-2.2, 0.2], the overlap is x in [-0.2, 0.2], where the weight falls linearly to 0.
+inline double leftProjectorWeight(int column, int width) {
+  const double x = -2.2 + (column + 0.5) * 2.4 / width;
+  return x <= -0.2 ? 1.0 : (0.2 - x) / 0.4;
+}
+
 // `importOptions`: e.g. " --edge-blend 2.2".
 inline std::filesystem::path importedProjectorConfig(const std::string& name,
                                                      const std::string& importOptions) {
