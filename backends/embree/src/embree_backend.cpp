@@ -1,4 +1,5 @@
 #include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/backends/headlight.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -256,6 +257,12 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
                        static_cast<double>(wall.height) / planned.height};
     job.seed = static_cast<std::uint32_t>(planned.wallIndex * 3 + static_cast<int>(planned.eye));
     job.directions = nullptr;
+    // Conformal frames light from the eye's headlight position, as Vulkan does; for rays that
+    // start there (the eye at c, fast stereo) that is the light along the ray.
+    job.shading.pointHeadlight = warp.has_value() && custom == nullptr;
+    if (job.shading.pointHeadlight)
+      job.shading.headlight = glm::vec3(
+          headlightPosition(planned.view.eye_position, config, map, settings.camera));
     // An override's pixel is not the wall's pixel at the same position: no per-wall-pixel table.
     if (warp && !rays.overridden()) {
       job.directions = impl_->rayTable(

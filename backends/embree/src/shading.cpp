@@ -30,7 +30,8 @@ std::uint64_t shadePacket(const EmbreeScene& scene, const PacketHits& hits,
                           PacketColours& colours) {
   // The surface per lane lit by the headlight (surface_shading.cpp), then ambient occlusion.
   SurfaceNormals surface;
-  shadeSurface(options.simd, scene, hits, colours, surface);
+  shadeSurface(options.simd, scene, hits, options.pointHeadlight ? &options.headlight : nullptr,
+               colours, surface);
   const auto &nx = surface.nx, &ny = surface.ny, &nz = surface.nz;
   const auto& towardsViewer = surface.towardsViewer;
   if (!options.ambientOcclusion || options.occlusionSamples <= 0) return 0;

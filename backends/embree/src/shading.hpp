@@ -19,6 +19,10 @@ struct ShadingOptions {
   float occlusionDistance = 1.0f;  // metres
   float surfaceOffset = 1e-4f;     // metres, start of occlusion rays above the surface
   SimdLevel simd = SimdLevel::Sse2;  // which variant of the surface kernel runs
+  // The headlight: a point light at `headlight` (world) where set, else light along each ray
+  // (surface_shading.hpp).
+  bool pointHeadlight = false;
+  glm::vec3 headlight{0.0f};
 };
 
 // Returns the number of occlusion rays cast. `seeds` gives each lane its random stream. Lanes

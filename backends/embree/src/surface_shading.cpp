@@ -268,7 +268,7 @@ void sampleTextures(const Materials& m, const Footprints& place, Lanes& red, Lan
 // Structure of arrays: gathers per lane (one record, the material, texels), the arithmetic over
 // all 8 lanes without branches, which the compiler vectorises. The arithmetic follows glm's
 // order of operations in Scene::baseColorAt and Texture::sample.
-void shadeSurface(const EmbreeScene& scene, const PacketHits& hits,
+void shadeSurface(const EmbreeScene& scene, const PacketHits& hits, const glm::vec3* pointLight,
                   PacketColours& __restrict colours, SurfaceNormals& __restrict out) {
   const RTCHit8& hit = hits.rayhit.hit;
   // The hit flags as bytes (0 or 1), read as one word (traceStraight stores them so), which the
@@ -322,13 +322,35 @@ void shadeSurface(const EmbreeScene& scene, const PacketHits& hits,
   } else {
     red.fill(1.0f), green.fill(1.0f), blue.fill(1.0f);
   }
-  // The headlight: light from the eye along the ray, two-sided; lanes without a hit carry
-  // zeros through and come out black.
+  // The headlight: light from the eye along the ray, or from a point light at the hit's
+  // distance, two-sided; lanes without a hit carry zeros through and come out black.
   const RTCRay8& ray = hits.rayhit.ray;
+  alignas(32) Lanes lightScale;  // |n . d| -> |n . l| / |l| per lane, 1 along the ray
+  lightScale.fill(1.0f);
+  alignas(32) Lanes towardsX, towardsY, towardsZ;  // the light's direction at the hit
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    towardsX[lane] = ray.dir_x[lane], towardsY[lane] = ray.dir_y[lane];
+    towardsZ[lane] = ray.dir_z[lane];
+  }
+  if (pointLight != nullptr) {
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const float t = ray.tfar[lane];
+      const float lx = ray.org_x[lane] + t * ray.dir_x[lane] - pointLight->x;
+      const float ly = ray.org_y[lane] + t * ray.dir_y[lane] - pointLight->y;
+      const float lz = ray.org_z[lane] + t * ray.dir_z[lane] - pointLight->z;
+      const float lengthSquared = lx * lx + ly * ly + lz * lz;
+      const bool nonzero = lengthSquared > 0.0f;
+      const float inverse = 1.0f / std::sqrt(nonzero ? lengthSquared : 1.0f);
+      towardsX[lane] = lx, towardsY[lane] = ly, towardsZ[lane] = lz;
+      lightScale[lane] = nonzero ? inverse : 0.0f;
+    }
+  }
   for (int lane = 0; lane < kPacketSize; ++lane) {
     const float nx = out.nx[lane], ny = out.ny[lane], nz = out.nz[lane];
     const float lengthSquared = nx * nx + ny * ny + nz * nz;
     const float facing = nx * ray.dir_x[lane] + ny * ray.dir_y[lane] + nz * ray.dir_z[lane];
+    const float lit = (nx * towardsX[lane] + ny * towardsY[lane] + nz * towardsZ[lane]) *
+                      lightScale[lane];
     // 1 / |n|, 0 for a zero normal (a missed lane); computed unconditionally so that the loop
     // vectorises (the compiler may not speculate a division by zero).
     const bool nonzero = lengthSquared > 0.0f;
@@ -338,7 +360,7 @@ void shadeSurface(const EmbreeScene& scene, const PacketHits& hits,
     // Two-sided: the normal turned towards the viewer, so files with either winding shade alike;
     // Lambert with the headlight is then |n . d| / |n|.
     out.towardsViewer[lane] = facing > 0.0f ? -inverseLength : inverseLength;
-    const float lambert = std::abs(facing) * inverseLength;
+    const float lambert = std::abs(lit) * inverseLength;
     colours.red[lane] = m.factorRed[lane] * red[lane] * lambert;
     colours.green[lane] = m.factorGreen[lane] * green[lane] * lambert;
     colours.blue[lane] = m.factorBlue[lane] * blue[lane] * lambert;

@@ -32,22 +32,27 @@ SimdLevel detectedSimdLevel();
 const char* simdName(SimdLevel level);
 
 // The tracers' lanes without a hit must carry zero barycentrics, normal and direction (they do).
+// The headlight: a point light at `*pointLight` (world), or, with nullptr, light along each ray
+// (the same for rays that start at the light; bent rays' last segments do not, which is why
+// conformal frames pass the eye's headlightPosition, as the Vulkan backend lights them).
 namespace sse2 {
-void shadeSurface(const EmbreeScene& scene, const PacketHits& hits, PacketColours& colours,
-                  SurfaceNormals& normals);
+void shadeSurface(const EmbreeScene& scene, const PacketHits& hits, const glm::vec3* pointLight,
+                  PacketColours& colours, SurfaceNormals& normals);
 }
 namespace avx2 {
-void shadeSurface(const EmbreeScene& scene, const PacketHits& hits, PacketColours& colours,
-                  SurfaceNormals& normals);
+void shadeSurface(const EmbreeScene& scene, const PacketHits& hits, const glm::vec3* pointLight,
+                  PacketColours& colours, SurfaceNormals& normals);
 }
 
 inline void shadeSurface(SimdLevel level, const EmbreeScene& scene, const PacketHits& hits,
-                         PacketColours& colours, SurfaceNormals& normals) {
+                         const glm::vec3* pointLight, PacketColours& colours,
+                         SurfaceNormals& normals) {
 #ifdef CONFVIS_EMBREE_AVX2
-  if (level == SimdLevel::Avx2) return avx2::shadeSurface(scene, hits, colours, normals);
+  if (level == SimdLevel::Avx2)
+    return avx2::shadeSurface(scene, hits, pointLight, colours, normals);
 #endif
   (void)level;
-  sse2::shadeSurface(scene, hits, colours, normals);
+  sse2::shadeSurface(scene, hits, pointLight, colours, normals);
 }
 
 }  // namespace confvis::embree

@@ -105,6 +105,7 @@
 #include "confvis/backends/analytic_maps.hpp"
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/frame_stats.hpp"
+#include "confvis/backends/headlight.hpp"
 #include "confvis/backends/render_backend.hpp"
 #include "confvis/backends/edge_blend_output.hpp"
 #include "confvis/backends/render_output.hpp"

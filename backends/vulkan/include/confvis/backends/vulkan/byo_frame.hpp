@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "confvis/base/export.hpp"
+#include "confvis/backends/headlight.hpp"
 #include "confvis/backends/render_backend.hpp"
 
 namespace confvis CONFVIS_API {
@@ -55,11 +56,9 @@ glm::dmat4 worldToPhysical(const DisplayConfig& config, const VirtualCamera& cam
 // Error(InvalidInput) where the eye cannot see the wall.
 glm::dmat4 wallViewProjection(const Wall& wall, const glm::dvec3& eye);
 
-// Where the headlight of an eye at `eye` (physical frame) sits in the virtual world in conformal
-// mode: the start of its virtual rays, c + |e - c| T_ray(dir(e - c)), carried into the world by
-// the camera (`View::eyeVirtual`); plain mode: pass map = nullptr for the eye itself.
-glm::dvec3 headlightPosition(const glm::dvec3& eye, const DisplayConfig& config,
-                             const RetargetMap* map, const VirtualCamera& camera);
+// Where the headlight of an eye sits (`View::eyeVirtual`): confvis/backends/headlight.hpp, the
+// same for both backends.
+using confvis::headlightPosition;
 
 }  // namespace vulkan
 }  // namespace confvis
