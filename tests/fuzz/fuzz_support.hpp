@@ -7,7 +7,17 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <string>
+
+// The readers' warnings about accepted input (a missing MTL, flat normals) go to std::cerr, once
+// per execution: at a million executions that is gigabytes of log and most of the time. Dropped
+// here; sanitizer and libFuzzer reports are written to file descriptor 2 directly, so they stay.
+// Not inline (an unused inline function is never emitted): each harness is one file.
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  std::cerr.rdbuf(nullptr);
+  return 0;
+}
 
 namespace confvis::fuzz {
 

@@ -5,7 +5,8 @@
 # CI (tools/sanitize.sh) runs it in build-asan: CONFVIS_FUZZ_BUILD=build-asan. Prints executions,
 # rate and findings per harness; crash/leak/timeout inputs stay in BUILD/fuzz/findings-NAME/.
 # Exits non-zero when any harness found anything. JOBS harnesses run at a time (default: one per
-# core; JOBS=1 on a shared machine).
+# core; JOBS=1 on a shared machine). RUNS=N runs each harness for N executions instead of for a
+# time (the million-execution runs of tests/fuzz/README.md: RUNS=1000000 bash tests/fuzz/run.sh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-60}
@@ -65,15 +66,17 @@ corpus() {  # harness -> seed files (a prefix byte picks the format where the ha
 max_len() { case $1 in cube_exr) echo 16384 ;; *) echo 65536 ;; esac; }
 
 run_one() {
-  local h=$1 findings=$build/fuzz/findings-$1 log=$build/fuzz/$1.log rc=0
+  local h=$1 findings=$build/fuzz/findings-$1 log=$build/fuzz/$1.log rc=0 start=$SECONDS
+  local limit=(-max_total_time="$seconds")
+  [ -n "${RUNS:-}" ] && limit=(-runs="$RUNS")
   rm -rf "$findings" "$build/fuzz/$h.status" && mkdir -p "$findings"
-  "$build/fuzz/fuzz_$h" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  "$build/fuzz/fuzz_$h" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 \
     -max_len="$(max_len "$h")" -print_final_stats=1 -artifact_prefix="$findings/" \
     "$build/fuzz/corpus-$h" >"$log" 2>&1 || rc=$?
-  local execs found
+  local execs found took=$(( SECONDS - start > 0 ? SECONDS - start : 1 ))
   execs=$(grep -ao 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || true)
   found=$(find "$findings" -type f | wc -l)
-  echo "fuzz_$h: ${execs:-0} executions in ${seconds} s ($(( ${execs:-0} / seconds ))/s), $found findings, exit $rc (log $log)"
+  echo "fuzz_$h: ${execs:-0} executions in ${took} s ($(( ${execs:-0} / took ))/s), $found findings, exit $rc (log $log)"
   if [ "$rc" != 0 ] || [ "$found" != 0 ]; then
     grep -a -m1 -A30 -E '^==[0-9]+==|ERROR: libFuzzer|SUMMARY|runtime error' "$log" | head -40
     ls "$findings"
