@@ -246,7 +246,8 @@ std::string MeshSource::numbering() const {
 }
 
 TriMesh readMesh(const std::filesystem::path& path, MeshSource& source) {
-  if (!std::filesystem::exists(path))
+  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
+  if (!std::filesystem::exists(path, unreadable))
     throw Error(ErrorCode::FileNotFound, "mesh file '" + path.string() + "' does not exist");
   // Our own readers (mesh_files.hpp), not OpenMesh's: those hang or crash on small malformed
   // files. Polygons are fanned into triangles, as OpenMesh's TriMesh reader does.

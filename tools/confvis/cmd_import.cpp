@@ -39,8 +39,9 @@ int runImport(const ImportArgs& a) {
   if (!a.resolution.empty()) options.fallbackResolution = parseResolution(a.resolution);
   if (a.source == "sphere") options.source = SourceField::FullSphere;
   if (a.source == "hemisphere") options.source = SourceField::Hemisphere;
-  if (!a.output.empty() && std::filesystem::exists(a.output) &&
-      std::filesystem::equivalent(a.input, a.output))
+  std::error_code unreadable;  // a name too long for the file system is not the input either
+  if (!a.output.empty() && std::filesystem::exists(a.output, unreadable) &&
+      std::filesystem::equivalent(a.input, a.output, unreadable))
     throw Error(ErrorCode::InvalidInput, "-o would overwrite the input '" + a.input + "'");
 
   ImportReport report;

@@ -18,7 +18,7 @@ fs::path shippedFile(const std::string& relative, const std::string& option) {
   }
   candidates.push_back(fs::path(CONFVIS_SOURCE_DIR) / relative);
   for (const fs::path& path : candidates)
-    if (fs::exists(path)) return fs::weakly_canonical(path);
+    if (fs::exists(path, error)) return fs::weakly_canonical(path);
   throw Error(ErrorCode::FileNotFound,
               "no " + option + " given and the default " + relative +
                   " was not found next to the executable or in " CONFVIS_SOURCE_DIR);

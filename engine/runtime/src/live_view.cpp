@@ -319,7 +319,9 @@ nlohmann::json runLoop(GlfwSession& glfw, PresentContext* context, const Display
   }
 
   nlohmann::json windowReport = nlohmann::json::array();
-  if (capture) std::filesystem::create_directories(options.screenshotDirectory);
+  // A directory that cannot be made shows as the first screenshot's write error naming the file.
+  std::error_code uncreatable;
+  if (capture) std::filesystem::create_directories(options.screenshotDirectory, uncreatable);
   for (std::size_t w = 0; w < windows.size(); ++w) {
     presenters[w]->finish();
     const WindowPlan& plan = plans[w];

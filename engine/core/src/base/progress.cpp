@@ -11,20 +11,22 @@ Progress::Progress(std::string label, std::size_t total, bool enabled)
       total_(total == 0 ? 1 : total),
       enabled_(enabled),
       tty_(isatty(fileno(stderr)) != 0),
-      start_(std::chrono::steady_clock::now()),
-      lastDraw_(start_) {}
+      start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() { finish(); }
 
 void Progress::advance(std::size_t steps) {
   const std::size_t done = done_.fetch_add(steps) + steps;
   if (!enabled_) return;
-  const auto now = std::chrono::steady_clock::now();
+  const auto now = (std::chrono::steady_clock::now() - start_).count();
   // Redraw at most ~10 times a second; never block a worker on the lock.
-  if (now - lastDraw_ < std::chrono::milliseconds(100) && done < total_) return;
+  constexpr auto kRedrawTicks =
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::milliseconds(100))
+          .count();
+  if (now - lastDraw_.load(std::memory_order_relaxed) < kRedrawTicks && done < total_) return;
   std::unique_lock lock(drawMutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
-  lastDraw_ = now;
+  lastDraw_.store(now, std::memory_order_relaxed);
   draw(done, false);
 }
 

@@ -37,7 +37,8 @@ Scene loadScene(const std::filesystem::path& path) {
     throw Error(ErrorCode::InvalidInput, "scene file '" + path.string() +
                                              "' has an unknown extension (supported: .obj, "
                                              ".gltf, .glb)");
-  if (!std::filesystem::is_regular_file(path))
+  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
+  if (!std::filesystem::is_regular_file(path, unreadable))
     throw Error(ErrorCode::FileNotFound, "scene file '" + path.string() + "' does not exist");
   Scene scene = extension == ".obj" ? scene_files::loadObjScene(path)
                                     : scene_files::loadGltfScene(path, extension == ".glb");
@@ -51,7 +52,8 @@ Scene sceneByNameOrFile(const std::string& nameOrPath) {
   const std::vector<std::string> names = builtinSceneNames();
   if (std::find(names.begin(), names.end(), nameOrPath) != names.end())
     return builtinScene(nameOrPath);
-  if (!std::filesystem::exists(nameOrPath)) {
+  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
+  if (!std::filesystem::exists(nameOrPath, unreadable)) {
     std::string list;
     for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
     throw Error(ErrorCode::FileNotFound, "scene '" + nameOrPath +

@@ -32,7 +32,9 @@ class Progress {
   bool tty_;
   std::atomic<std::size_t> done_{0};
   std::mutex drawMutex_;
-  std::chrono::steady_clock::time_point start_, lastDraw_;
+  std::chrono::steady_clock::time_point start_;
+  // Steady-clock ticks since start_ at the last redraw: every worker reads it outside the lock.
+  std::atomic<std::chrono::steady_clock::rep> lastDraw_{0};
   int lastPercentPrinted_ = -1;
   bool finished_ = false;
 };
