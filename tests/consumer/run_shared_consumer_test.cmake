@@ -18,7 +18,7 @@ if(LAUNCHER)
 endif()
 run("configuring confvis with shared libraries" ${CMAKE_COMMAND} -S ${SOURCE_DIR}
     -B ${WORK_DIR}/confvis -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release
-    -DCONFVIS_SHARED_LIBS=ON -DCONFVIS_WERROR=ON ${launcher})
+    -DCONFVIS_SHARED_LIBS=ON -DCONFVIS_BUILD_TESTS=OFF -DCONFVIS_WERROR=ON ${launcher})
 run("building confvis_base and confvis_engine" ${CMAKE_COMMAND} --build ${WORK_DIR}/confvis
     --target confvis_base confvis_engine --parallel 2)
 set(prefix ${WORK_DIR}/installed)

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app_device.hpp"
+#include "confvis/backends/vulkan/byo_pipeline.hpp"
 #include "confvis/backends/vulkan/byo_prepass.hpp"
 #include "confvis/backends/vulkan/warp_interface.hpp"
 
@@ -94,87 +95,6 @@ VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits bit, VkShaderModule 
   info.pName = "main";
   return info;
 }
-
-// Flat: vertex input from the step's vertex buffer (binding 0, ConformalVertex) and its warps
-// (binding 1); tessellated: no vertex input (warp.vert reads the lists itself), patches of 3.
-VkPipeline createPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass,
-                          const std::vector<VkPipelineShaderStageCreateInfo>& stages,
-                          bool tessellated) {
-  using confvis::vulkan::ConformalVertex;
-  const std::array<VkVertexInputBindingDescription, 2> bindings = {{
-      {0, sizeof(ConformalVertex), VK_VERTEX_INPUT_RATE_VERTEX},
-      {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
-  }};
-  const std::array<VkVertexInputAttributeDescription, 4> attributes = {{
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ConformalVertex, position)},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(ConformalVertex, normal)},
-      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(ConformalVertex, uv)},
-      {3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
-  }};
-  VkPipelineVertexInputStateCreateInfo vertexInput{
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  if (!tessellated) {
-    vertexInput.vertexBindingDescriptionCount = 2;
-    vertexInput.pVertexBindingDescriptions = bindings.data();
-    vertexInput.vertexAttributeDescriptionCount = 4;
-    vertexInput.pVertexAttributeDescriptions = attributes.data();
-  }
-  VkPipelineInputAssemblyStateCreateInfo assembly{
-      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology =
-      tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineTessellationStateCreateInfo tessellation{
-      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
-  tessellation.patchControlPoints = 3;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo raster{
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;  // two-sided shading: no culling
-  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  raster.lineWidth = 1.0f;
-  VkPipelineMultisampleStateCreateInfo multisample{
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineDepthStencilStateCreateInfo depth{
-      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_GREATER;  // reverse-Z (wallViewProjection)
-  VkPipelineColorBlendAttachmentState blendAttachment{};
-  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend{
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blendAttachment;
-  const std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
-                                                       VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamicStates.size());
-  dynamic.pDynamicStates = dynamicStates.data();
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = static_cast<std::uint32_t>(stages.size());
-  info.pStages = stages.data();
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pTessellationState = tessellated ? &tessellation : nullptr;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dynamic;
-  info.layout = layout;
-  info.renderPass = renderPass;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  vkCheck(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-          "vkCreateGraphicsPipelines");
-  return pipeline;
-}
-
 }  // namespace
 
 AppPipelines::AppPipelines(VkDevice device) : device_(device) {
@@ -206,23 +126,28 @@ AppPipelines::AppPipelines(VkDevice device) : device_(device) {
       shaderModule(device, kAppSpirv_warp_tese), shaderModule(device, kAppSpirv_warp_geom),
       shaderModule(device, kAppSpirv_scene_frag)};
   const auto [simpleVert, warpVert, tesc, projectedTese, tese, geom, frag] = modules;
-  flat_ = createPipeline(device, layout_, renderPass_,
-                         {stage(VK_SHADER_STAGE_VERTEX_BIT, simpleVert),
-                          stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)},
-                         false);
-  tessellated_ = createPipeline(device, layout_, renderPass_,
-                                {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert),
-                                 stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc),
-                                 stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, projectedTese),
-                                 stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)},
-                                true);
-  dropping_ = createPipeline(device, layout_, renderPass_,
-                             {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert),
-                              stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc),
-                              stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, tese),
-                              stage(VK_SHADER_STAGE_GEOMETRY_BIT, geom),
-                              stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)},
-                             true);
+  // The pre-pass's lists, drawn as the backend draws them (makeWarpPipeline's state). Flat:
+  // vertex input from the step's vertex buffer (binding 0, ConformalVertex) and its warps
+  // (binding 1); tessellated: no vertex input (warp.vert reads the lists itself), patches of 3.
+  using confvis::vulkan::makeWarpPipeline;
+  using confvis::vulkan::WarpVertexInput;
+  const VkPipelineShaderStageCreateInfo flatStages[] = {
+      stage(VK_SHADER_STAGE_VERTEX_BIT, simpleVert), stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)};
+  const VkPipelineShaderStageCreateInfo tessellatedStages[] = {
+      stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert),
+      stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc),
+      stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, projectedTese),
+      stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)};
+  const VkPipelineShaderStageCreateInfo droppingStages[] = {
+      stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert),
+      stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, tesc),
+      stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, tese),
+      stage(VK_SHADER_STAGE_GEOMETRY_BIT, geom), stage(VK_SHADER_STAGE_FRAGMENT_BIT, frag)};
+  flat_ = makeWarpPipeline(device, layout_, renderPass_, flatStages,
+                           WarpVertexInput::VerticesAndWarps);
+  tessellated_ = makeWarpPipeline(device, layout_, renderPass_, tessellatedStages,
+                                  WarpVertexInput::None);
+  dropping_ = makeWarpPipeline(device, layout_, renderPass_, droppingStages, WarpVertexInput::None);
   for (VkShaderModule module : modules) vkDestroyShaderModule(device, module, nullptr);
 }
 

@@ -14,6 +14,7 @@
 
 #include "app_device.hpp"
 #include "app_pipelines.hpp"
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
 #include "confvis/backends/vulkan/byo_frame.hpp"
 #include "confvis/backends/vulkan/byo_prepass.hpp"
 #include "confvis/backends/vulkan/byo_upload.hpp"
@@ -297,21 +298,11 @@ std::vector<confvis::WallImage> renderThroughMap(const confvis::DisplayConfig& c
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1 + materials},
   }};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 2 + materials;
-  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
-  poolInfo.pPoolSizes = sizes.data();
-  vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &objects.pool),
-          "vkCreateDescriptorPool");
   std::vector<VkDescriptorSetLayout> layouts = {pipelines.frameSetLayout(),
                                                 pipelines.warpSetLayout()};
   layouts.resize(2 + materials, pipelines.materialSetLayout());
-  std::vector<VkDescriptorSet> sets(layouts.size());
-  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocInfo.descriptorPool = objects.pool;
-  allocInfo.descriptorSetCount = static_cast<std::uint32_t>(sets.size());
-  allocInfo.pSetLayouts = layouts.data();
-  vkCheck(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
+  objects.pool = cv::makeDescriptorPool(device, sizes, static_cast<std::uint32_t>(layouts.size()));
+  const std::vector<VkDescriptorSet> sets = cv::allocateDescriptorSets(device, objects.pool, layouts);
   const VkDescriptorSet frameSet = sets[0], warpSet = sets[1];
   for (std::uint32_t m = 0; m < materials; ++m)
     writeImage(device, sets[2 + m], 0, objects.textureSampler, textures[m].view());

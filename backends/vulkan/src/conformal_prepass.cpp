@@ -5,6 +5,7 @@
 #include <cstring>
 #include <vector>
 
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
 #include "vk_check.hpp"
 
 namespace confvis::vulkan {
@@ -119,19 +120,9 @@ void ConformalPrepass::prepare(const GpuScene& scene) {
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
       {VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, kPrepassBindings - kPrepassFirstTexelBinding},
   }};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 1;
-  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
-  poolInfo.pPoolSizes = sizes.data();
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
-  pool_ = UniqueDescriptorPool(device, pool);
+  pool_ = UniqueDescriptorPool(device, makeDescriptorPool(device, sizes, 1));
   const VkDescriptorSetLayout layout = pipelines_.prepassSetLayout();
-  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocInfo.descriptorPool = pool;
-  allocInfo.descriptorSetCount = 1;
-  allocInfo.pSetLayouts = &layout;
-  check(vkAllocateDescriptorSets(device, &allocInfo, &set_), "vkAllocateDescriptorSets");
+  set_ = allocateDescriptorSets(device, pool_.get(), {&layout, 1}).front();
   // Bindings of confvis_prepass_common.glsl, in order; the scene's vertices, their warps, the
   // edge levels and the cut vertices below; 7 unused (the scene's edges are read through a texel
   // view).

@@ -5,6 +5,7 @@
 #include <limits>
 #include <string>
 
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
 #include "confvis/base/error.hpp"
 #include "mesh_edges.hpp"
 #include "vk_check.hpp"
@@ -56,20 +57,9 @@ GpuScene::GpuScene(VulkanContext& context, const Pipelines& pipelines, const Sce
 
   const auto setCount = static_cast<std::uint32_t>(textures_.size());
   const VkDescriptorPoolSize poolSize{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, setCount};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = setCount;
-  poolInfo.poolSizeCount = 1;
-  poolInfo.pPoolSizes = &poolSize;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
-  pool_ = UniqueDescriptorPool(device, pool);
-  std::vector<VkDescriptorSetLayout> layouts(setCount, pipelines.materialSetLayout());
-  std::vector<VkDescriptorSet> sets(setCount);
-  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocInfo.descriptorPool = pool;
-  allocInfo.descriptorSetCount = setCount;
-  allocInfo.pSetLayouts = layouts.data();
-  check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
+  pool_ = UniqueDescriptorPool(device, makeDescriptorPool(device, {&poolSize, 1}, setCount));
+  const std::vector<VkDescriptorSetLayout> layouts(setCount, pipelines.materialSetLayout());
+  const std::vector<VkDescriptorSet> sets = allocateDescriptorSets(device, pool_.get(), layouts);
   for (std::uint32_t i = 0; i < setCount; ++i)
     writeImageDescriptor(device, sets[i], 0, sampler_.get(), textures_[i].view());
   const VkDescriptorSet whiteSet = sets.back();

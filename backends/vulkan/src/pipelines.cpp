@@ -7,6 +7,9 @@
 
 #include <stdint.h>  // the generated SPIR-V headers use ::uint32_t
 
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
+#include "confvis/backends/vulkan/byo_pipeline.hpp"
+#include "confvis/backends/vulkan/byo_prepass.hpp"
 #include "confvis/backends/vulkan/warp_interface.hpp"
 #include "vk_check.hpp"
 
@@ -182,8 +185,12 @@ UniqueRenderPass Pipelines::createRenderPass(std::uint32_t viewCount) const {
   return UniqueRenderPass(context_.device(), renderPass);
 }
 
+// makeWarpPipeline describes the scene's vertices as the bring-your-own ConformalVertex.
+static_assert(sizeof(Vertex) == sizeof(ConformalVertex) &&
+              offsetof(Vertex, normal) == offsetof(ConformalVertex, normal) &&
+              offsetof(Vertex, uv) == offsetof(ConformalVertex, uv));
+
 UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) const {
-  const bool tessellated = kind == Kind::ConformalTessellated || kind == Kind::ConformalDropping;
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   switch (kind) {
     case Kind::Plain:
@@ -205,82 +212,13 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
       break;
   }
   stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_));
-  // Binding 0: the scene's vertices; binding 1 (conformal flat): their warps from the pre-pass.
-  // The other conformal vertex shaders read theirs from storage buffers.
-  const std::array<VkVertexInputBindingDescription, 2> bindings = {{
-      {0, sizeof(Vertex), VK_VERTEX_INPUT_RATE_VERTEX},
-      {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
-  }};
-  const std::array<VkVertexInputAttributeDescription, 4> attributes = {{
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, position)},
-      {1, 0, VK_FORMAT_R32G32B32_SFLOAT, offsetof(Vertex, normal)},
-      {2, 0, VK_FORMAT_R32G32_SFLOAT, offsetof(Vertex, uv)},
-      {3, 1, VK_FORMAT_R32G32B32A32_SFLOAT, 0},
-  }};
-  const bool flat = kind == Kind::ConformalFlat;
-  VkPipelineVertexInputStateCreateInfo vertexInput{
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  if (kind == Kind::Plain || flat) {
-    vertexInput.vertexBindingDescriptionCount = flat ? 2 : 1;
-    vertexInput.pVertexBindingDescriptions = bindings.data();
-    vertexInput.vertexAttributeDescriptionCount = flat ? 4 : 3;
-    vertexInput.pVertexAttributeDescriptions = attributes.data();
-  }
-  VkPipelineInputAssemblyStateCreateInfo assembly{
-      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology =
-      tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineTessellationStateCreateInfo tessellation{
-      VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
-  tessellation.patchControlPoints = 3;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = 1;
-  viewport.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo raster{
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.polygonMode = VK_POLYGON_MODE_FILL;
-  raster.cullMode = VK_CULL_MODE_NONE;  // two-sided: scenes are seen from inside and outside
-  raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
-  raster.lineWidth = 1.0f;
-  VkPipelineMultisampleStateCreateInfo multisample{
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  VkPipelineDepthStencilStateCreateInfo depth{
-      VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = VK_TRUE;
-  depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = VK_COMPARE_OP_GREATER;  // reverse-Z (frame_plan.cpp)
-  VkPipelineColorBlendAttachmentState blendAttachment{};
-  blendAttachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                   VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  VkPipelineColorBlendStateCreateInfo blend{
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = 1;
-  blend.pAttachments = &blendAttachment;
-  const std::array<VkDynamicState, 2> dynamicStates = {VK_DYNAMIC_STATE_VIEWPORT,
-                                                       VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamic{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamic.dynamicStateCount = static_cast<std::uint32_t>(dynamicStates.size());
-  dynamic.pDynamicStates = dynamicStates.data();
-
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = static_cast<std::uint32_t>(stages.size());
-  info.pStages = stages.data();
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pTessellationState = tessellated ? &tessellation : nullptr;
-  info.pViewportState = &viewport;
-  info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dynamic;
-  info.layout = layout_.get();
-  info.renderPass = renderPass;
-  info.subpass = 0;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  check(vkCreateGraphicsPipelines(context_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-        "vkCreateGraphicsPipelines");
+  // The scene's vertices at binding 0; the flat list's warps from the pre-pass at binding 1. The
+  // other conformal vertex shaders read theirs from storage buffers.
+  const WarpVertexInput input = kind == Kind::Plain           ? WarpVertexInput::Vertices
+                                : kind == Kind::ConformalFlat ? WarpVertexInput::VerticesAndWarps
+                                                              : WarpVertexInput::None;
+  const VkPipeline pipeline =
+      makeWarpPipeline(context_.device(), layout_.get(), renderPass, stages, input);
   return UniquePipeline(context_.device(), pipeline);
 }
 
@@ -291,22 +229,11 @@ FrameDescriptors allocateFrameDescriptors(VulkanContext& context, const Pipeline
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
       {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 2},  // the geom and ray maps
   }};
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 2;
-  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
-  poolInfo.pPoolSizes = sizes.data();
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  check(vkCreateDescriptorPool(device, &poolInfo, nullptr, &pool), "vkCreateDescriptorPool");
-  FrameDescriptors made;
-  made.pool = UniqueDescriptorPool(device, pool);
   const std::array<VkDescriptorSetLayout, 2> layouts = {pipelines.frameSetLayout(),
                                                         pipelines.warpSetLayout()};
-  std::array<VkDescriptorSet, 2> sets{};
-  VkDescriptorSetAllocateInfo allocInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  allocInfo.descriptorPool = pool;
-  allocInfo.descriptorSetCount = 2;
-  allocInfo.pSetLayouts = layouts.data();
-  check(vkAllocateDescriptorSets(device, &allocInfo, sets.data()), "vkAllocateDescriptorSets");
+  FrameDescriptors made;
+  made.pool = UniqueDescriptorPool(device, makeDescriptorPool(device, sizes, layouts.size()));
+  const std::vector<VkDescriptorSet> sets = allocateDescriptorSets(device, made.pool.get(), layouts);
   made.frameSet = sets[0];
   made.warpSet = sets[1];
   made.frameUniforms = Buffer(context, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,

@@ -125,8 +125,10 @@
 #if __has_include(<vulkan/vulkan.h>)
 #include "confvis/backends/vulkan/warp_interface.hpp"
 // ... and the map upload, per-wall bounds and conformal pre-pass on the application's device.
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
 #include "confvis/backends/vulkan/byo_device.hpp"
 #include "confvis/backends/vulkan/byo_frame.hpp"
+#include "confvis/backends/vulkan/byo_pipeline.hpp"
 #include "confvis/backends/vulkan/byo_prepass.hpp"
 #include "confvis/backends/vulkan/byo_upload.hpp"
 // The Vulkan backend on the application's device, rendering into its images.

@@ -1,0 +1,30 @@
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
+
+#include "vk_check.hpp"
+
+namespace confvis::vulkan {
+
+VkDescriptorPool makeDescriptorPool(VkDevice device, std::span<const VkDescriptorPoolSize> sizes,
+                                    std::uint32_t maxSets) {
+  VkDescriptorPoolCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  info.maxSets = maxSets;
+  info.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  info.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  check(vkCreateDescriptorPool(device, &info, nullptr, &pool), "vkCreateDescriptorPool");
+  return pool;
+}
+
+std::vector<VkDescriptorSet> allocateDescriptorSets(VkDevice device, VkDescriptorPool pool,
+                                                    std::span<const VkDescriptorSetLayout> layouts) {
+  std::vector<VkDescriptorSet> sets(layouts.size(), VK_NULL_HANDLE);
+  if (layouts.empty()) return sets;
+  VkDescriptorSetAllocateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  info.descriptorPool = pool;
+  info.descriptorSetCount = static_cast<std::uint32_t>(layouts.size());
+  info.pSetLayouts = layouts.data();
+  check(vkAllocateDescriptorSets(device, &info, sets.data()), "vkAllocateDescriptorSets");
+  return sets;
+}
+
+}  // namespace confvis::vulkan
