@@ -2,6 +2,7 @@
 // loops the compiler vectorises; the grid lookups four components at a time.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "camera_rays.hpp"
@@ -92,11 +93,16 @@ void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& ou
   const PacketGeometry& g = packet_;
   const glm::vec3 a = g.eye;
   const float eyeDistance = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+  // Into locals, which the compiler knows alias nothing (the loop then vectorises).
+  alignas(32) Lanes positionX, positionY;
+  std::memcpy(positionX.data(), px, sizeof positionX);
+  std::memcpy(positionY.data(), py, sizeof positionY);
+  TailGeometry geometry;
   for (int lane = 0; lane < kPacketSize; ++lane) {
     // u: the physical ray's unit direction (towards the sample's wall point).
-    const float tx = g.base.x + px[lane] * g.stepX.x + py[lane] * g.stepY.x;
-    const float ty = g.base.y + px[lane] * g.stepX.y + py[lane] * g.stepY.y;
-    const float tz = g.base.z + px[lane] * g.stepX.z + py[lane] * g.stepY.z;
+    const float tx = g.base.x + positionX[lane] * g.stepX.x + positionY[lane] * g.stepY.x;
+    const float ty = g.base.y + positionX[lane] * g.stepX.y + positionY[lane] * g.stepY.y;
+    const float tz = g.base.z + positionX[lane] * g.stepX.z + positionY[lane] * g.stepY.z;
     const float inverseLength = 1.0f / std::sqrt(tx * tx + ty * ty + tz * tz);
     const float x = tx * inverseLength, y = ty * inverseLength, z = tz * inverseLength;
     // The eye's offset across the ray (curvedRay's foot relative to c) and its length h.
@@ -110,18 +116,19 @@ void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& ou
     // curve's vertices lie between |e - c| and that from c; the margin covers float rounding
     // (the clearance query reaches 1 % beyond the widest reach, curvedReach).
     const float toLast = h / tanAsymptote;
-    out.lastDistance[lane] = h / sinAsymptote;
+    geometry.lastDistance[lane] = h / sinAsymptote;
     // A ray through c (h = 0 behind the eye) has its last vertex at c itself: any direction
     // serves the lookup (a zero one would not; lattice nodes can sit exactly there).
     const bool throughCentre = onLine || !(h > 0.0f);
-    out.lastX[lane] = throughCentre ? x : perpX + toLast * x;
-    out.lastY[lane] = throughCentre ? y : perpY + toLast * y;
-    out.lastZ[lane] = throughCentre ? z : perpZ + toLast * z;
-    out.ux[lane] = x, out.uy[lane] = y, out.uz[lane] = z;
-    out.h[lane] = h;
-    out.reach[lane] =
-        onLine ? kUnbounded : 1.0001f * std::max(eyeDistance, out.lastDistance[lane]);
+    geometry.lastX[lane] = throughCentre ? x : perpX + toLast * x;
+    geometry.lastY[lane] = throughCentre ? y : perpY + toLast * y;
+    geometry.lastZ[lane] = throughCentre ? z : perpZ + toLast * z;
+    geometry.ux[lane] = x, geometry.uy[lane] = y, geometry.uz[lane] = z;
+    geometry.h[lane] = h;
+    geometry.reach[lane] =
+        onLine ? kUnbounded : 1.0001f * std::max(eyeDistance, geometry.lastDistance[lane]);
   }
+  out = geometry;
 }
 
 void CameraRays::tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace confvis::embree {
@@ -157,21 +158,31 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
   rays_.pixelAlpha(px, py, samples.count, alpha.data());
   CameraRays::TailGeometry geometry;
   rays_.tailGeometry(px, py, geometry);
+  // The corners' six components as scalars and the positions in locals (the loop vectorises).
+  float node[4][6];
+  const std::array<const Point*, 4> corners = {&p00, &p10, &p01, &p11};
+  for (int k = 0; k < 4; ++k)
+    for (int component = 0; component < 3; ++component) {
+      node[k][component] = corners[static_cast<std::size_t>(k)]->direction[component];
+      node[k][3 + component] = corners[static_cast<std::size_t>(k)]->offset[component];
+    }
+  alignas(32) Lanes positionX, positionY;
+  std::memcpy(positionX.data(), px, sizeof positionX);
+  std::memcpy(positionY.data(), py, sizeof positionY);
   alignas(32) std::array<float, 6 * kPacketSize> tails;
   for (int lane = 0; lane < kPacketSize; ++lane) {
-    const float tx = (px[lane] - left) * perX, ty = (py[lane] - top) * perY;
+    const float tx = (positionX[lane] - left) * perX, ty = (positionY[lane] - top) * perY;
     const float w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
     const float w01 = (1.0f - tx) * ty, w11 = tx * ty;
-    const auto blend = [&](const glm::vec3 Point::*field, int k) {
-      return w00 * (p00.*field)[k] + w10 * (p10.*field)[k] + w01 * (p01.*field)[k] +
-             w11 * (p11.*field)[k];
-    };
-    float dx = blend(&Point::direction, 0), dy = blend(&Point::direction, 1);
-    float dz = blend(&Point::direction, 2);
-    const float inverseLength = 1.0f / std::sqrt(dx * dx + dy * dy + dz * dz);
-    dx *= inverseLength, dy *= inverseLength, dz *= inverseLength;
-    const float ox = blend(&Point::offset, 0), oy = blend(&Point::offset, 1);
-    const float oz = blend(&Point::offset, 2);
+    float blended[6];
+    for (int component = 0; component < 6; ++component)
+      blended[component] = w00 * node[0][component] + w10 * node[1][component] +
+                           w01 * node[2][component] + w11 * node[3][component];
+    const float inverseLength = 1.0f / std::sqrt(blended[0] * blended[0] +
+                                                 blended[1] * blended[1] + blended[2] * blended[2]);
+    const float dx = blended[0] * inverseLength, dy = blended[1] * inverseLength;
+    const float dz = blended[2] * inverseLength;
+    const float ox = blended[3], oy = blended[4], oz = blended[5];
     // The start on the interpolated line at the sample's own |W(last)| = |last| from c.
     const float distance = geometry.lastDistance[lane];
     const float along = std::sqrt(std::max(0.0f, distance * distance - (ox * ox + oy * oy + oz * oz)));

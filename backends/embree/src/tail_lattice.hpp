@@ -5,8 +5,9 @@
 // The tile is cut into cells of kTailCellPixels x kTailCellPixels output pixels; the tails are
 // evaluated exactly (CameraRays::tailsAt) at the cells' corners and centres, and a cell's
 // samples are interpolated bilinearly from its corners only where the interpolated centre lies
-// within the stated bound of the exact centre; elsewhere each sample gets its own tails
-// (CameraRays::exactTails).
+// within the stated bound of the exact centre and the lattice's second differences along x and
+// y bound the blend's error within it too (the centre alone misses a saddle); elsewhere each
+// sample gets its own tails (CameraRays::exactTails).
 //
 // What is interpolated is what decides the traced line: the unit direction D and the start's
 // offset across it, O = S - (S.D) D (about J_F(u) (e - c)_perp: smooth, where S itself spins
