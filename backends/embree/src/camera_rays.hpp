@@ -112,6 +112,8 @@ class CameraRays {
   const glm::vec3& rayStepX() const { return packet_.stepX; }
   const glm::vec3& rayStepY() const { return packet_.stepY; }
   const glm::vec3& eyeFromCentre() const { return packet_.eye; }
+  // The wall's map grid (conformal cameras), whose alpha pixelAlpha reads (not an override's).
+  const WallMapGrid* mapGrid() const { return grid_; }
   // The whole bent path of the sample at (px, py) (curvedRay, the segments inside the empty ball
   // left out), placed by the camera; lit.
   void curvedPath(double px, double py, RayPath& path) const;

@@ -68,6 +68,7 @@ void TailLattice::build() {
   }
   nodes_.assign(points.begin(), points.begin() + nodeCount);
   pass_.assign(static_cast<std::size_t>(cellCount), 0);
+  lit_.assign(static_cast<std::size_t>(cellCount), 0);
   const glm::vec3 eye = rays_.eyeFromCentre();
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
@@ -129,6 +130,14 @@ void TailLattice::build() {
     };
     const float pixelAngle = std::min(across1(pixelToWall_.x * rays_.rayStepX()),
                                       across1(pixelToWall_.y * rays_.rayStepY()));
+    // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
+    // no lookup per sample (an override's alpha is its rays', not the wall pixel's).
+    const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
+    const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
+    lit_[static_cast<std::size_t>(cell)] =
+        !rays_.overridden() && rays_.mapGrid() &&
+        rays_.mapGrid()->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
+                                       top + kTailCellPixels * pixelToWall_.y);
     pass_[static_cast<std::size_t>(cell)] =
         std::isinf(tolerancePixels_) || error <= tolerancePixels_ * pixelAngle ? 1 : 0;
   }
@@ -155,7 +164,10 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
   const float perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
   const float perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
   alignas(32) Lanes alpha;
-  rays_.pixelAlpha(px, py, samples.count, alpha.data());
+  if (lit_[static_cast<std::size_t>(cell)])
+    for (int lane = 0; lane < kPacketSize; ++lane) alpha[lane] = lane < samples.count ? 1.0f : 0.0f;
+  else
+    rays_.pixelAlpha(px, py, samples.count, alpha.data());
   CameraRays::TailGeometry geometry;
   rays_.tailGeometry(px, py, geometry);
   // The corners' six components as scalars and the positions in locals (the loop vectorises).

@@ -66,6 +66,7 @@ class TailLattice {
   bool built_ = false;
   std::vector<Point> nodes_;  // (cellsAcross + 1) x (cellsDown + 1) cell corners, row by row
   std::vector<char> pass_;    // per cell: interpolated
+  std::vector<char> lit_;     // per cell: every sample lit (WallMapGrid::litThroughout)
 };
 
 }  // namespace confvis::embree
