@@ -128,6 +128,21 @@ void WallMapGrid::at(int count, const float* px, const float* py, float* x, floa
   }
 }
 
+bool WallMapGrid::litThroughout(float px0, float py0, float px1, float py1) const {
+  const auto cell = [](float position, float cellsPerPixel, int cells) {
+    const float g = std::clamp(position * cellsPerPixel, 0.0f, static_cast<float>(cells));
+    return std::min(static_cast<int>(g), cells - 1);
+  };
+  const int i0 = cell(px0, cellsPerPixelX_, columns_), i1 = cell(px1, cellsPerPixelX_, columns_);
+  const int j0 = cell(py0, cellsPerPixelY_, rows_), j1 = cell(py1, cellsPerPixelY_, rows_);
+  constexpr float kLitWithMargin = 0.5f + 1e-5f;
+  for (int j = j0; j <= j1 + 1; ++j)
+    for (int i = i0; i <= i1 + 1; ++i)
+      if (!(samples_[static_cast<std::size_t>(j) * (columns_ + 1) + i].w >= kLitWithMargin))
+        return false;
+  return true;
+}
+
 double WallMapGrid::spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,
                                double outputScale) {
   const Wall lit = wall.litRectangle();

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "direction_table.hpp"
+#include "tail_lattice.hpp"
 
 namespace confvis::embree {
 
@@ -121,7 +122,7 @@ void setUpStraightPacket(const CameraRays& rays, const TileJob& job, const Packe
 // returned, so that they trace as plain rays do; else the packet's paths (tails where a lane's
 // curve bends inside the ball, whole curves elsewhere).
 bool setUpPaths(const CameraRays& rays, const TileJob& job, const PacketSamples& samples,
-                std::array<RayPath, kPacketSize>& paths, PacketHits& hits) {
+                std::array<RayPath, kPacketSize>& paths, PacketHits& hits, TailLattice* tails) {
   // A table of the tails, where every curve of the packet bends inside the empty ball.
   if (job.directions && job.directions->hasOrigins() &&
       job.directions->reach(samples.x, samples.y, samples.sample) < rays.emptyRadius()) {
@@ -131,8 +132,10 @@ bool setUpPaths(const CameraRays& rays, const TileJob& job, const PacketSamples&
   alignas(32) Lanes px, py, reach;
   alignas(32) std::array<float, 6 * kPacketSize> run;
   packetPositions(job, samples, px, py);
-  if (rays.exactTails(px.data(), py.data(), samples.count, run.data(), reach.data()) <
-      rays.emptyRadius()) {
+  const float packetReach =
+      tails ? tails->tails(samples, px.data(), py.data(), run.data(), reach.data())
+            : rays.exactTails(px.data(), py.data(), samples.count, run.data(), reach.data());
+  if (packetReach < rays.emptyRadius()) {
     runPacket(rays, run.data(), true, hits);
     return true;
   }
@@ -164,25 +167,26 @@ bool setUpPaths(const CameraRays& rays, const TileJob& job, const PacketSamples&
 
 std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays,
                                 const TileJob& job, const PacketSamples& samples,
-                                PacketHits& hits) {
+                                PacketHits& hits, TailLattice* tails) {
   if (rays.straight()) {
     setUpStraightPacket(rays, job, samples, hits);
     return traceStraight(scene.handle(), samples.count, samples.columns, hits);
   }
   std::array<RayPath, kPacketSize> paths;
-  if (setUpPaths(rays, job, samples, paths, hits))
+  if (setUpPaths(rays, job, samples, paths, hits, tails))
     return traceStraight(scene.handle(), samples.count, samples.columns, hits);
   return tracePaths(scene.handle(), paths.data(), samples.count, samples.columns, hits);
 }
 
 std::uint64_t traceCameraPacketPair(const EmbreeScene& scene, const CameraRays& rays,
                                     const TileJob& job, const std::array<PacketSamples, 2>& samples,
-                                    std::array<PacketHits, 2>& hits) {
-  if (samples[1].count == 0) return traceCameraPacket(scene, rays, job, samples[0], hits[0]);
+                                    std::array<PacketHits, 2>& hits, TailLattice* tails) {
+  if (samples[1].count == 0)
+    return traceCameraPacket(scene, rays, job, samples[0], hits[0], tails);
   if (!rays.straight()) {
     std::array<std::array<RayPath, kPacketSize>, 2> paths;
-    const bool straight0 = setUpPaths(rays, job, samples[0], paths[0], hits[0]);
-    const bool straight1 = setUpPaths(rays, job, samples[1], paths[1], hits[1]);
+    const bool straight0 = setUpPaths(rays, job, samples[0], paths[0], hits[0], tails);
+    const bool straight1 = setUpPaths(rays, job, samples[1], paths[1], hits[1], tails);
     if (!straight0 || !straight1) {
       const auto trace = [&](int half, bool straight) {
         return straight ? traceStraight(scene.handle(), samples[half].count,

@@ -14,6 +14,8 @@
 
 namespace confvis::embree {
 
+class TailLattice;
+
 // A packet's pixels: a block of up to kBlockColumns x kBlockRows output pixels inside a tile,
 // read row by row (lane i: pixel (x + i % columns, y + i / columns)). Two rows of four rather
 // than a row of eight: the rays of a packet then span about half the angle, which where the map
@@ -52,15 +54,18 @@ void packetPositions(const TileJob& job, const PacketSamples& samples,
                      std::array<float, kPacketSize>& px, std::array<float, kPacketSize>& py);
 
 // Fills `hits` for the packet; returns the number of camera rays cast (see traceStraight).
+// `tails`: the tile's TailLattice, which exact stereo rays without a table take their tails
+// from (null: CameraRays::exactTails per sample).
 std::uint64_t traceCameraPacket(const EmbreeScene& scene, const CameraRays& rays,
                                 const TileJob& job, const PacketSamples& samples,
-                                PacketHits& hits);
+                                PacketHits& hits, TailLattice* tails = nullptr);
 
 // Two packets (of a tile's 4 x 4 pixels) at once: straight rays in one 16-wide intersection
 // (traceStraightPair), curved ones packet by packet. samples[1].count may be 0 (the tile's last
 // row of blocks), which traces nothing there.
 std::uint64_t traceCameraPacketPair(const EmbreeScene& scene, const CameraRays& rays,
                                     const TileJob& job, const std::array<PacketSamples, 2>& samples,
-                                    std::array<PacketHits, 2>& hits);
+                                    std::array<PacketHits, 2>& hits,
+                                    TailLattice* tails = nullptr);
 
 }  // namespace confvis::embree

@@ -88,6 +88,32 @@ class CameraRays {
   // curvedPath). Where the scene keeps beyond a lane's reach (setEmptyRadius), the tail alone is
   // traced. Returns the largest reach of the lit lanes.
   float exactTails(const float* px, const float* py, int count, float* run, float* reach) const;
+  // exactTails' pieces, for TailLattice (tail_lattice.hpp), which interpolates the tails:
+  // per lane, in closed form, the physical ray's unit direction u, the eye's distance h across
+  // it, the last vertex (and its distance from c) and the unmasked reach.
+  struct TailGeometry {
+    alignas(32) std::array<float, kPacketSize> ux, uy, uz, h, lastX, lastY, lastZ, lastDistance,
+        reach;
+  };
+  void tailGeometry(const float* px, const float* py, TailGeometry& geometry) const;
+  // tailGeometry and the unmasked tails (exactTails' run layout, unlit lanes included) of 8
+  // positions, `count` of them meaningful (the cube map is asked only for those).
+  void tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
+               float* tails) const;
+  // The map's alpha at the samples' wall points (lanes from `count` on: 0).
+  void pixelAlpha(const float* px, const float* py, int count, float* alpha) const;
+  // exactTails' last step: `tails` into `run` where lit (alpha >= 0.5), zeros elsewhere; per
+  // lane reach (0 where unlit); returns the largest.
+  static float maskTails(const float* alpha, const float* laneReach, const float* tails,
+                         float* run, float* reach);
+  // The physical ray directions' affine form (unturned; base + px stepX + py stepY) and the eye
+  // relative to c, in float.
+  const glm::vec3& rayBase() const { return packet_.base; }
+  const glm::vec3& rayStepX() const { return packet_.stepX; }
+  const glm::vec3& rayStepY() const { return packet_.stepY; }
+  const glm::vec3& eyeFromCentre() const { return packet_.eye; }
+  // The wall's map grid (conformal cameras), whose alpha pixelAlpha reads (not an override's).
+  const WallMapGrid* mapGrid() const { return grid_; }
   // The whole bent path of the sample at (px, py) (curvedRay, the segments inside the empty ball
   // left out), placed by the camera; lit.
   void curvedPath(double px, double py, RayPath& path) const;

@@ -2,6 +2,7 @@
 // loops the compiler vectorises; the grid lookups four components at a time.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "camera_rays.hpp"
@@ -85,21 +86,23 @@ void CameraRays::fastTargets(const float* px, const float* py, int count, float*
   }
 }
 
-float CameraRays::exactTails(const float* px, const float* py, int count, float* run,
-                             float* reach) const {
+void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& out) const {
   static const float tanAsymptote = static_cast<float>(std::tan(kAsymptoteAngle));
   static const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
   constexpr float kUnbounded = std::numeric_limits<float>::infinity();
   const PacketGeometry& g = packet_;
   const glm::vec3 a = g.eye;
   const float eyeDistance = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
-  alignas(32) Lanes fx, fy, fz, alpha, ux, uy, uz, lastX, lastY, lastZ, lastDistance;
-  pixelSamples(px, py, count, fx.data(), fy.data(), fz.data(), alpha.data());
+  // Into locals, which the compiler knows alias nothing (the loop then vectorises).
+  alignas(32) Lanes positionX, positionY;
+  std::memcpy(positionX.data(), px, sizeof positionX);
+  std::memcpy(positionY.data(), py, sizeof positionY);
+  TailGeometry geometry;
   for (int lane = 0; lane < kPacketSize; ++lane) {
     // u: the physical ray's unit direction (towards the sample's wall point).
-    const float tx = g.base.x + px[lane] * g.stepX.x + py[lane] * g.stepY.x;
-    const float ty = g.base.y + px[lane] * g.stepX.y + py[lane] * g.stepY.y;
-    const float tz = g.base.z + px[lane] * g.stepX.z + py[lane] * g.stepY.z;
+    const float tx = g.base.x + positionX[lane] * g.stepX.x + positionY[lane] * g.stepY.x;
+    const float ty = g.base.y + positionX[lane] * g.stepX.y + positionY[lane] * g.stepY.y;
+    const float tz = g.base.z + positionX[lane] * g.stepX.z + positionY[lane] * g.stepY.z;
     const float inverseLength = 1.0f / std::sqrt(tx * tx + ty * ty + tz * tz);
     const float x = tx * inverseLength, y = ty * inverseLength, z = tz * inverseLength;
     // The eye's offset across the ray (curvedRay's foot relative to c) and its length h.
@@ -113,39 +116,70 @@ float CameraRays::exactTails(const float* px, const float* py, int count, float*
     // curve's vertices lie between |e - c| and that from c; the margin covers float rounding
     // (the clearance query reaches 1 % beyond the widest reach, curvedReach).
     const float toLast = h / tanAsymptote;
-    lastDistance[lane] = h / sinAsymptote;
-    lastX[lane] = onLine ? x : perpX + toLast * x;
-    lastY[lane] = onLine ? y : perpY + toLast * y;
-    lastZ[lane] = onLine ? z : perpZ + toLast * z;
-    ux[lane] = x, uy[lane] = y, uz[lane] = z;
-    const float laneReach = onLine ? kUnbounded : 1.0001f * std::max(eyeDistance, lastDistance[lane]);
-    reach[lane] = alpha[lane] >= 0.5f ? laneReach : 0.0f;
+    geometry.lastDistance[lane] = h / sinAsymptote;
+    // A ray through c (h = 0 behind the eye) has its last vertex at c itself: any direction
+    // serves the lookup (a zero one would not; lattice nodes can sit exactly there).
+    const bool throughCentre = onLine || !(h > 0.0f);
+    geometry.lastX[lane] = throughCentre ? x : perpX + toLast * x;
+    geometry.lastY[lane] = throughCentre ? y : perpY + toLast * y;
+    geometry.lastZ[lane] = throughCentre ? z : perpZ + toLast * z;
+    geometry.ux[lane] = x, geometry.uy[lane] = y, geometry.uz[lane] = z;
+    geometry.h[lane] = h;
+    geometry.reach[lane] =
+        onLine ? kUnbounded : 1.0001f * std::max(eyeDistance, geometry.lastDistance[lane]);
   }
-  alignas(32) Lanes tailX, tailY, tailZ;
-  mapDirections(ux.data(), uy.data(), uz.data(), count, tailX.data(), tailY.data(), tailZ.data());
-  mapDirections(lastX.data(), lastY.data(), lastZ.data(), count, fx.data(), fy.data(), fz.data());
-  alignas(32) Lanes tails[6];  // direction F(u) normalised, W(last) relative to c
-  for (int lane = 0; lane < kPacketSize; ++lane) {
+  out = geometry;
+}
+
+void CameraRays::tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
+                         float* tails) const {
+  tailGeometry(px, py, geometry);
+  alignas(32) Lanes tailX, tailY, tailZ, fx, fy, fz;
+  mapDirections(geometry.ux.data(), geometry.uy.data(), geometry.uz.data(), count, tailX.data(),
+                tailY.data(), tailZ.data());
+  mapDirections(geometry.lastX.data(), geometry.lastY.data(), geometry.lastZ.data(), count,
+                fx.data(), fy.data(), fz.data());
+  for (int lane = 0; lane < kPacketSize; ++lane) {  // F(u) normalised, W(last) relative to c
     const float tailLength =
         std::sqrt(tailX[lane] * tailX[lane] + tailY[lane] * tailY[lane] + tailZ[lane] * tailZ[lane]);
     const float lastLength = std::sqrt(fx[lane] * fx[lane] + fy[lane] * fy[lane] + fz[lane] * fz[lane]);
     const float tailScale = 1.0f / tailLength;
-    const float lastScale = lastDistance[lane] / lastLength;  // W(last) = |last| F
-    tails[0][lane] = tailX[lane] * tailScale;
-    tails[1][lane] = tailY[lane] * tailScale;
-    tails[2][lane] = tailZ[lane] * tailScale;
-    tails[3][lane] = fx[lane] * lastScale;
-    tails[4][lane] = fy[lane] * lastScale;
-    tails[5][lane] = fz[lane] * lastScale;
+    const float lastScale = geometry.lastDistance[lane] / lastLength;  // W(last) = |last| F
+    tails[lane] = tailX[lane] * tailScale;
+    tails[kPacketSize + lane] = tailY[lane] * tailScale;
+    tails[2 * kPacketSize + lane] = tailZ[lane] * tailScale;
+    tails[3 * kPacketSize + lane] = fx[lane] * lastScale;
+    tails[4 * kPacketSize + lane] = fy[lane] * lastScale;
+    tails[5 * kPacketSize + lane] = fz[lane] * lastScale;
   }
+}
+
+float CameraRays::maskTails(const float* alpha, const float* laneReach, const float* tails,
+                            float* run, float* reach) {
   float packetReach = 0.0f;
   for (int lane = 0; lane < kPacketSize; ++lane) {
+    reach[lane] = alpha[lane] >= 0.5f ? laneReach[lane] : 0.0f;
     const bool lit = reach[lane] > 0.0f;  // unlit lanes: zeros (lit ones have a unit direction)
     for (int component = 0; component < 6; ++component)
-      run[component * kPacketSize + lane] = lit ? tails[component][lane] : 0.0f;
+      run[component * kPacketSize + lane] = lit ? tails[component * kPacketSize + lane] : 0.0f;
     packetReach = std::max(packetReach, reach[lane]);
   }
   return packetReach;
+}
+
+void CameraRays::pixelAlpha(const float* px, const float* py, int count, float* alpha) const {
+  alignas(32) Lanes fx, fy, fz;
+  pixelSamples(px, py, count, fx.data(), fy.data(), fz.data(), alpha);
+}
+
+float CameraRays::exactTails(const float* px, const float* py, int count, float* run,
+                             float* reach) const {
+  alignas(32) Lanes alpha;
+  pixelAlpha(px, py, count, alpha.data());
+  TailGeometry geometry;
+  alignas(32) std::array<float, 6 * kPacketSize> tails;
+  tailsAt(px, py, count, geometry, tails.data());
+  return maskTails(alpha.data(), geometry.reach.data(), tails.data(), run, reach);
 }
 
 }  // namespace confvis::embree

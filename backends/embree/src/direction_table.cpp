@@ -1,6 +1,10 @@
 #include "direction_table.hpp"
 
+#include <optional>
+
 #include <tbb/parallel_for.h>
+
+#include "tail_lattice.hpp"
 
 namespace confvis::embree {
 
@@ -19,7 +23,14 @@ DirectionTable::DirectionTable(const WallMapGrid& grid, const TileJob& job)
           },
           false) {}
 
+DirectionTable::DirectionTable(const TileJob& job, const CameraRays& exactRays)
+    : DirectionTable(job, PacketSampler{}, true, &exactRays) {}
+
 DirectionTable::DirectionTable(const TileJob& job, const PacketSampler& sampler, bool withOrigins)
+    : DirectionTable(job, sampler, withOrigins, nullptr) {}
+
+DirectionTable::DirectionTable(const TileJob& job, const PacketSampler& sampler, bool withOrigins,
+                               const CameraRays* exactRays)
     : width_(job.width),
       height_(job.height),
       samplesPerPixel_(job.samplesPerPixel),
@@ -41,15 +52,18 @@ DirectionTable::DirectionTable(const TileJob& job, const PacketSampler& sampler,
              static_cast<std::size_t>(job.samplesPerPixel);
   components_.assign(stride() * packets, 0.0f);
   if (withOrigins_) reach_.assign(packets, 0.0f);
-  fill(job, sampler);
+  fill(job, sampler, exactRays);
 }
 
-void DirectionTable::fill(const TileJob& job, const PacketSampler& sampler) {
+void DirectionTable::fill(const TileJob& job, const PacketSampler& sampler,
+                          const CameraRays* exactRays) {
   // Tiles in parallel, each packet from the sampler straight into its run.
   const int tiles = static_cast<int>(tileFirstPacket_.size());
   tbb::parallel_for(0, tiles, [&](int tile) {
     const int x0 = (tile % tilesAcross_) * tileSize_, y0 = (tile / tilesAcross_) * tileSize_;
     const int x1 = std::min(x0 + tileSize_, width_), y1 = std::min(y0 + tileSize_, height_);
+    std::optional<TailLattice> tails;
+    if (exactRays) tails.emplace(*exactRays, job, x0, y0, x1, y1);
     for (int sample = 0; sample < samplesPerPixel_; ++sample)
       for (int y = y0; y < y1; y += kBlockRows)
         for (int x = x0; x < x1; x += kBlockColumns) {
@@ -61,8 +75,11 @@ void DirectionTable::fill(const TileJob& job, const PacketSampler& sampler) {
           std::array<float, kPacketSize> px, py;
           packetPositions(job, samples, px, py);
           const std::size_t packet = packetIndex(x, y, sample);
-          const float reach = sampler(px.data(), py.data(), samples.count,
-                                      &components_[stride() * packet]);
+          float* run = &components_[stride() * packet];
+          std::array<float, kPacketSize> laneReach;
+          const float reach = tails ? tails->tails(samples, px.data(), py.data(), run,
+                                                   laneReach.data())
+                                    : sampler(px.data(), py.data(), samples.count, run);
           if (withOrigins_) reach_[packet] = reach;
         }
   });

@@ -46,6 +46,9 @@ class DirectionTable {
   // Any straight rays, one per sample, packet by packet from `sampler`; `withOrigins`: each its
   // own origin.
   DirectionTable(const TileJob& job, const PacketSampler& sampler, bool withOrigins);
+  // Exact stereo rays' tails, with origins, tile by tile through the tile's TailLattice (as a
+  // frame without a table takes them, so the table draws the same pixels).
+  DirectionTable(const TileJob& job, const CameraRays& exactRays);
 
   // The packet of sample `sample` of the block whose top-left pixel is (x, y) (a tile's corner
   // plus multiples of the block size): the direction's x components at [0, 8), y at [8, 16), z at
@@ -61,8 +64,11 @@ class DirectionTable {
   std::size_t bytes() const { return components_.size() * sizeof(float); }
 
  private:
+  DirectionTable(const TileJob& job, const PacketSampler& sampler, bool withOrigins,
+                 const CameraRays* exactRays);
   std::size_t stride() const { return (withOrigins_ ? 6 : 3) * kPacketSize; }
-  void fill(const TileJob& job, const PacketSampler& sampler);
+  // `exactRays`: the tails from each tile's TailLattice instead of `sampler`.
+  void fill(const TileJob& job, const PacketSampler& sampler, const CameraRays* exactRays);
   // The packet holding sample `sample` of pixel (x, y), and the pixel's lane in it.
   std::size_t packetIndex(int x, int y, int sample) const {
     const int tileX = x / tileSize_, tileY = y / tileSize_;

@@ -95,13 +95,7 @@ struct EmbreeBackend::Impl {
     if (centre) {
       entry.table = std::make_unique<embree::DirectionTable>(grid, job);
     } else if (withOrigins) {
-      entry.table = std::make_unique<embree::DirectionTable>(
-          job,
-          [&rays](const float* px, const float* py, int count, float* run) {
-            std::array<float, embree::kPacketSize> reach;
-            return rays.exactTails(px, py, count, run, reach.data());
-          },
-          true);
+      entry.table = std::make_unique<embree::DirectionTable>(job, rays);
     } else {
       entry.table = std::make_unique<embree::DirectionTable>(
           job,

@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "camera_packet.hpp"
+#include "tail_lattice.hpp"
 
 namespace confvis::embree {
 
@@ -64,12 +65,13 @@ void renderTileSingleSample(const EmbreeScene& scene, const CameraRays& rays, co
   PacketColours colours;
   std::array<std::uint32_t, kPacketSize> sampleSeeds{};  // occlusion rays only
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
+  TailLattice tails(rays, job, x0, y0, x1, y1);  // evaluated only if exact tails are asked for
   // Two packets (4 x 4 pixels) traced at once (traceCameraPacketPair), then shaded one by one.
   for (int y = y0; y < y1; y += 2 * kBlockRows) {
     for (int x = x0; x < x1; x += kBlockColumns) {
       std::array<PacketSamples, 2> samples = {blockAt(x, y, x1, y1), PacketSamples{}};
       if (y + kBlockRows < y1) samples[1] = blockAt(x, y + kBlockRows, x1, y1);
-      cameraRays += traceCameraPacketPair(scene, rays, job, samples, hits);
+      cameraRays += traceCameraPacketPair(scene, rays, job, samples, hits, &tails);
       for (int half = 0; half < 2 && samples[half].count > 0; ++half) {
         const PacketSamples& packet = samples[half];
         if (job.shading.ambientOcclusion)  // the supersampled loop's seeds of sample 0
@@ -96,6 +98,7 @@ void renderTileSupersampled(const EmbreeScene& scene, const CameraRays& rays,
   PacketColours colours;
   std::uint64_t cameraRays = 0, occlusionRays = 0, retraced = 0;
   const float scale = 1.0f / static_cast<float>(job.samplesPerPixel);
+  TailLattice tails(rays, job, x0, y0, x1, y1);
   for (int y = y0; y < y1; y += kBlockRows) {
     for (int x = x0; x < x1; x += kBlockColumns) {
       PacketSamples samples = blockAt(x, y, x1, y1);
@@ -108,7 +111,7 @@ void renderTileSupersampled(const EmbreeScene& scene, const CameraRays& rays,
         pair[0].sample = first;
         pair[1].sample = first + 1;
         if (first + 1 == job.samplesPerPixel) pair[1].count = 0;  // an odd count's last
-        cameraRays += traceCameraPacketPair(scene, rays, job, pair, hits);
+        cameraRays += traceCameraPacketPair(scene, rays, job, pair, hits, &tails);
         for (int half = 0; half < 2 && pair[half].count > 0; ++half) {
           const auto sample = static_cast<std::uint32_t>(pair[half].sample);
           std::array<std::uint32_t, kPacketSize> sampleSeeds{};

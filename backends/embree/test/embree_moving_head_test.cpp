@@ -143,13 +143,7 @@ TEST(EmbreeMovingHead, APreviousHeadsExactTableFailsTheReference) {
   job.pixelToWall = {static_cast<double>(wall.width) / planned.width,
                      static_cast<double>(wall.height) / planned.height};
   const auto tableOf = [&](const CameraRays& of) {
-    return DirectionTable(
-        job,
-        [&of](const float* px, const float* py, int count, float* run) {
-          std::array<float, kPacketSize> reach;
-          return of.exactTails(px, py, count, run, reach.data());
-        },
-        true);
+    return DirectionTable(job, of);
   };
   const DirectionTable own = tableOf(rays), stale = tableOf(previousRays);
   const auto render = [&](const DirectionTable* table) {

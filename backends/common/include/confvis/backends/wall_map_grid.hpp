@@ -41,6 +41,11 @@ class WallMapGrid {
 
   std::size_t sampleCount() const { return samples_.size(); }
 
+  // Whether at() gives alpha >= 0.5 at every position of the box [px0, px1] x [py0, py1]
+  // (wall pixels): every grid sample of the cells the box touches is lit with a margin (a
+  // bilinear blend stays above its corners' least, up to rounding). False can still be lit.
+  bool litThroughout(float px0, float py0, float px1, float py1) const;
+
  private:
   int columns_ = 1, rows_ = 1;         // cells
   float cellsPerPixelX_ = 1, cellsPerPixelY_ = 1;

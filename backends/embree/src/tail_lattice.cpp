@@ -1,0 +1,211 @@
+#include "tail_lattice.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace confvis::embree {
+
+namespace {
+
+using Lanes = std::array<float, kPacketSize>;
+
+}  // namespace
+
+TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int y0, int x1,
+                         int y1, float tolerancePixels)
+    : rays_(rays),
+      pixelToWall_(static_cast<float>(job.pixelToWall.x), static_cast<float>(job.pixelToWall.y)),
+      x0_(x0),
+      y0_(y0),
+      cellsAcross_((x1 - x0 + kTailCellPixels - 1) / kTailCellPixels),
+      cellsDown_((y1 - y0 + kTailCellPixels - 1) / kTailCellPixels),
+      tolerancePixels_(tolerancePixels),
+      // Packets (blocks of 4 x 2 from the tile's corner) must each lie inside one cell.
+      usable_(job.tileSize % kTailCellPixels == 0 && kTailCellPixels % kBlockColumns == 0 &&
+              kTailCellPixels % kBlockRows == 0) {}
+
+void TailLattice::build() {
+  built_ = true;
+  const int across = cellsAcross_ + 1, down = cellsDown_ + 1;
+  const int nodeCount = across * down, cellCount = cellsAcross_ * cellsDown_;
+  // The positions: every cell corner, then every cell centre, in wall pixels.
+  std::vector<float> wallX, wallY;
+  for (int j = 0; j < down; ++j)
+    for (int i = 0; i < across; ++i) {
+      wallX.push_back(static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x);
+      wallY.push_back(static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y);
+    }
+  constexpr float kHalfCell = 0.5f * kTailCellPixels;
+  for (int j = 0; j < cellsDown_; ++j)
+    for (int i = 0; i < cellsAcross_; ++i) {
+      wallX.push_back((static_cast<float>(x0_ + kTailCellPixels * i) + kHalfCell) * pixelToWall_.x);
+      wallY.push_back((static_cast<float>(y0_ + kTailCellPixels * j) + kHalfCell) * pixelToWall_.y);
+    }
+  const int total = nodeCount + cellCount;
+  std::vector<Point> points(static_cast<std::size_t>(total));
+  for (int first = 0; first < total; first += kPacketSize) {
+    const int count = std::min(kPacketSize, total - first);
+    alignas(32) Lanes px, py;
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const auto at = static_cast<std::size_t>(first + std::min(lane, count - 1));
+      px[lane] = wallX[at], py[lane] = wallY[at];
+    }
+    CameraRays::TailGeometry geometry;
+    alignas(32) std::array<float, 6 * kPacketSize> tails;
+    rays_.tailsAt(px.data(), py.data(), count, geometry, tails.data());
+    for (int lane = 0; lane < count; ++lane) {
+      const auto component = [&](int k) { return tails[static_cast<std::size_t>(k * kPacketSize + lane)]; };
+      Point& point = points[static_cast<std::size_t>(first + lane)];
+      point.direction = {component(0), component(1), component(2)};
+      const glm::vec3 start(component(3), component(4), component(5));
+      point.offset = start - glm::dot(start, point.direction) * point.direction;
+      point.u = {geometry.ux[lane], geometry.uy[lane], geometry.uz[lane]};
+      point.h = geometry.h[lane];
+    }
+  }
+  nodes_.assign(points.begin(), points.begin() + nodeCount);
+  pass_.assign(static_cast<std::size_t>(cellCount), 0);
+  lit_.assign(static_cast<std::size_t>(cellCount), 0);
+  const glm::vec3 eye = rays_.eyeFromCentre();
+  const float eyeDistance = glm::length(eye);
+  const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
+  for (int cell = 0; cell < cellCount; ++cell) {
+    const int i = cell % cellsAcross_, j = cell / cellsAcross_;
+    const Point& centre = points[static_cast<std::size_t>(nodeCount + cell)];
+    const std::array<const Point*, 4> corners = {
+        &nodes_[static_cast<std::size_t>(j * across + i)],
+        &nodes_[static_cast<std::size_t>(j * across + i + 1)],
+        &nodes_[static_cast<std::size_t>((j + 1) * across + i)],
+        &nodes_[static_cast<std::size_t>((j + 1) * across + i + 1)]};
+    glm::vec3 direction(0.0f), offset(0.0f);
+    float chord = 0.0f;  // the cell's angular radius seen from the eye (its corners' farthest)
+    for (const Point* corner : corners) {
+      direction += 0.25f * corner->direction;
+      offset += 0.25f * corner->offset;
+      chord = std::max(chord, glm::length(corner->u - centre.u));
+    }
+    // The smallest reach in the cell: h is 1-Lipschitz in u times |e - c|.
+    const float reach =
+        std::max(eyeDistance, (centre.h - eyeDistance * chord) / sinAsymptote);
+    // The line's angular error: the turn plus the offset's shift over the nearest hit.
+    const auto angle = [reach](const glm::vec3& turn, const glm::vec3& shift) {
+      return glm::length(turn) + glm::length(shift) / reach;
+    };
+    // At the centre; and from the lattice's second differences along each axis (the bilinear
+    // blend's error is at most (|f_xx| + |f_yy|) / 8 in cell units, which the centre alone
+    // misses where the two cancel, a saddle): at the cell's corners' nodes that have both
+    // neighbours in the tile. A cell with none along an axis (a tile one cell wide) is not
+    // interpolated.
+    const auto secondDifference = [&](int ni, int nj, int di, int dj, float& worst) {
+      if (ni - di < 0 || nj - dj < 0 || ni + di >= across || nj + dj >= down) return false;
+      const Point& before = nodes_[static_cast<std::size_t>((nj - dj) * across + ni - di)];
+      const Point& at = nodes_[static_cast<std::size_t>(nj * across + ni)];
+      const Point& after = nodes_[static_cast<std::size_t>((nj + dj) * across + ni + di)];
+      worst = std::max(worst, angle(before.direction - 2.0f * at.direction + after.direction,
+                                    before.offset - 2.0f * at.offset + after.offset));
+      return true;
+    };
+    float alongX = 0.0f, alongY = 0.0f;
+    bool seenX = false, seenY = false;
+    for (int dj = 0; dj <= 1; ++dj)
+      for (int di = 0; di <= 1; ++di) {
+        seenX = secondDifference(i + di, j + dj, 1, 0, alongX) || seenX;
+        seenY = secondDifference(i + di, j + dj, 0, 1, alongY) || seenY;
+      }
+    const float error =
+        std::max(angle(glm::normalize(direction) - centre.direction, offset - centre.offset),
+                 seenX && seenY ? 0.125f * (alongX + alongY)
+                                : std::numeric_limits<float>::infinity());
+    // One output pixel's angle at the centre, the smaller of across and down.
+    const glm::vec3 toWall = rays_.rayBase() + wallX[static_cast<std::size_t>(nodeCount + cell)] *
+                                                   rays_.rayStepX() +
+                             wallY[static_cast<std::size_t>(nodeCount + cell)] * rays_.rayStepY();
+    const float distance = glm::length(toWall);
+    const glm::vec3 unit = toWall / distance;
+    const auto across1 = [&](const glm::vec3& step) {
+      return glm::length(step - glm::dot(step, unit) * unit) / distance;
+    };
+    const float pixelAngle = std::min(across1(pixelToWall_.x * rays_.rayStepX()),
+                                      across1(pixelToWall_.y * rays_.rayStepY()));
+    // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
+    // no lookup per sample (an override's alpha is its rays', not the wall pixel's).
+    const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
+    const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
+    lit_[static_cast<std::size_t>(cell)] =
+        !rays_.overridden() && rays_.mapGrid() &&
+        rays_.mapGrid()->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
+                                       top + kTailCellPixels * pixelToWall_.y);
+    pass_[static_cast<std::size_t>(cell)] =
+        std::isinf(tolerancePixels_) || error <= tolerancePixels_ * pixelAngle ? 1 : 0;
+  }
+}
+
+bool TailLattice::interpolated(int x, int y) {
+  if (!usable_) return false;
+  if (!built_) build();
+  return pass_[static_cast<std::size_t>(cellIndex(x, y))] != 0;
+}
+
+float TailLattice::tails(const PacketSamples& samples, const float* px, const float* py,
+                         float* run, float* reach) {
+  if (!interpolated(samples.x, samples.y))
+    return rays_.exactTails(px, py, samples.count, run, reach);
+  const int cell = cellIndex(samples.x, samples.y);
+  const int i = cell % cellsAcross_, j = cell / cellsAcross_, across = cellsAcross_ + 1;
+  const Point& p00 = nodes_[static_cast<std::size_t>(j * across + i)];
+  const Point& p10 = nodes_[static_cast<std::size_t>(j * across + i + 1)];
+  const Point& p01 = nodes_[static_cast<std::size_t>((j + 1) * across + i)];
+  const Point& p11 = nodes_[static_cast<std::size_t>((j + 1) * across + i + 1)];
+  const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
+  const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
+  const float perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
+  const float perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
+  alignas(32) Lanes alpha;
+  if (lit_[static_cast<std::size_t>(cell)])
+    for (int lane = 0; lane < kPacketSize; ++lane) alpha[lane] = lane < samples.count ? 1.0f : 0.0f;
+  else
+    rays_.pixelAlpha(px, py, samples.count, alpha.data());
+  CameraRays::TailGeometry geometry;
+  rays_.tailGeometry(px, py, geometry);
+  // The corners' six components as scalars and the positions in locals (the loop vectorises).
+  float node[4][6];
+  const std::array<const Point*, 4> corners = {&p00, &p10, &p01, &p11};
+  for (int k = 0; k < 4; ++k)
+    for (int component = 0; component < 3; ++component) {
+      node[k][component] = corners[static_cast<std::size_t>(k)]->direction[component];
+      node[k][3 + component] = corners[static_cast<std::size_t>(k)]->offset[component];
+    }
+  alignas(32) Lanes positionX, positionY;
+  std::memcpy(positionX.data(), px, sizeof positionX);
+  std::memcpy(positionY.data(), py, sizeof positionY);
+  alignas(32) std::array<float, 6 * kPacketSize> tails;
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const float tx = (positionX[lane] - left) * perX, ty = (positionY[lane] - top) * perY;
+    const float w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
+    const float w01 = (1.0f - tx) * ty, w11 = tx * ty;
+    float blended[6];
+    for (int component = 0; component < 6; ++component)
+      blended[component] = w00 * node[0][component] + w10 * node[1][component] +
+                           w01 * node[2][component] + w11 * node[3][component];
+    const float inverseLength = 1.0f / std::sqrt(blended[0] * blended[0] +
+                                                 blended[1] * blended[1] + blended[2] * blended[2]);
+    const float dx = blended[0] * inverseLength, dy = blended[1] * inverseLength;
+    const float dz = blended[2] * inverseLength;
+    const float ox = blended[3], oy = blended[4], oz = blended[5];
+    // The start on the interpolated line at the sample's own |W(last)| = |last| from c.
+    const float distance = geometry.lastDistance[lane];
+    const float along = std::sqrt(std::max(0.0f, distance * distance - (ox * ox + oy * oy + oz * oz)));
+    tails[lane] = dx;
+    tails[kPacketSize + lane] = dy;
+    tails[2 * kPacketSize + lane] = dz;
+    tails[3 * kPacketSize + lane] = ox + along * dx;
+    tails[4 * kPacketSize + lane] = oy + along * dy;
+    tails[5 * kPacketSize + lane] = oz + along * dz;
+  }
+  return CameraRays::maskTails(alpha.data(), geometry.reach.data(), tails.data(), run, reach);
+}
+
+}  // namespace confvis::embree

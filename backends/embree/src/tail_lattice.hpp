@@ -1,0 +1,72 @@
+#pragma once
+// Exact stereo rays' tails of one tile, interpolated (issue 23). A tail (its direction F(u) and
+// its start W(last vertex)) costs two map lookups a sample; across a few pixels it is smooth
+// except for the start's spin around the ray near the eye's axis (where the curve is short).
+// The tile is cut into cells of kTailCellPixels x kTailCellPixels output pixels; the tails are
+// evaluated exactly (CameraRays::tailsAt) at the cells' corners and centres, and a cell's
+// samples are interpolated bilinearly from its corners only where the interpolated centre lies
+// within the stated bound of the exact centre and the lattice's second differences along x and
+// y bound the blend's error within it too (the centre alone misses a saddle); elsewhere each
+// sample gets its own tails (CameraRays::exactTails).
+//
+// What is interpolated is what decides the traced line: the unit direction D and the start's
+// offset across it, O = S - (S.D) D (about J_F(u) (e - c)_perp: smooth, where S itself spins
+// with the eye's offset across the ray). Each sample's start is rebuilt on its own line at its
+// own exact distance from c (|W(last)| = |last|, W keeps distances to c), so its reach, and
+// which of its segments the empty ball holds, stay exact. A line moved by dO and turned by dD
+// moves a hit at distance r from c by about |dO| / r + |dD| in angle, and every hit a tail
+// traces lies beyond the sample's reach (else the curve is marched): the check bounds
+// |dD| + |dO| / R, with R the smallest reach in the cell (from the centre's h less the cell's
+// angular radius), by kTailTolerancePixels of the cell's pixel angle.
+//
+// A renderer's tile and a DirectionTable's tile build the same lattice, so a table draws the
+// pixels a frame without one draws.
+#include <vector>
+
+#include "camera_packet.hpp"
+#include "camera_rays.hpp"
+#include "tile_renderer.hpp"
+
+namespace confvis::embree {
+
+inline constexpr int kTailCellPixels = 4;
+// The bound the centre check keeps, in output pixels (the curves' own bound is 0.25 px).
+inline constexpr float kTailTolerancePixels = 0.05f;
+
+class TailLattice {
+ public:
+  // The tile [x0, x1) x [y0, y1) of `job`'s image. Nothing is evaluated until the first tails().
+  // A tolerance of infinity interpolates every cell (tests: what the check rejects).
+  TailLattice(const CameraRays& rays, const TileJob& job, int x0, int y0, int x1, int y1,
+              float tolerancePixels = kTailTolerancePixels);
+
+  // CameraRays::exactTails for a packet of this tile (its positions px, py): interpolated where
+  // its cell passed the check, else exactTails itself.
+  float tails(const PacketSamples& samples, const float* px, const float* py, float* run,
+              float* reach);
+
+  // Whether the cell holding output pixel (x, y) of the tile is interpolated (builds the lattice).
+  bool interpolated(int x, int y);
+
+ private:
+  struct Point {  // the exact tail at one wall position, with what the check needs
+    glm::vec3 direction{0.0f}, offset{0.0f}, u{0.0f};
+    float h = 0.0f;
+  };
+  void build();
+  int cellIndex(int x, int y) const {
+    return ((y - y0_) / kTailCellPixels) * cellsAcross_ + (x - x0_) / kTailCellPixels;
+  }
+
+  const CameraRays& rays_;
+  glm::vec2 pixelToWall_{1.0f};
+  int x0_ = 0, y0_ = 0, cellsAcross_ = 0, cellsDown_ = 0;
+  float tolerancePixels_ = kTailTolerancePixels;
+  bool usable_ = false;  // tiles aligned to whole cells only
+  bool built_ = false;
+  std::vector<Point> nodes_;  // (cellsAcross + 1) x (cellsDown + 1) cell corners, row by row
+  std::vector<char> pass_;    // per cell: interpolated
+  std::vector<char> lit_;     // per cell: every sample lit (WallMapGrid::litThroughout)
+};
+
+}  // namespace confvis::embree
