@@ -97,8 +97,9 @@ void expectFailure(const std::string& args, int exitCode, const std::string& fra
   EXPECT_NE(run.output.find(fragment), std::string::npos) << args << ": " << run.output;
 }
 
-// --preset: accurate (the default) halves the config's edges unless --edge-length is given and
-// grades the mesh; fast and accurate bakes of one config never share a cache entry.
+// --preset: accurate (the default) halves the config's edges unless --edge-length is given,
+// grades the mesh and blends per-vertex Möbius maps (--interpolation overrides that); fast and
+// accurate bakes of one config never share a cache entry.
 TEST(CliBake, PresetsAreRecordedAndKeepTheirOwnCacheEntries) {
   const fs::path out = bakeScratch() / "presets";
   auto bake = [&](const std::string& extra) {
@@ -111,12 +112,18 @@ TEST(CliBake, PresetsAreRecordedAndKeepTheirOwnCacheEntries) {
   EXPECT_EQ(fastSidecar["map_settings"]["grading"], "uniform");
   const auto [accurate, accurateSidecar] = bake("");
   EXPECT_EQ(accurate.output.find("from the cache"), std::string::npos) << accurate.output;
-  EXPECT_EQ(accurateSidecar["map_settings"]["grading"]["radius_degrees"], 20.0);
+  EXPECT_EQ(accurateSidecar["map_settings"]["grading"]["radius_degrees"], 30.0);
+  EXPECT_EQ(fastSidecar["map_settings"]["interpolation"], "linear");
+  EXPECT_EQ(accurateSidecar["map_settings"]["interpolation"], "mobius");
   EXPECT_GT(accurateSidecar["meshes"]["target"]["vertices"].get<int>(),
             fastSidecar["meshes"]["target"]["vertices"].get<int>());
   const auto [again, againSidecar] = bake(" --preset fast");
   EXPECT_NE(again.output.find("from the cache"), std::string::npos) << again.output;
   EXPECT_EQ(againSidecar, fastSidecar);
+  const auto [linear, linearSidecar] = bake(" --interpolation linear");
+  EXPECT_EQ(linear.output.find("from the cache"), std::string::npos) << linear.output;
+  EXPECT_EQ(linearSidecar["map_settings"]["interpolation"], "linear");
+  EXPECT_EQ(linearSidecar["map_settings"]["grading"], accurateSidecar["map_settings"]["grading"]);
 }
 
 TEST(CliBake, BadInputGivesOneClearErrorAndNonZeroExit) {
@@ -128,6 +135,7 @@ TEST(CliBake, BadInputGivesOneClearErrorAndNonZeroExit) {
   expectFailure(config("cave5.json") + " --reference 1,2", -1, "--reference");
   expectFailure(config("cave5.json") + " --reference 1,2,z", -1, "--reference");
   expectFailure(config("cave5.json") + " --preset best", -1, "--preset");
+  expectFailure(config("cave5.json") + " --interpolation cubic", -1, "--interpolation");
   // Behind the front wall: the config validation names the wall.
   expectFailure(config("cave5.json") + " --reference 0,0,-2 -q", 2, "front");
   const fs::path garbage = bakeScratch() / "garbage.json";
@@ -139,7 +147,7 @@ TEST(CliBake, HasHelp) {
   const CliRun run = runCli("bake --help");
   EXPECT_EQ(run.exitCode, 0);
   for (const char* option : {"--output", "--resolution", "--edge-length", "--reference",
-                             "--no-cache", "--cache-dir", "--quiet", "--preset"})
+                             "--no-cache", "--cache-dir", "--quiet", "--preset", "--interpolation"})
     EXPECT_NE(run.output.find(option), std::string::npos) << option;
 }
 

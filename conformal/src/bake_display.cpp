@@ -36,12 +36,20 @@ DisplayMapOptions bakeMapOptions(const BakeDisplayOptions& options) {
   return map;
 }
 
+MapInterpolation bakeInterpolation(const BakeDisplayOptions& options) {
+  return options.interpolation.value_or(presetSettings(options.preset).interpolation);
+}
+
+nlohmann::json bakeMapSettings(const BakeDisplayOptions& options) {
+  const DisplayMapOptions map = bakeMapOptions(options);
+  return mapSettingsJson(map.route, map.grading, bakeInterpolation(options));
+}
+
 BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptions& options,
                              const DisplayMapSource& computeMap) {
   BakedDisplay result;
   result.config = effectiveBakeConfig(config, options);
-  const DisplayMapOptions mapOptions = bakeMapOptions(options);
-  const nlohmann::json mapSettings = mapSettingsJson(mapOptions.route, mapOptions.grading);
+  const nlohmann::json mapSettings = bakeMapSettings(options);
   if (options.useCache) {
     const std::filesystem::path directory =
         options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory;
@@ -60,6 +68,7 @@ BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptio
   bake.reference = {c.x, c.y, c.z};
   bake.threads = options.threads;
   bake.showProgress = options.showProgress;
+  bake.interpolation = bakeInterpolation(options);
   result.map = bakeRetargetMap(displayMap, result.config.cubeResolution, bake, &result.timings);
   result.sidecar = makeBakeSidecar(result.config, displayMap, result.map, result.timings, 0,
                                    options.showProgress);

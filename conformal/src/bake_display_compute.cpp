@@ -98,6 +98,7 @@ DisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
     BakeOptions bake;
     bake.reference = {config.reference.x, config.reference.y, config.reference.z};
     bake.threads = options.threads;
+    bake.interpolation = bakeInterpolation(options);  // the verdict judges the map as it is baked
     const BakeVerdict verdict = judgeBake(map, bakeRetargetMap(map, config.cubeResolution, bake));
     if (verdict.ok()) {
       map.stats["checks"] = verdict.toJson();

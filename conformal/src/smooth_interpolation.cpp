@@ -44,6 +44,30 @@ Complex chartFromLocal(const MobiusBlend::Chart& chart, Complex local) {
   return wedgePower(local, chart.diskWedge, 1.0 / chart.gamma) * chart.turn;
 }
 
+// Vertex `chart`'s Möbius map at direction x, and its inverse at disk point z (a unit vector).
+Complex chartToDisk(const MobiusBlend::Chart& chart, const Vec3d& x) {
+  const Complex w = localPoint(chart, x);
+  return chart.z0 + divide(chart.a * w, 1.0 + chart.c * w);
+}
+
+Vec3d chartToSphere(const MobiusBlend::Chart& chart, Complex z) {
+  const Complex n = z - chart.z0;
+  const Complex w = chartFromLocal(chart, divide(n, chart.a - chart.c * n));
+  const double r2 = std::norm(w);
+  return (1.0 / (1.0 + r2)) *
+         (2 * w.real() * chart.e1 + 2 * w.imag() * chart.e2 + (1.0 - r2) * chart.p);
+}
+
+// A triangle is checked for folds where one of its corners' Möbius maps misses a neighbour's
+// image by more than this fraction of the edge to it. The blend's Jacobian is the weighted mean
+// of the corners' Jacobians plus (M_i - blend) x grad(weight_i), the weights' gradients ~2 / edge:
+// it turns over only where the corners' maps disagree by a good fraction of the edge. On cave5
+// this screens ~1 % of the triangles (conformal/README.md), and the unscreened rest has no fold
+// (MobiusFoldGuard checks every triangle).
+constexpr double kFoldScreen = 0.05;
+// Points per side of the grid of barycentric points where a screened triangle is checked.
+constexpr int kFoldGrid = 8;
+
 // Fits z' = a w / (1 + c w) to the one-ring (w_k, z'_k) by linear least squares of
 // a w - c w z' = z' (the equation times 1 + c w). A Möbius map through the vertex has exactly
 // these two complex parameters, so a ring that one Möbius map fits is reproduced exactly. Where
@@ -90,7 +114,8 @@ std::array<double, 3> mobiusBlendWeights(const std::array<double, 3>& b) {
   return w;
 }
 
-MobiusBlend::MobiusBlend(const SphereDiskMesh& mesh) : mesh_(mesh), charts_(mesh.sphere.size()) {
+MobiusBlend::MobiusBlend(const SphereDiskMesh& mesh, bool unfoldBlend)
+    : mesh_(mesh), charts_(mesh.sphere.size()), linear_(mesh.sphere.size(), 0) {
   std::vector<std::vector<int>> ring(mesh.sphere.size());
   for (const auto& t : mesh.triangles)
     for (int i = 0; i < 3; ++i)
@@ -140,6 +165,97 @@ MobiusBlend::MobiusBlend(const SphereDiskMesh& mesh) : mesh_(mesh), charts_(mesh
     }
     fitMobius(w, z, chart.a, chart.c);
   }
+  if (!unfoldBlend) return;
+  std::vector<double> misfit(charts_.size(), 0.0);
+  for (std::size_t v = 0; v < charts_.size(); ++v)
+    for (int k : ring[v]) {
+      const double diskEdge = std::abs(mesh.disk[k] - mesh.disk[v]);
+      const double sphereEdge = norm(mesh.sphere[k] - mesh.sphere[v]);
+      const double diskMiss = std::abs(chartToDisk(charts_[v], mesh.sphere[k]) - mesh.disk[k]);
+      const double sphereMiss = norm(chartToSphere(charts_[v], mesh.disk[k]) - mesh.sphere[k]);
+      if (diskEdge > 0) misfit[v] = std::max(misfit[v], diskMiss / diskEdge);
+      if (sphereEdge > 0) misfit[v] = std::max(misfit[v], sphereMiss / sphereEdge);
+    }
+  unfold(ring, misfit);
+}
+
+std::size_t MobiusBlend::linearVertices() const {
+  return static_cast<std::size_t>(std::count(linear_.begin(), linear_.end(), 1));
+}
+
+bool MobiusBlend::folds(int t) const {
+  const auto& c = mesh_.triangles[t];
+  const Vec3d &s0 = mesh_.sphere[c[0]], &s1 = mesh_.sphere[c[1]], &s2 = mesh_.sphere[c[2]];
+  const Complex z0 = mesh_.disk[c[0]], z1 = mesh_.disk[c[1]], z2 = mesh_.disk[c[2]];
+  // The linear map's orientation either way (derivatives along b0 and b1, b2 = 1 - b0 - b1).
+  const double diskTurn = (std::conj(z0 - z2) * (z1 - z2)).imag();
+  const double sphereTurn = dot(s2, cross(s0 - s2, s1 - s2));
+  // A degenerate triangle is the bake verdict's business (flipped triangles), not the blend's.
+  if (!(diskTurn != 0) || !(sphereTurn != 0)) return false;
+  auto toDiskAt = [&](const std::array<double, 3>& b) {
+    return toDisk(t, b, normalized(b[0] * s0 + b[1] * s1 + b[2] * s2));
+  };
+  auto toSphereAt = [&](const std::array<double, 3>& l) {
+    return toSphere(t, l, l[0] * z0 + l[1] * z1 + l[2] * z2);
+  };
+  constexpr double h = 1e-5;
+  for (int i = 0; i < kFoldGrid; ++i)
+    for (int j = 0; i + j < kFoldGrid; ++j) {
+      const double b0 = (i + 1.0 / 3) / kFoldGrid, b1 = (j + 1.0 / 3) / kFoldGrid;
+      const std::array<double, 3> b{b0, b1, 1 - b0 - b1}, along0{b0 + h, b1, 1 - b0 - b1 - h},
+          along1{b0, b1 + h, 1 - b0 - b1 - h};
+      const Complex z = toDiskAt(b);
+      const double diskDet = (std::conj(toDiskAt(along0) - z) * (toDiskAt(along1) - z)).imag();
+      if (!(diskDet * diskTurn > 0)) return true;
+      const Vec3d x = toSphereAt(b);
+      const double sphereDet = dot(x, cross(toSphereAt(along0) - x, toSphereAt(along1) - x));
+      if (!(sphereDet * sphereTurn > 0)) return true;
+    }
+  return false;
+}
+
+void MobiusBlend::unfold(const std::vector<std::vector<int>>& rings,
+                         const std::vector<double>& misfit) {
+  std::vector<int> check;
+  for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+    const auto& c = mesh_.triangles[t];
+    if (std::max({misfit[c[0]], misfit[c[1]], misfit[c[2]]}) > kFoldScreen)
+      check.push_back(static_cast<int>(t));
+  }
+  std::vector<std::vector<int>> around;  // triangles around each vertex, once needed
+  while (!check.empty()) {
+    std::vector<int> flagged;
+    auto flag = [&](int v) {
+      if (linear_[v]) return;
+      linear_[v] = 1;
+      flagged.push_back(v);
+    };
+    // The corners of a folding triangle and their neighbours: every triangle around its corners
+    // becomes the linear map, so the blends mix linear and Möbius maps one ring further out,
+    // away from the misfit (mixed next to a singular corner, the map kinks hard enough for the
+    // baked texels' finite differences to turn over).
+    for (int t : check)
+      if (folds(t))
+        for (int v : mesh_.triangles[t]) {
+          flag(v);
+          for (int k : rings[v]) flag(k);
+        }
+    check.clear();
+    if (flagged.empty()) break;
+    if (around.empty()) {
+      around.resize(charts_.size());
+      for (std::size_t t = 0; t < mesh_.triangles.size(); ++t)
+        for (int v : mesh_.triangles[t]) around[v].push_back(static_cast<int>(t));
+    }
+    // The triangles around newly linear corners blend differently now: check them again.
+    for (int v : flagged)
+      for (int t : around[v]) {
+        const auto& c = mesh_.triangles[t];
+        if (!(linear_[c[0]] && linear_[c[1]] && linear_[c[2]])) check.push_back(t);
+      }
+    std::sort(check.begin(), check.end());
+    check.erase(std::unique(check.begin(), check.end()), check.end());
+  }
 }
 
 // Per texel of a bake: written in real arithmetic with one division per corner (the library's
@@ -151,6 +267,13 @@ std::complex<double> MobiusBlend::toDisk(int t, const std::array<double, 3>& b,
   double zx = 0, zy = 0;
   for (int i = 0; i < 3; ++i) {
     if (weight[i] == 0) continue;
+    if (linear_[corners[i]]) {
+      const Complex linear = b[0] * mesh_.disk[corners[0]] + b[1] * mesh_.disk[corners[1]] +
+                             b[2] * mesh_.disk[corners[2]];
+      zx += weight[i] * linear.real();
+      zy += weight[i] * linear.imag();
+      continue;
+    }
     const Chart& chart = charts_[corners[i]];
     // z0 + a w / (1 + c w) with w = W / s, W = (x . e1) + i (x . e2), s = 1 + x . p:
     // z0 + a W / (s + c W).
@@ -182,6 +305,12 @@ Vec3d MobiusBlend::toSphere(int t, const std::array<double, 3>& l, std::complex<
   Vec3d sum{0.0};
   for (int i = 0; i < 3; ++i) {
     if (weight[i] == 0) continue;
+    if (linear_[corners[i]]) {  // a unit vector, like the Möbius maps' terms
+      sum += weight[i] * normalized(l[0] * mesh_.sphere[corners[0]] +
+                                    l[1] * mesh_.sphere[corners[1]] +
+                                    l[2] * mesh_.sphere[corners[2]]);
+      continue;
+    }
     const Chart& chart = charts_[corners[i]];
     // The inverse of z0 + a w / (1 + c w): w = N / D, N = z - z0, D = a - c N.
     const double nx = z.real() - chart.z0.real(), ny = z.imag() - chart.z0.imag();

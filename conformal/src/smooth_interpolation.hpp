@@ -15,8 +15,9 @@ namespace confvis::detail {
 
 class MobiusBlend {
  public:
-  // Keeps a reference to `mesh`, which must outlive it.
-  explicit MobiusBlend(const SphereDiskMesh& mesh);
+  // Keeps a reference to `mesh`, which must outlive it. `unfold` false keeps every vertex's
+  // Möbius map even where the blend folds (tests: the folds the guard removes).
+  explicit MobiusBlend(const SphereDiskMesh& mesh, bool unfold = true);
 
   // The disk point of unit direction x, which lies in triangle t with chord barycentric
   // coordinates b (clamped to >= 0 here).
@@ -37,9 +38,26 @@ class MobiusBlend {
   };
   const Chart& chart(int vertex) const { return charts_[vertex]; }
 
+  // Vertices blended with the triangle's linear map instead of their Möbius map: the corners of
+  // triangles where the blend folded (its Jacobian changed sign), found when the blend is built.
+  // The linear map of a corner is that of the triangle being evaluated, which agrees with its
+  // neighbour's on their shared edge, so the blend stays continuous; a triangle with three such
+  // corners is the linear map, which keeps the disk triangle's orientation.
+  bool blendsLinearly(int vertex) const { return linear_[vertex] != 0; }
+  std::size_t linearVertices() const;
+
+  // Whether the blend of triangle t turns over, either way (sphere -> disk or disk -> sphere),
+  // at a grid of points inside it.
+  bool folds(int t) const;
+
  private:
+  // Sets linear_ for the corners of folding triangles, checking those whose corners' Möbius maps
+  // miss their neighbours by more than kFoldScreen (misfit, per vertex), until none folds.
+  void unfold(const std::vector<std::vector<int>>& rings, const std::vector<double>& misfit);
+
   const SphereDiskMesh& mesh_;
   std::vector<Chart> charts_;
+  std::vector<std::uint8_t> linear_;
 };
 
 class DiskLocator;

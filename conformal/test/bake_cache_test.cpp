@@ -208,20 +208,31 @@ TEST(BakeCache, MapSettingsChangeTheKey) {
   graded30.grading = TemplateGrading{.radiusDegrees = 30};
   BakeDisplayOptions euclidean = uniform;
   euclidean.route = DisplayMapRoute::Euclidean;
+  BakeDisplayOptions mobius = uniform;
+  mobius.interpolation = MapInterpolation::Mobius;
   BakeDisplayOptions accurate = uniform;
-  accurate.preset = BakePreset::Accurate;  // its grading; the explicit edge stays
+  accurate.preset = BakePreset::Accurate;  // its grading and interpolation; the explicit edge stays
+  BakeDisplayOptions accurateLinear = accurate;
+  accurateLinear.interpolation = MapInterpolation::Linear;
   std::set<fs::path> entries;
-  for (const BakeDisplayOptions* o : {&uniform, &graded, &graded30, &euclidean, &accurate}) {
+  for (const BakeDisplayOptions* o :
+       {&uniform, &graded, &graded30, &euclidean, &mobius, &accurate, &accurateLinear}) {
     const BakedDisplay baked = bakeDisplayWith(cave5(), *o, std::ref(source));
     EXPECT_FALSE(baked.fromCache);
     EXPECT_EQ(baked.config.hash, effectiveBakeConfig(cave5(), uniform).hash);
     EXPECT_TRUE(entries.insert(baked.cacheEntry).second) << baked.cacheEntry;
     const DisplayMapOptions map = bakeMapOptions(*o);
-    EXPECT_EQ(baked.sidecar.at("map_settings"), mapSettingsJson(map.route, map.grading));
+    EXPECT_EQ(baked.sidecar.at("map_settings"),
+              mapSettingsJson(map.route, map.grading, bakeInterpolation(*o)));
   }
-  EXPECT_EQ(source.calls, 5);
+  EXPECT_EQ(source.calls, 7);
+  // The interpolation is what the bake used: the Möbius and linear bakes of one mesh differ.
+  const BakedDisplay linearBake = bakeDisplayWith(cave5(), uniform, std::ref(source));
+  const BakedDisplay mobiusBake = bakeDisplayWith(cave5(), mobius, std::ref(source));
+  EXPECT_FALSE(sameMaps(linearBake.map, mobiusBake.map));
+  EXPECT_EQ(mobiusBake.sidecar.at("map_settings").at("interpolation"), "mobius");
   EXPECT_TRUE(bakeDisplayWith(cave5(), graded, std::ref(source)).fromCache);
-  EXPECT_EQ(source.calls, 5);
+  EXPECT_EQ(source.calls, 7);
   // An entry under the graded key whose bake.json says uniform (hand-copied) is rebuilt.
   const fs::path uniformEntry = bakeDisplayWith(cave5(), uniform, std::ref(source)).cacheEntry;
   const fs::path gradedEntry = bakeDisplayWith(cave5(), graded, std::ref(source)).cacheEntry;
@@ -230,7 +241,7 @@ TEST(BakeCache, MapSettingsChangeTheKey) {
   const BakedDisplay rebuilt = bakeDisplayWith(cave5(), graded, std::ref(source));
   EXPECT_FALSE(rebuilt.fromCache);
   EXPECT_NE(rebuilt.cacheNote.find("map settings"), std::string::npos) << rebuilt.cacheNote;
-  EXPECT_EQ(source.calls, 6);
+  EXPECT_EQ(source.calls, 8);
 }
 
 TEST(BakeCache, PresetsScaleTheConfigEdgeUnlessOneIsGiven) {
@@ -246,6 +257,14 @@ TEST(BakeCache, PresetsScaleTheConfigEdgeUnlessOneIsGiven) {
   EXPECT_DOUBLE_EQ(effectiveBakeConfig(config, accurate).edgeLength, 0.3);
   EXPECT_GT(bakeMapOptions(accurate).grading.radiusDegrees, 0);
   EXPECT_EQ(bakeMapOptions(fast).grading.radiusDegrees, 0);
+  EXPECT_EQ(bakeInterpolation(accurate), MapInterpolation::Mobius);
+  EXPECT_EQ(bakeInterpolation(fast), MapInterpolation::Linear);
+  accurate.interpolation = MapInterpolation::Linear;
+  EXPECT_EQ(bakeInterpolation(accurate), MapInterpolation::Linear);
+  EXPECT_EQ(parseMapInterpolation("mobius"), MapInterpolation::Mobius);
+  EXPECT_EQ(parseMapInterpolation("linear"), MapInterpolation::Linear);
+  test::expectError([] { parseMapInterpolation("cubic"); }, ErrorCode::InvalidInput,
+                    "linear or mobius");
   EXPECT_EQ(parseBakePreset("fast"), BakePreset::Fast);
   EXPECT_EQ(parseBakePreset("accurate"), BakePreset::Accurate);
   test::expectError([] { parseBakePreset("best"); }, ErrorCode::InvalidInput, "fast or accurate");

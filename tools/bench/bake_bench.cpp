@@ -99,9 +99,11 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"fast", "accurate"}));
   auto* edgesOption = app.get_option("--edges");
   std::string interpolations = "linear";
-  app.add_option("--interpolations", interpolations,
-                 "Map interpolations, comma-separated: linear, mobius (one row each)")
-      ->capture_default_str();
+  auto* interpolationsOption =
+      app.add_option("--interpolations", interpolations,
+                     "Map interpolations, comma-separated: linear, mobius (one row each; "
+                     "default: the preset's, else linear)")
+          ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
 
   const DisplayConfig base = loadDisplayConfig(configPath);
@@ -109,8 +111,9 @@ int main(int argc, char** argv) {
   if (!presetName.empty()) {
     preset = presetSettings(parseBakePreset(presetName));
     if (edgesOption->count() == 0) edges = std::to_string(preset->edgeScale * base.edgeLength);
-    std::printf("preset %s: route %s, grading %s\n", presetName.c_str(), toString(preset->route),
-                mapSettingsJson(preset->route, preset->grading)["grading"].dump().c_str());
+    if (interpolationsOption->count() == 0) interpolations = toString(preset->interpolation);
+    std::printf("preset %s: %s\n", presetName.c_str(),
+                mapSettingsJson(preset->route, preset->grading, preset->interpolation).dump().c_str());
   }
   const Vec3d moved{0.15, 0.1, -0.2};  // a head 27 cm off centre
   std::printf("config %s, %u hardware threads, bake threads %d, median of %d runs; times in ms\n",
@@ -145,8 +148,7 @@ int main(int argc, char** argv) {
           BakeOptions bake;
           bake.reference = {config.reference.x, config.reference.y, config.reference.z};
           bake.threads = threads;
-          bake.interpolation =
-              interpolation == "mobius" ? MapInterpolation::Mobius : MapInterpolation::Linear;
+          bake.interpolation = parseMapInterpolation(interpolation);
           BakeTimings t;
           bakeRetargetMapInto(last, n, bake, map, &t);
           Sample s;

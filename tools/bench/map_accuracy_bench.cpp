@@ -30,6 +30,7 @@
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/bake.hpp"
+#include "confvis/conformal/bake_preset.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/map_accuracy.hpp"
 #include "confvis/engine/display_config.hpp"
@@ -152,12 +153,6 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
-MapInterpolation parseInterpolation(const std::string& name) {
-  if (name == "linear") return MapInterpolation::Linear;
-  if (name == "mobius") return MapInterpolation::Mobius;
-  throw std::invalid_argument("unknown interpolation '" + name + "' (linear, mobius)");
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -201,7 +196,7 @@ int main(int argc, char** argv) {
                  "Interpolation of the converged map: linear, mobius")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
-    const MapInterpolation referenceInterpolation = parseInterpolation(referenceInterpolationName);
+    const MapInterpolation referenceInterpolation = parseMapInterpolation(referenceInterpolationName);
     for (const std::string& configPath : splitList(configs)) {
       const DisplayConfig config = loadDisplayConfig(configPath);
       std::printf("\n%s (default edge %.3f m, cube %d; px of its walls)\n", config.name.c_str(),
@@ -231,7 +226,7 @@ int main(int argc, char** argv) {
         for (const std::string& routeName : splitList(routes))
           for (const std::string& g : splitList(gradings))
           for (const std::string& interpolationName : splitList(interpolations)) {
-          const MapInterpolation interpolation = parseInterpolation(interpolationName);
+          const MapInterpolation interpolation = parseMapInterpolation(interpolationName);
           const double edge = std::stod(s) * config.edgeLength;
           DisplayMapOptions options;
           options.edgeLength = edge;

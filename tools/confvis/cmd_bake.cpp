@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct BakeArgs {
-  std::string config, output, cacheDir, preset;
+  std::string config, output, cacheDir, preset, interpolation;
   std::vector<double> reference;  // x, y, z when given
   int resolution = 0;
   double edgeLength = 0;
@@ -73,6 +73,7 @@ int runBake(const BakeArgs& args) {
   options.threads = args.threads;
   options.showProgress = !args.quiet;
   options.preset = parseBakePreset(args.preset);
+  options.interpolation = interpolationOverride(args.interpolation);
 
   const BakedDisplay baked = bakeDisplay(config, options);
   if (!baked.cacheNote.empty()) std::fprintf(stderr, "confvis bake: note: %s\n", baked.cacheNote.c_str());
@@ -110,6 +111,7 @@ const RegisterCommand registration{Command{
           ->delimiter(',')
           ->expected(3);
       addPresetOption(sub, args->preset, kOfflineBakePreset);
+      addInterpolationOption(sub, args->interpolation);
       sub.add_flag("--no-cache", args->noCache, "Neither read nor write the bake cache");
       sub.add_option("--cache-dir", args->cacheDir,
                      "Bake cache directory (default: $CONFVIS_CACHE_DIR, $XDG_CACHE_HOME/confvis "

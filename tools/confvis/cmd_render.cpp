@@ -34,6 +34,7 @@ struct RenderArgs {
   std::string device;
   std::optional<double> tessellationErrorPixels;
   std::string eyes = "mono", stereoRays = "exact", camera, mapDirectory, output, preset;
+  std::string interpolation;
   std::vector<std::string> walls;
   int spp = 1;
   double scale = 1.0, sceneScale = 1.0;
@@ -104,7 +105,8 @@ int runRender(const RenderArgs& args) {
   if (args.cluster.enabled) cluster.emplace(config, args.cluster);
   std::optional<MapSource> map;  // one bake for all: rank 0's, shared with the others
   if (settings.mode == RenderMode::Conformal && (!cluster || cluster->isRoot()))
-    map = retargetMapFor(config, args.mapDirectory, !args.quiet, parseBakePreset(args.preset));
+    map = retargetMapFor(config, args.mapDirectory, !args.quiet, parseBakePreset(args.preset),
+                         interpolationOverride(args.interpolation));
   const RetargetMap* renderMap = map ? &map->map : nullptr;
   if (cluster) renderMap = cluster->shareMap(renderMap, kClusterBakeSeconds);
   // Check walls, eyes and map before the (possibly slow) scene load.
@@ -194,6 +196,7 @@ const RegisterCommand registration{Command{
       addOutputScaleOption(sub, args->scale);
       addSceneScaleOption(sub, args->sceneScale);
       addPresetOption(sub, args->preset, kOfflineBakePreset);
+      addInterpolationOption(sub, args->interpolation);
       sub.add_option("--map", args->mapDirectory,
                      "Baked map directory (ray.exr, geom.exr) for conformal mode");
       sub.add_flag("--ao", args->ambientOcclusion, "Ambient occlusion");

@@ -9,7 +9,8 @@
 namespace confvis::cli {
 
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
-                         bool showProgress, BakePreset preset) {
+                         bool showProgress, BakePreset preset,
+                         std::optional<MapInterpolation> interpolation) {
   if (!mapDirectory.empty())
     return {readRetargetMapDirectory(mapDirectory), mapDirectory};
   if (displayMapIsIdentity(config)) {
@@ -20,6 +21,7 @@ MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDire
   BakeDisplayOptions options;
   options.showProgress = showProgress;
   options.preset = preset;
+  options.interpolation = interpolation;
   BakedDisplay baked = bakeDisplay(config, options);
   std::string origin = baked.fromCache ? "baked earlier" : "baked now";
   if (!baked.cacheEntry.empty()) origin += " (cache " + baked.cacheEntry.string() + ")";

@@ -18,8 +18,10 @@ struct MapSource {
 // In order: --map DIR (a baked directory: bake.json, ray.exr, geom.exr); the identity for a display
 // whose map is the identity (displayMapIsIdentity); otherwise bakeDisplay (through the on-disk cache, so only the
 // first render of a display pays for the bake).
+// `interpolation` overrides the preset's.
 MapSource retargetMapFor(const DisplayConfig& config, const std::string& mapDirectory,
-                         bool showProgress, BakePreset preset);
+                         bool showProgress, BakePreset preset,
+                         std::optional<MapInterpolation> interpolation = std::nullopt);
 
 // The bake a MapFollower re-bakes with as the head moves: bakeDisplay without the on-disk cache
 // (every head position is a new config: the cache would only fill up). resolution, edgeLength:

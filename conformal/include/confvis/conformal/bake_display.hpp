@@ -7,12 +7,13 @@
 //
 // The cache key is the effective config's hash (DisplayConfig::hash covers every field,
 // resolution, edge length and reference point included) plus a digest of the map settings the
-// config does not hold (route and grading: mapSettingsJson, bake_preset.hpp), under a folder
-// named for the bake format and confvis version, so overrides, presets, format changes and new
-// releases never hit stale entries. An entry is a bake directory (bake_files.hpp), written into a temporary folder and
-// renamed into place; one that does not load back (truncated EXR, sidecar that does not match)
-// is removed and rebuilt. Maps that follow a tracked head (a new reference point every few
-// centimetres) are better baked with useCache = false: each reference point is a new entry.
+// config does not hold (route, grading, interpolation: mapSettingsJson, bake_preset.hpp), under
+// a folder named for the bake format and confvis version, so overrides, presets, format changes
+// and new releases never hit stale entries. An entry is a bake directory (bake_files.hpp),
+// written into a temporary folder and renamed into place; one that does not load back
+// (truncated EXR, sidecar that does not match) is removed and rebuilt. Maps that follow a tracked
+// head (a new reference point every few centimetres) are better baked with useCache = false:
+// each reference point is a new entry.
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -39,6 +40,7 @@ struct BakeDisplayOptions {
   BakePreset preset = kLiveBakePreset;
   std::optional<DisplayMapRoute> route;    // default: the preset's
   std::optional<TemplateGrading> grading;  // default: the preset's
+  std::optional<MapInterpolation> interpolation;  // default: the preset's
   bool useCache = true;
   std::filesystem::path cacheDirectory;  // empty: defaultCacheDirectory()
   int threads = 0;                       // 0: one per hardware thread
@@ -69,9 +71,13 @@ DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplay
 
 // The route and grading a bake with these options uses (the preset's unless overridden).
 DisplayMapOptions bakeMapOptions(const BakeDisplayOptions& options);
+// How it interpolates between the mesh vertices (the preset's unless overridden).
+MapInterpolation bakeInterpolation(const BakeDisplayOptions& options);
+// mapSettingsJson of both.
+nlohmann::json bakeMapSettings(const BakeDisplayOptions& options);
 
 // Where the cache keeps the bake of an effective config with these map settings
-// (mapSettingsJson of bakeMapOptions).
+// (bakeMapSettings).
 std::filesystem::path bakeCacheEntry(const std::filesystem::path& cacheDirectory,
                                      const DisplayConfig& effectiveConfig,
                                      const nlohmann::json& mapSettings);

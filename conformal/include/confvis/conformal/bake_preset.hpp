@@ -1,17 +1,18 @@
 #pragma once
 // Bake presets (issue 22, point 4): the accuracy / re-bake time trade of a display map as one
-// word. Measured on cave5 against its converged map (conformal/README.md, "Map accuracy" and
-// "Presets"):
-//   fast      the config's edge_length, uniform edges, spherical route: the re-bake fits the
-//             33 ms budget of a tracked head (cave5 at 20 cm: ~27 ms on the idle 2-core
-//             machine), but content lands up to ~54 px (p99) / 113 px (max) off near the
-//             singular corners.
-//   accurate  half the config's edge_length, graded toward the singular corners (20 degrees,
-//             edges down to 1/64), spherical route: cave5 at p99 0.87 px, max 1.3 px, for about
-//             7x the CPU of `fast` (~0.5 s): what offline bakes and renders use.
+// word. Measured on cave5 against its converged map (conformal/README.md, "Map accuracy",
+// "Presets" and "Smooth interpolation"):
+//   fast      the config's edge_length, uniform edges, spherical route, linear interpolation:
+//             the re-bake fits the 33 ms budget of a tracked head (cave5 at 20 cm: ~27 ms on the
+//             idle 2-core machine), but content lands up to ~54 px (p99) / 113 px (max) off near
+//             the singular corners, and straight lines kink by ~21 degrees (p99).
+//   accurate  half the config's edge_length, graded toward the singular corners (30 degrees,
+//             edges down to 1/64), spherical route, per-vertex Möbius blending
+//             (map_interpolation.hpp): cave5 at p99 0.43 px, max 0.97 px, kinks p99 0.04
+//             degrees, for ~13x the CPU of `fast` (~1 s): what offline bakes and renders use.
 // `confvis bake` and `render` default to accurate (baked once, then cached); `view`, `walk` and
 // the live map follower (backgroundBake) to fast. BakeDisplayOptions (bake_display.hpp) takes a
-// preset and lets route and grading be overridden one by one.
+// preset and lets route, grading and interpolation be overridden one by one.
 #include <string>
 #include <string_view>
 
@@ -19,6 +20,7 @@
 
 #include "confvis/base/export.hpp"
 #include "confvis/conformal/display_map.hpp"
+#include "confvis/conformal/map_interpolation.hpp"
 
 namespace confvis CONFVIS_API {
 
@@ -32,19 +34,25 @@ const char* toString(BakePreset preset);
 BakePreset parseBakePreset(std::string_view name);
 
 // What a preset sets: the edge length as a multiple of the config's edge_length (used where no
-// edge length is given explicitly), the disk-map route and the grading.
+// edge length is given explicitly), the disk-map route, the grading and how the bake
+// interpolates between the mesh vertices.
 struct BakePresetSettings {
   double edgeScale = 1;
   DisplayMapRoute route = DisplayMapRoute::Spherical;
   TemplateGrading grading;
+  MapInterpolation interpolation = MapInterpolation::Linear;
 };
 BakePresetSettings presetSettings(BakePreset preset);
 
-// The settings of a display map that the config does not hold (route, grading), as JSON: part of
-// the bake cache's key and of bake.json ("map_settings"), so that bakes differing in any of them
-// never share a cache entry.
-nlohmann::json mapSettingsJson(DisplayMapRoute route, const TemplateGrading& grading);
+// The settings of a display map that the config does not hold (route, grading, interpolation), as
+// JSON: part of the bake cache's key and of bake.json ("map_settings"), so that bakes differing
+// in any of them never share a cache entry.
+nlohmann::json mapSettingsJson(DisplayMapRoute route, const TemplateGrading& grading,
+                               MapInterpolation interpolation);
 
 const char* toString(DisplayMapRoute route);
+const char* toString(MapInterpolation interpolation);  // "linear" or "mobius"
+// "linear" or "mobius"; anything else throws Error(InvalidInput) naming the value and the choices.
+MapInterpolation parseMapInterpolation(std::string_view name);
 
 }  // namespace confvis

@@ -15,10 +15,15 @@
 // than 0.2 rad: a display corner, a cut leaf, a copy of the cut's centre) the map behaves like a
 // power of the distance, so that vertex's chart is first raised to the power
 // disk angle / sphere angle.
+// Where the blend of a triangle folds (its Jacobian changes sign: next to a singular corner on a
+// coarse mesh, where the neighbours' Möbius maps cannot follow the corner's power law), that
+// triangle's corners and their neighbours use the linear map instead (checked when the blend is
+// built), so a Möbius bake never turns a triangle over where the linear one does not.
 // The disk -> sphere blend is not the exact inverse of the sphere -> disk blend: T_ray and
 // T_geom are inverse to the interpolation's error (well below a pixel at 20 cm edges).
-// Measured on cave5 in conformal/README.md ("Smooth interpolation"); it costs ~2-3x the linear
-// bake's CPU, so it is not the default.
+// Measured on cave5 in conformal/README.md ("Smooth interpolation"); it costs ~2x the linear
+// bake's CPU, so it is not the live default (kDefaultMapInterpolation, the `fast` preset); the
+// offline `accurate` preset (bake_preset.hpp) uses it.
 #include "confvis/base/export.hpp"
 
 namespace confvis CONFVIS_API {
