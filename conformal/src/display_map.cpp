@@ -125,6 +125,10 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
   // from there) is cheaper than continuation, which can follow a branch of the non-convex energy
   // that folds before the hemisphere (cave3's graded target, conformal/README.md).
   options.maxStalledStages = graded ? 0 : 3;
+  // A graded direct flow that converges does so in at most 8 Newton steps (cave3's source at
+  // 20 cm; cave5's 4); one that fails costs most of the re-bake (cave3 at 10 cm: 4.3 + 2.1 s CPU
+  // for 20 steps each, against ~0.4 s for the fallback), so it is given up after 12.
+  if (graded) options.maxIterations = 12;
   // A graded mesh has many rings of tiny triangles around each corner, all of which must open:
   // start them near z^(π/α) (disk_map.hpp). Uniform meshes keep their start (and their maps).
   options.cornerGuess = graded;
@@ -141,6 +145,7 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
     euclidean.removedFace = chooseRemovedFace(mesh, whole);
     // Start near the flat metric: 6 + 5 -> 4 + 5 Newton steps for cave5 at 20 cm (README).
     euclidean.flatteningGuess = true;
+    euclidean.maxIterations = 30;
     result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, euclidean);
     // Its hemisphere is close to the spherical route's: from there the spherical flow converges
     // directly (cave3's graded target: 4 Newton steps), and the map is the spherical one again,
