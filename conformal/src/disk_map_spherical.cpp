@@ -120,6 +120,42 @@ void addCornerGuess(const IntrinsicTriangulation& tri, const std::vector<Vec3d>&
   metric.u = start;
 }
 
+// Adds to metric.u, per vertex, the mean log ratio of its edges' lengths on the hemisphere that
+// `guess` (a disk map of the same mesh) lifts to by inverse stereographic projection, to their
+// current lengths. Left unchanged if that leaves a triangle invalid.
+void addHemisphereGuess(const IntrinsicTriangulation& tri,
+                        const std::vector<std::complex<double>>& guess,
+                        CirclePackingMetric& metric) {
+  std::vector<Point> lifted(guess.size());
+  for (std::size_t v = 0; v < guess.size(); ++v) {
+    const double r2 = std::norm(guess[v]);
+    lifted[v] = Point(2 * guess[v].real(), 2 * guess[v].imag(), 1 - r2) / (1 + r2);
+  }
+  const std::vector<double> current = metricEdgeLengths(tri, metric);
+  std::vector<double> sum(tri.vertexCount, 0.0);
+  std::vector<int> count(tri.vertexCount, 0);
+  for (int e = 0; e < tri.edgeCount(); ++e) {
+    const auto [a, b] = tri.edgeVertices[e];
+    const double target = 2 * std::asin(std::min(1.0, 0.5 * (lifted[a] - lifted[b]).norm()));
+    if (!(target > 0) || !(current[e] > 0)) continue;
+    const double logRatio = std::log(target / current[e]);
+    for (int v : {a, b}) sum[v] += logRatio, ++count[v];
+  }
+  const std::vector<double> start = metric.u;
+  for (int v = 0; v < tri.vertexCount; ++v)
+    if (count[v] > 0) metric.u[v] += sum[v] / count[v];
+  try {
+    const std::vector<double> l = metricEdgeLengths(tri, metric);
+    for (const auto& fe : tri.faceEdges) {
+      const double a = l[fe[0]], b = l[fe[1]], c = l[fe[2]];
+      if (!(a < b + c && b < a + c && c < a + b && a + b + c < 2 * std::numbers::pi))
+        throw Error(ErrorCode::Unreachable, "invalid");
+    }
+  } catch (const Error&) {
+    metric.u = start;
+  }
+}
+
 // The spherical energy is not convex: from a mesh far from a hemisphere (a lopsided disk) the
 // flow straight to zero curvature can stall in a local minimum of |K̄ - K|. Then the target
 // moves there by continuation, K̄(s) = (1 - s)·K₀ from the initial curvature K₀ (every stage
@@ -172,7 +208,16 @@ DiskMap sphericalDiskMap(const std::vector<Vec3d>& points, const IntrinsicTriang
   CirclePackingMetric metric = initialMetric(
       tri, lengthsScaledToArea(tri, points, 2 * std::numbers::pi), options.scheme,
       Geometry::Spherical);
-  if (options.cornerGuess) addCornerGuess(tri, points, metric);
+  if (!options.hemisphereGuess.empty()) {
+    if (options.hemisphereGuess.size() != static_cast<std::size_t>(tri.vertexCount))
+      throw Error(ErrorCode::InvalidInput, "spherical disk map: the hemisphere guess has " +
+                                               std::to_string(options.hemisphereGuess.size()) +
+                                               " points for " + std::to_string(tri.vertexCount) +
+                                               " vertices");
+    addHemisphereGuess(tri, options.hemisphereGuess, metric);
+  } else if (options.cornerGuess) {
+    addCornerGuess(tri, points, metric);
+  }
   result.flow =
       flowToHemisphere(tri, metric, diskMapFlowOptions(options), options.maxStalledStages);
   result.usedFlips = result.flow.flipsStartedAt >= 0;

@@ -64,6 +64,35 @@ int chooseRemovedFace(const SphereDiskMesh& mesh, const conformal::IntrinsicTria
   return best;  // -1: computeDiskMap picks (and reports a mesh too coarse)
 }
 
+// `uv` moved by a disk automorphism so that the boundary's points, weighted by their share of
+// the boundary on the sphere, have mean 0 (a conformal barycentre, fixed-point iteration).
+std::vector<std::complex<double>> centredOnBoundary(const SphereDiskMesh& mesh,
+                                                    std::vector<std::complex<double>> uv) {
+  const std::size_t n = mesh.boundary.size();
+  std::vector<double> weight(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double side =
+        glm::length(mesh.sphere[mesh.boundary[k]] - mesh.sphere[mesh.boundary[(k + 1) % n]]);
+    weight[k] += 0.5 * side;
+    weight[(k + 1) % n] += 0.5 * side;
+  }
+  std::complex<double> a = 0;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    std::complex<double> mean = 0;
+    double total = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::complex<double> z = uv[mesh.boundary[k]];
+      mean += weight[k] * (z - a) / (1.0 - std::conj(a) * z);
+      total += weight[k];
+    }
+    mean /= total;
+    if (std::abs(mean) < 1e-15) break;
+    a = (a + 0.5 * mean) / (1.0 + std::conj(a) * 0.5 * mean);
+  }
+  for (auto& z : uv) z = (z - a) / (1.0 - std::conj(a) * z);
+  return uv;
+}
+
 struct FlowResult {
   conformal::DiskMap map;
   double seconds = 0;
@@ -92,10 +121,18 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
                                                             : conformal::Geometry::Euclidean;
   // Continuation reaches the hemisphere for cut sources (cave3's) in a stall or two; a display it
   // cannot reach after 3 (a thin band of monitors) takes the Euclidean route instead of minutes.
-  options.maxStalledStages = 3;
+  // A graded mesh gives up after its direct flow: its fallback below (Euclidean, then spherical
+  // from there) is cheaper than continuation, which can follow a branch of the non-convex energy
+  // that folds before the hemisphere (cave3's graded target, conformal/README.md).
+  options.maxStalledStages = graded ? 0 : 3;
+  // A graded direct flow that converges does so in at most 8 Newton steps (cave3's source at
+  // 20 cm; cave5's 4); one that fails costs most of the re-bake (cave3 at 10 cm: 4.3 + 2.1 s CPU
+  // for 20 steps each, against ~0.4 s for the fallback), so it is given up after 12.
+  if (graded) options.maxIterations = 12;
   // A graded mesh has many rings of tiny triangles around each corner, all of which must open:
   // start them near z^(π/α) (disk_map.hpp). Uniform meshes keep their start (and their maps).
   options.cornerGuess = graded;
+  const bool spherical = options.geometry == conformal::Geometry::Spherical;
   try {
     if (options.geometry == conformal::Geometry::Euclidean)
       throw Error(ErrorCode::Unreachable, "the Euclidean route was asked for");
@@ -103,11 +140,30 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
   } catch (const Error& e) {
     if (e.code() != ErrorCode::Unreachable) throw;
     // The spherical energy is not convex; the Euclidean route's always is.
-    options.geometry = conformal::Geometry::Euclidean;
-    options.removedFace = chooseRemovedFace(mesh, whole);
+    conformal::DiskMapOptions euclidean = options;
+    euclidean.geometry = conformal::Geometry::Euclidean;
+    euclidean.removedFace = chooseRemovedFace(mesh, whole);
     // Start near the flat metric: 6 + 5 -> 4 + 5 Newton steps for cave5 at 20 cm (README).
-    options.flatteningGuess = true;
-    result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
+    euclidean.flatteningGuess = true;
+    euclidean.maxIterations = 30;
+    result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, euclidean);
+    // Its hemisphere is close to the spherical route's: from there the spherical flow converges
+    // directly (cave3's graded target: 4 Newton steps), and the map is the spherical one again,
+    // without the removed face that breaks a display's symmetry. Kept if that fails too. The
+    // start is centred first (the spherical solution is only weakly pinned against disk Möbius
+    // moves, so the flow stays near the start's centring): a display's symmetry then decides it,
+    // not the removed face.
+    if (spherical) {
+      options.hemisphereGuess = centredOnBoundary(mesh, result.map.uv);
+      options.maxStalledStages = 0;
+      try {
+        conformal::DiskMap sphericalMap =
+            conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
+        result.map = std::move(sphericalMap);
+      } catch (const Error& again) {
+        if (again.code() != ErrorCode::Unreachable) throw;
+      }
+    }
   }
   result.seconds = secondsSince(start);
   progress.advance();

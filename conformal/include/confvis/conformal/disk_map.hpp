@@ -59,6 +59,10 @@ struct DiskMapOptions {
   // where many rings of tiny triangles must open: cave3's graded source then converges directly
   // (8 Newton steps) instead of stalling into continuation; cave5 graded 5 + 4 -> 4 + 4 steps.
   bool cornerGuess = false;
+  // Spherical route: a disk map of the same mesh (per vertex, in the unit disk; e.g. the
+  // Euclidean route's), to start from the factor that takes the embedded edge lengths to those
+  // of its hemisphere (inverse stereographic projection). Empty: no such start.
+  std::vector<std::complex<double>> hemisphereGuess;
   std::function<void(int, double)> onIteration;
 };
 
