@@ -1,0 +1,113 @@
+// Vulkan against Embree along the top rim of the 5-sided CAVE's side walls, centre eye, through
+// the real baked map (issue 23, point 5). The missing ceiling is the map's cut: T_geom opens it
+// onto the walls' top edges and grows like a square root of the distance next to it, so the
+// rasterizer must draw its triangles split along the cut up to the rim, where Embree's rays draw
+// a clean edge. Seen in `confvis render --backend vulkan` (cave5, checker-sphere) as black
+// saw-tooth cracks along the top rows of the front and left walls.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <string>
+
+#include "../backends/vulkan/test/vulkan_test_support.hpp"
+#include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/conformal/bake_display.hpp"
+#include "confvis/engine/builtin_scenes.hpp"
+
+namespace confvis {
+namespace {
+
+constexpr float kTolerance = 0.1f;  // per channel, linear colour and alpha
+constexpr int kWallPixels = 240;
+constexpr int kRimRows = 12;  // the top rows of a 240-px wall: the band next to the cut
+constexpr std::array<const char*, 4> kSideWalls = {"front", "left", "right", "back"};
+
+ImageRGBA topRows(const ImageRGBA& image, int rows) {
+  ImageRGBA rim(image.width, rows);
+  std::copy_n(image.pixels.begin(), rim.pixels.size(), rim.pixels.begin());
+  return rim;
+}
+
+struct RimCase {
+  DisplayConfig config = test::loadConfig("cave5");
+  Scene scene = builtinScene("checker-sphere");  // its default 12k triangles, as confvis render
+  RetargetMap map;
+  RenderSettings settings;
+  RenderResult embree;
+
+  RimCase() {
+    BakeDisplayOptions options;
+    options.useCache = false;
+    options.resolution = 128;
+    map = bakeDisplay(config, options).map;
+    settings.mode = RenderMode::Conformal;
+    settings.head.position = config.reference;
+    settings.camera.position = config.reference;
+    settings.resolutionScale = test::scaleFor(config, kWallPixels);
+    EmbreeBackend backend;
+    backend.setScene(scene);
+    embree = backend.render(config, &map, settings);
+  }
+
+  RenderResult vulkan(const VulkanOptions& options = {}) {
+    test::ValidatedBackend backend(options);
+    backend->setScene(scene);
+    RenderResult result = backend->render(config, &map, settings);
+    test::expectNoValidationMessages(backend);
+    return result;
+  }
+
+  // Each side wall's share of its rim rows off Embree's by more than the tolerance (recorded as
+  // test properties).
+  std::array<double, 4> rimBadFractions(const RenderResult& vulkan, const char* label) {
+    std::array<double, 4> fractions{};
+    for (std::size_t i = 0; i < kSideWalls.size(); ++i) {
+      const char* wall = kSideWalls[i];
+      fractions[i] = test::comparePixels(topRows(test::imageOf(vulkan, wall).image, kRimRows),
+                                         topRows(test::imageOf(embree, wall).image, kRimRows),
+                                         kTolerance)
+                         .badFraction();
+      ::testing::Test::RecordProperty(std::string(label) + "_" + wall + "_rim_bad_fraction",
+                                      std::to_string(fractions[i]));
+    }
+    return fractions;
+  }
+};
+
+double mean(const std::array<double, 4>& values) {
+  return std::accumulate(values.begin(), values.end(), 0.0) / double(values.size());
+}
+
+// The rim is not clean yet (issue 23, point 5, open): Vulkan leaves cracks and a short band
+// along the cut where Embree draws up to the rim. Measured at 240-px walls, 128-texel map:
+// 6.2 / 5.0 / 5.9 / 1.2 % of the front, left, right and back walls' top 12 rows off Embree (mean
+// 4.6 %; 6.9 / 5.7 / 7.9 / 1.9 %, mean 5.6 %, while warp.geom dropped the pieces the cut tears
+// instead of drawing each side up to it); with the pieces across the cut left to the geometry
+// shader instead of split along it in the pre-pass (VulkanOptions::splitAlongCut = false)
+// 6.8 / 7.6 / 7.9 / 4.6 % (mean 6.7 %). The budgets hold today's drawing and fail the unsplit
+// one; a fix of the rim lowers them.
+constexpr double kWallBudget = 0.065, kMeanBudget = 0.05;
+
+TEST(BackendCrossCheckRim, TopRimOfTheSideWallsMatchesEmbreeThroughTheBakedCave5Map) {
+  RimCase rim;
+  const std::array<double, 4> fractions = rim.rimBadFractions(rim.vulkan(), "vulkan");
+  for (std::size_t i = 0; i < fractions.size(); ++i)
+    EXPECT_LE(fractions[i], kWallBudget) << kSideWalls[i];
+  EXPECT_LE(mean(fractions), kMeanBudget);
+}
+
+// Deliberately broken: the pieces across the cut left to the geometry shader's split (cruder,
+// and a band along the rim) fail it.
+TEST(BackendCrossCheckRim, TheRimWithoutTheSplitAlongTheCutFailsTheComparison) {
+  RimCase rim;
+  VulkanOptions unsplit;
+  unsplit.splitAlongCut = false;
+  const std::array<double, 4> fractions = rim.rimBadFractions(rim.vulkan(unsplit), "unsplit");
+  EXPECT_GT(mean(fractions), 1.2 * kMeanBudget);
+  EXPECT_GT(*std::max_element(fractions.begin(), fractions.end()), 1.1 * kWallBudget);
+}
+
+}  // namespace
+}  // namespace confvis
