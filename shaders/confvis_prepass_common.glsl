@@ -81,9 +81,10 @@ const uint kQueueEdgesAtCut = 3u;
 // split along the cut (for the frame's statistics).
 const uint kQueueCutVertices = 2u;
 
-// The ray map (kCoverageBinding of the warp set), for its alpha: where the display shows a
-// physical direction, as the backward path (Embree) sees it. Its rim is the image of the cut.
-layout(set = CONFVIS_WARP_SET, binding = 1) uniform samplerCube confvisCoverageMap;
+// The ray map (kCoverageBinding of the warp set, confvis_warp_rim.glsl), for its alpha: where
+// the display shows a physical direction, as the backward path (Embree) sees it. Its rim is the
+// image of the cut.
+#include "confvis_warp_rim.glsl"
 
 // Per mesh: its triangles entirely outside the source field, reset from the host. The flat
 // list's triangles that are not degenerate (writeFlat), for the frame's statistics, are the

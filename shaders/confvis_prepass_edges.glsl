@@ -77,49 +77,17 @@ float cutCrossing(EdgeEnds ends) {
   return 0.5 * (lo + hi);
 }
 
-bool displayShows(vec3 d) { return textureLod(confvisCoverageMap, d, 0.0).w >= 0.5; }
-
-// The limit g of the warp at the cut, moved out to the display's rim: T_geom takes the source's
-// cut onto the rim, but next to the cut the map grows like a square root of the distance, and
-// the lookup's extrapolation from the last texel falls short of the rim by a band (some 5 degrees
-// at 128 texels a face on cave3: 2 % of its pixels unshown). Along the great circle from own's
-// warp through g, outwards, in up to 32 steps, then 10 bisection steps on the coverage (within a
-// tenth of a ray-map texel). g as it was where the display does not show it or no rim lies
-// within the search (16 geom texels, at most 0.3 radians).
-vec3 snapToRim(vec3 g, vec3 wOwn) {
-  vec3 u = normalize(g), own = normalize(wOwn);
-  vec3 away = u * dot(u, own) - own;  // tangent at u, pointing away from own
-  float awayLength = length(away);
-  float reach = min(16.0 * 2.0 / float(textureSize(confvisGeomMap, 0).x), 0.3);
-  float step = max(1.0 / float(textureSize(confvisCoverageMap, 0).x), reach / 32.0);
-  bool search = displayShows(u) && awayLength > 1e-6;
-  vec3 tangent = away / max(awayLength, 1e-6);
-  float shown = 0.0, hidden = -1.0;
-  for (float angle = step; search && hidden < 0.0 && angle <= reach + 0.5 * step; angle += step) {
-    bool shows = displayShows(cos(angle) * u + sin(angle) * tangent);
-    shown = shows ? angle : shown;
-    hidden = shows ? hidden : angle;
-  }
-  for (int k = 0; k < (hidden > 0.0 ? 10 : 0); ++k) {
-    float middle = 0.5 * (shown + hidden);
-    bool shows = displayShows(cos(middle) * u + sin(middle) * tangent);
-    shown = shows ? middle : shown;
-    hidden = shows ? hidden : middle;
-  }
-  return hidden > 0.0 ? length(g) * (cos(shown) * u + sin(shown) * tangent) : g;
-}
-
 // Writes cut vertex `slot`: the point at t along the edge with the limit of the warp on the side
 // of the end whose warp is wOwn (the other end's: wOther), moved out to the rim
-// (prepass.snapCutToRim). False where that limit is not clearly on own's side or lies outside the
-// source field.
+// (prepass.snapCutToRim, confvisSnapToRim in confvis_warp_rim.glsl). False where that limit is
+// not clearly on own's side or lies outside the source field.
 bool writeCutVertex(uint slot, EdgeEnds ends, float t, vec3 wOwn, vec3 wOther) {
   CutVertex c = vertexBetween(ends.v.x, ends.v.y, t);
   c.warped = confvisWarpRelativeToward(mix(ends.ra, ends.rb, t), wOwn);
   bool ownSide =
       c.warped.w >= 0.5 && distance(c.warped.xyz, wOwn) < distance(c.warped.xyz, wOther);
   for (uint once = 0u; once < (prepass.snapCutToRim != 0u ? 1u : 0u); ++once)
-    c.warped.xyz = snapToRim(c.warped.xyz, wOwn);
+    c.warped.xyz = confvisSnapToRim(c.warped.xyz, wOwn);
   storeCutVertex(slot, c);
   return ownSide;
 }

@@ -10,7 +10,9 @@
 
 // One entry per (wall, eye), index wall * eyes + eye; a pass draws views viewBase + gl_ViewIndex.
 // params: x = largest bend error (radians), y = largest segment angle (radians),
-//         z = smallest cut gap (radians), w = 1 to tessellate, 0 to draw the warp unsubdivided.
+//         z = smallest cut gap (radians), w = 1 to tessellate, 0 to draw the warp unsubdivided,
+//         2 to tessellate but leave the ends of the pieces warp.geom splits at the cut at the
+//         extrapolated limits instead of moving them out to the rim (VulkanOptions::snapCutToRim).
 struct View {
   mat4 viewProj;     // physical frame -> Vulkan clip space of the wall for this eye
   vec4 eyeVirtual;   // xyz: where the headlight sits, in world coordinates

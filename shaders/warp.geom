@@ -5,6 +5,7 @@
 // cut up to it on each side (splitAtCut) instead of dropping them.
 #include "confvis_render_common.glsl"
 #include "confvis_warp.glsl"
+#include "confvis_warp_rim.glsl"
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 7) out;
@@ -40,6 +41,10 @@ void emit(Corner c) {
   EmitVertex();
 }
 
+// The torn pieces' ends are moved out to the display's rim (params.w 1; 2: VulkanOptions::
+// snapCutToRim off, the extrapolated limits kept).
+bool snapsToRim() { return wallView().params.w < 1.5; }
+
 // Bisection steps for the crossing of an edge with the cut: 2^-10 of the piece's edge, well
 // below a pixel for the pieces the tessellation leaves.
 const int kCutBisections = 10;
@@ -68,6 +73,13 @@ void crossing(Corner p, Corner q, out Corner onP, out Corner onQ) {
   onQ = x;
   onP.warped = confvisWarpRelativeToward(x.relative, w0);
   onQ.warped = confvisWarpRelativeToward(x.relative, w1);
+  // Each side's limit out to the display's rim, as the pre-pass moves its cut vertices: the
+  // extrapolated limits stop short of it by a band (the square-root growth next to the cut).
+  // A loop entered once or not at all (lavapipe runs both sides of an if for every lane).
+  for (int once = 0; once < (snapsToRim() ? 1 : 0); ++once) {
+    onP.warped.xyz = confvisSnapToRim(onP.warped.xyz, p.warped.xyz);
+    onQ.warped.xyz = confvisSnapToRim(onQ.warped.xyz, q.warped.xyz);
+  }
 }
 
 // A piece the cut tears: corner `lone` (opposite the warp's shortest edge) on one side, the

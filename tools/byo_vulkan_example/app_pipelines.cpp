@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app_device.hpp"
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
 #include "confvis/backends/vulkan/byo_pipeline.hpp"
 #include "confvis/backends/vulkan/byo_prepass.hpp"
 #include "confvis/backends/vulkan/warp_interface.hpp"
@@ -107,8 +108,9 @@ AppPipelines::AppPipelines(VkDevice device) : device_(device) {
                {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
                {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
                {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
-  // Set 1: the warp (confvis_warp.glsl), as warp_interface.hpp describes it.
-  setLayouts_[1] = setLayout(device, {confvis::vulkan::warpLayoutBinding(kGeometryStages)});
+  // Set 1: the warp (confvis_warp.glsl, and the rim's coverage map that warp.geom reads:
+  // confvis_warp_rim.glsl), as warp_interface.hpp describes it.
+  setLayouts_[1] = confvis::vulkan::makeWarpSetLayout(device, kGeometryStages);
   setLayouts_[2] = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
   const VkPushConstantRange push{kAllStages, 0, sizeof(AppPush)};

@@ -296,7 +296,7 @@ std::vector<confvis::WallImage> renderThroughMap(const confvis::DisplayConfig& c
   const std::array<VkDescriptorPoolSize, 3> sizes = {{
       {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
       {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 5},
-      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1 + materials},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, cv::kWarpSetImageSamplers + materials},
   }};
   std::vector<VkDescriptorSetLayout> layouts = {pipelines.frameSetLayout(),
                                                 pipelines.warpSetLayout()};
@@ -355,7 +355,7 @@ std::vector<confvis::WallImage> renderThroughMap(const confvis::DisplayConfig& c
   writeBuffer(device, frameSet, 3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, prepass.tessellatedIndices());
   writeBuffer(device, frameSet, 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, prepass.vertexBuffer());
   writeBuffer(device, frameSet, 5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, prepass.warpBuffer());
-  writeImage(device, warpSet, cv::kWarpBinding, warpMap.sampler(), warpMap.geomView());
+  cv::writeWarpSet(device, warpSet, warpMap);
 
   std::vector<confvis::WallImage> images;
   for (std::size_t w = 0; w < frame.walls.size(); ++w) {

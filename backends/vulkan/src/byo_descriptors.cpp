@@ -1,5 +1,7 @@
 #include "confvis/backends/vulkan/byo_descriptors.hpp"
 
+#include "confvis/backends/vulkan/warp_interface.hpp"
+#include "memory.hpp"
 #include "vk_check.hpp"
 
 namespace confvis::vulkan {
@@ -25,6 +27,22 @@ std::vector<VkDescriptorSet> allocateDescriptorSets(VkDevice device, VkDescripto
   info.pSetLayouts = layouts.data();
   check(vkAllocateDescriptorSets(device, &info, sets.data()), "vkAllocateDescriptorSets");
   return sets;
+}
+
+VkDescriptorSetLayout makeWarpSetLayout(VkDevice device, VkShaderStageFlags warpStages) {
+  const auto bindings = warpSetLayoutBindings(warpStages, VK_SHADER_STAGE_GEOMETRY_BIT);
+  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  info.bindingCount = static_cast<std::uint32_t>(bindings.size());
+  info.pBindings = bindings.data();
+  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
+  check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout),
+        "vkCreateDescriptorSetLayout");
+  return layout;
+}
+
+void writeWarpSet(VkDevice device, VkDescriptorSet set, const UploadedRetargetMap& map) {
+  writeImageDescriptor(device, set, kWarpBinding, map.sampler(), map.geomView());
+  writeImageDescriptor(device, set, kCoverageBinding, map.sampler(), map.rayView());
 }
 
 }  // namespace confvis::vulkan

@@ -9,6 +9,7 @@
 
 #include "byo_internal.hpp"
 #include "byo_vertex_formats.hpp"
+#include "confvis/backends/vulkan/byo_descriptors.hpp"
 #include "confvis/backends/vulkan/warp_interface.hpp"
 #include "confvis/base/error.hpp"
 #include "conformal_prepass.hpp"
@@ -221,8 +222,7 @@ void ConformalPrepassStep::record(VkCommandBuffer cmd, const UploadedRetargetMap
   const FrameUniforms uniforms{glm::mat4(frame.worldToPhysical), glm::vec4(glm::vec3(c), 1.0f)};
   std::memcpy(impl_->frameUniforms.mapped(), &uniforms, sizeof(uniforms));
   const VkDevice device = impl_->context->device();
-  writeImageDescriptor(device, impl_->warpSet, kWarpBinding, map.sampler(), map.geomView());
-  writeImageDescriptor(device, impl_->warpSet, kCoverageBinding, map.sampler(), map.rayView());
+  writeWarpSet(device, impl_->warpSet, map);
   impl_->prepass.record(cmd, impl_->scene, impl_->frameSet, impl_->warpSet, thresholds);
 }
 

@@ -97,7 +97,9 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
     const glm::vec4 params(static_cast<float>(bounds.errorAngle),
                            static_cast<float>(bounds.maxSegmentAngle),
                            static_cast<float>(bounds.cutGapAngle),
-                           tessellation.enabled ? 1.0f : 0.0f);
+                           !tessellation.enabled        ? 0.0f
+                           : tessellation.snapCutToRim ? 1.0f
+                                                       : 2.0f);
     for (std::size_t e = 0; e < eyes.size(); ++e) {
       const ViewOverride* custom = findViewOverride(settings.views, wall->name, plan.eyes[e]);
       const glm::dvec3 eye = custom ? overrideEyePosition(*custom) : eyes[e];

@@ -96,11 +96,12 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
                {3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
                {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
                {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
-  // Binding 1: the ray map, whose alpha is the display's coverage (the pre-pass's rim).
-  warpSetLayout_ =
-      setLayout(device, {warpLayoutBinding(kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT),
-                         {kCoverageBinding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                          VK_SHADER_STAGE_COMPUTE_BIT, nullptr}});
+  // Binding 1: the ray map, whose alpha is the display's coverage (the rim, where the pre-pass
+  // and warp.geom move the ends of pieces torn by the cut).
+  const auto warpBindings = warpSetLayoutBindings(
+      kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT,
+      VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_COMPUTE_BIT);
+  warpSetLayout_ = setLayout(device, {warpBindings[0], warpBindings[1]});
   materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                            VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
   static_assert(kWarpDescriptorSet == 1, "set numbers of confvis_render_common.glsl");

@@ -71,10 +71,6 @@ inline constexpr std::uint32_t kPrepassErrorWallsBinding = 24;  // a uniform buf
 // strictest bound everywhere.
 inline constexpr std::uint32_t kMaxErrorWalls = 64;
 
-// Binding of the warp set (kWarpDescriptorSet) with the ray map, for its alpha: where the display
-// shows a physical direction (confvis_prepass_common.glsl, confvisCoverageMap).
-inline constexpr std::uint32_t kCoverageBinding = 1;
-
 // Push constant block `Prepass` of confvis_prepass_common.glsl.
 struct PrepassConstants {
   std::uint32_t count;

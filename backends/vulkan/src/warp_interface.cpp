@@ -41,13 +41,30 @@ std::vector<float> rayMapUploadData(const RetargetMap& map) {
   return cubeUploadData(map.ray, "ray");
 }
 
-VkDescriptorSetLayoutBinding warpLayoutBinding(VkShaderStageFlags stages) {
+namespace {
+
+VkDescriptorSetLayoutBinding cubeMapBinding(std::uint32_t number, VkShaderStageFlags stages) {
   VkDescriptorSetLayoutBinding binding{};
-  binding.binding = kWarpBinding;
+  binding.binding = number;
   binding.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
   binding.descriptorCount = 1;
   binding.stageFlags = stages;
   return binding;
+}
+
+}  // namespace
+
+VkDescriptorSetLayoutBinding warpLayoutBinding(VkShaderStageFlags stages) {
+  return cubeMapBinding(kWarpBinding, stages);
+}
+
+VkDescriptorSetLayoutBinding coverageLayoutBinding(VkShaderStageFlags stages) {
+  return cubeMapBinding(kCoverageBinding, stages);
+}
+
+std::array<VkDescriptorSetLayoutBinding, 2> warpSetLayoutBindings(VkShaderStageFlags warpStages,
+                                                                  VkShaderStageFlags rimStages) {
+  return {warpLayoutBinding(warpStages), coverageLayoutBinding(rimStages)};
 }
 
 VkSamplerCreateInfo warpSamplerInfo() {
