@@ -10,9 +10,10 @@
 
 // One entry per (wall, eye), index wall * eyes + eye; a pass draws views viewBase + gl_ViewIndex.
 // params: x = largest bend error (radians), y = largest segment angle (radians),
-//         z = smallest cut gap (radians), w = 1 to tessellate, 0 to draw the warp unsubdivided,
-//         2 to tessellate but leave the ends of the pieces warp.geom splits at the cut at the
-//         extrapolated limits instead of moving them out to the rim (VulkanOptions::snapCutToRim).
+//         z = smallest cut gap (radians), w = 0 to draw the warp unsubdivided, else 1 to
+//         tessellate, plus 1 to leave the ends of the pieces warp.geom splits at the cut at the
+//         extrapolated limits instead of moving them out to the rim (VulkanOptions::snapCutToRim
+//         off), plus 2 to drop those pieces (VulkanOptions::drawTornPiecesUpToTheCut off).
 struct View {
   mat4 viewProj;     // physical frame -> Vulkan clip space of the wall for this eye
   vec4 eyeVirtual;   // xyz: where the headlight sits, in world coordinates

@@ -41,9 +41,12 @@ void emit(Corner c) {
   EmitVertex();
 }
 
-// The torn pieces' ends are moved out to the display's rim (params.w 1; 2: VulkanOptions::
-// snapCutToRim off, the extrapolated limits kept).
-bool snapsToRim() { return wallView().params.w < 1.5; }
+// The geometry shader's switches in params.w (confvis_render_common.glsl): the torn pieces'
+// ends are moved out to the display's rim (VulkanOptions::snapCutToRim), the torn pieces drawn
+// up to the cut (VulkanOptions::drawTornPiecesUpToTheCut).
+int switches() { return int(wallView().params.w + 0.5) - 1; }
+bool snapsToRim() { return (switches() & 1) == 0; }
+bool drawsTornPieces() { return (switches() & 2) == 0; }
 
 // Bisection steps for the crossing of an edge with the cut: 2^-10 of the piece's edge, well
 // below a pixel for the pieces the tessellation leaves.
@@ -116,7 +119,8 @@ void main() {
   float minGap = currentView().params.z;
   if (confvisDropTriangle(inRelative[0], inRelative[1], inRelative[2], inWarped[0], inWarped[1],
                           inWarped[2], minGap)) {
-    if (max(inWarped[0].w, max(inWarped[1].w, inWarped[2].w)) >= 0.5) splitAtCut();
+    if (max(inWarped[0].w, max(inWarped[1].w, inWarped[2].w)) >= 0.5 && drawsTornPieces())
+      splitAtCut();
     return;
   }
   for (int i = 0; i < 3; ++i) emit(inputCorner(i));

@@ -94,12 +94,13 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
     plan.pixelAngles.push_back(bounds.pixelAngle);
     if (conformal)
       plan.errorWalls.push_back(errorWall(*wall, w, h, warpCentre, tessellation.errorPixels));
+    // w: 0 untessellated, else 1 + the geometry shader's switches (confvis_render_common.glsl).
+    const float geometryShaderSwitches = (tessellation.snapCutToRim ? 0.0f : 1.0f) +
+                                         (tessellation.drawTornPiecesUpToTheCut ? 0.0f : 2.0f);
     const glm::vec4 params(static_cast<float>(bounds.errorAngle),
                            static_cast<float>(bounds.maxSegmentAngle),
                            static_cast<float>(bounds.cutGapAngle),
-                           !tessellation.enabled        ? 0.0f
-                           : tessellation.snapCutToRim ? 1.0f
-                                                       : 2.0f);
+                           tessellation.enabled ? 1.0f + geometryShaderSwitches : 0.0f);
     for (std::size_t e = 0; e < eyes.size(); ++e) {
       const ViewOverride* custom = findViewOverride(settings.views, wall->name, plan.eyes[e]);
       const glm::dvec3 eye = custom ? overrideEyePosition(*custom) : eyes[e];

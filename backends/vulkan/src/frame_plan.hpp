@@ -18,6 +18,7 @@ struct TessellationOptions {
   bool reusePrepass = true;   // VulkanOptions::reusePrepass
   bool snapCutToRim = true;   // VulkanOptions::snapCutToRim
   bool dropOutsideSourceField = false;  // VulkanOptions::dropOutsideSourceField
+  bool drawTornPiecesUpToTheCut = true;  // VulkanOptions::drawTornPiecesUpToTheCut
 };
 
 struct FramePlan {

@@ -168,7 +168,8 @@ class VulkanBackend final : public VulkanRenderer {
                                                    options_.maxSegmentDegrees, options_.tessellate,
                                                    options_.splitAlongCut, options_.reusePrepass,
                                                    options_.snapCutToRim,
-                                                   options_.dropOutsideSourceField};
+                                                   options_.dropOutsideSourceField,
+                                                   options_.drawTornPiecesUpToTheCut};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
                           context_->capabilities().maxMultiviewViewCount);

@@ -1,8 +1,11 @@
 // Triangles that the source's cut crosses, split exactly along it in the pre-pass
 // (split_triangles_at_cut.comp): each side is drawn up to the cut, against the closed form of
 // the azimuth squeeze; without the split the geometry shader draws each side of the pieces the
-// cut tears up to it too (it dropped them once, leaving a band unshown beside it).
+// cut tears up to it too; dropping them instead (as once) leaves a band unshown beside it, which
+// the test must see.
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_test_maps.hpp"
@@ -21,9 +24,10 @@ TEST(VulkanCutSplit, TrianglesAcrossTheCutAreDrawnUpToItOnEachSide) {
   BuiltinSceneOptions sceneOptions;
   sceneOptions.subdivision = 15;  // 2,700 triangles of about 6 degrees, none with an edge on the cut
   const Scene scene = builtinScene("checker-sphere", sceneOptions);
-  const auto render = [&](bool split) {
+  const auto render = [&](bool split, bool geometryShaderSplit = true) {
     VulkanOptions options;
     options.splitAlongCut = split;
+    options.drawTornPiecesUpToTheCut = geometryShaderSplit;
     // Segments across the cut of four times this (six pixels): the band the drop leaves is
     // as wide as one.
     options.tessellationErrorPixels = 1.5;
@@ -85,6 +89,18 @@ TEST(VulkanCutSplit, TrianglesAcrossTheCutAreDrawnUpToItOnEachSide) {
   EXPECT_EQ(unsplit.stats.vulkan.value().conformalPrepass.value().trianglesSplitAlongCut, 0u);
   const Beside d = besideTheCut(unsplit);
   EXPECT_LE(d.holes, d.pixels / 100) << d.holes << " of " << d.pixels << " pixels beside the cut";
+
+  // Deliberately broken: neither split, the pieces across the cut dropped by the geometry shader
+  // (VulkanOptions::drawTornPiecesUpToTheCut off, as before issue 23), leave the band beside the
+  // cut unshown that the splits fill: the hole count above fails (measured: 83 of 768 pixels
+  // dropped, none with either split).
+  const RenderResult dropped = render(false, false);
+  const Beside h = besideTheCut(dropped);
+  RecordProperty("holes_beside_the_cut_split", std::to_string(b.holes));
+  RecordProperty("holes_beside_the_cut_unsplit", std::to_string(d.holes));
+  RecordProperty("holes_beside_the_cut_dropped", std::to_string(h.holes));
+  RecordProperty("pixels_beside_the_cut", std::to_string(h.pixels));
+  EXPECT_GT(h.holes, h.pixels / 20) << h.holes << " of " << h.pixels << " pixels beside the cut";
 
   // Deliberately broken: the same drawing against the sphere unsqueezed fails the comparison.
   const test::DirectionColor unsqueezed = [](glm::dvec3 v) -> std::optional<glm::vec3> {

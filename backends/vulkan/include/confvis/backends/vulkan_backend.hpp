@@ -58,6 +58,10 @@ struct VulkanOptions {
   // like a square root next to the cut, leaving a band along the rim unshown. False: the
   // extrapolated limits (for tests and benchmarks).
   bool snapCutToRim = true;
+  // Conformal mode: the tessellated pieces that the cut tears (in the triangles the pre-pass
+  // leaves to the geometry shader) are drawn on each side up to the cut. False: they are dropped,
+  // leaving a band of a segment's width unshown beside the cut, as before issue 23 (for tests).
+  bool drawTornPiecesUpToTheCut = true;
   // Conformal mode: triangles spanning more than 16 degrees seen from the warp's centre (a large
   // quad next to the viewer, a ground plane under them) are split before the warp, so that the
   // pre-pass bends pieces it can follow. False: drawn whole, as before issue 23 (for tests).
