@@ -2,7 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // Conformal mode: project tessellated triangles with the off-axis matrix of the wall for this
 // eye; drop those entirely outside the source field, and draw those that straddle the source's
-// cut up to it on each side (splitAtCut) instead of dropping them.
+// cut up to it on each side (splitAtCut) instead of dropping them, their ends moved out to the
+// display's rim through the coverage map (confvis_warp_rim.glsl), as the pre-pass moves its cut
+// vertices.
 #include "confvis_render_common.glsl"
 #include "confvis_warp.glsl"
 #include "confvis_warp_rim.glsl"
