@@ -72,24 +72,44 @@ void TailLattice::build() {
   const glm::vec3 eye = rays_.eyeFromCentre();
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
+  // The lattice's second differences along x and y at every node with both neighbours in the
+  // tile, once per node (each serves up to four cells): the turn's and the shift's lengths, which
+  // a cell weighs by its own reach.
+  struct Second {
+    float turn = 0.0f, shift = 0.0f;
+    bool seen = false;  // the node has both neighbours along the axis
+  };
+  std::vector<std::array<Second, 2>> seconds(static_cast<std::size_t>(nodeCount));
+  for (int nj = 0; nj < down; ++nj)
+    for (int ni = 0; ni < across; ++ni)
+      for (int axis = 0; axis < 2; ++axis) {
+        const int di = axis == 0 ? 1 : 0, dj = 1 - di;
+        if (ni - di < 0 || nj - dj < 0 || ni + di >= across || nj + dj >= down) continue;
+        const Point& before = nodes_[static_cast<std::size_t>((nj - dj) * across + ni - di)];
+        const Point& at = nodes_[static_cast<std::size_t>(nj * across + ni)];
+        const Point& after = nodes_[static_cast<std::size_t>((nj + dj) * across + ni + di)];
+        Second& second = seconds[static_cast<std::size_t>(nj * across + ni)][axis];
+        second.turn = glm::length(before.direction - 2.0f * at.direction + after.direction);
+        second.shift = glm::length(before.offset - 2.0f * at.offset + after.offset);
+        second.seen = true;
+      }
   for (int cell = 0; cell < cellCount; ++cell) {
     const int i = cell % cellsAcross_, j = cell / cellsAcross_;
     const Point& centre = points[static_cast<std::size_t>(nodeCount + cell)];
-    const std::array<const Point*, 4> corners = {
-        &nodes_[static_cast<std::size_t>(j * across + i)],
-        &nodes_[static_cast<std::size_t>(j * across + i + 1)],
-        &nodes_[static_cast<std::size_t>((j + 1) * across + i)],
-        &nodes_[static_cast<std::size_t>((j + 1) * across + i + 1)]};
+    const std::array<int, 4> cornerNodes = {j * across + i, j * across + i + 1,
+                                            (j + 1) * across + i, (j + 1) * across + i + 1};
     glm::vec3 direction(0.0f), offset(0.0f);
-    float chord = 0.0f;  // the cell's angular radius seen from the eye (its corners' farthest)
-    for (const Point* corner : corners) {
-      direction += 0.25f * corner->direction;
-      offset += 0.25f * corner->offset;
-      chord = std::max(chord, glm::length(corner->u - centre.u));
+    float chordSquared = 0.0f;  // the cell's angular radius from the eye, squared (farthest corner)
+    for (int node : cornerNodes) {
+      const Point& corner = nodes_[static_cast<std::size_t>(node)];
+      direction += 0.25f * corner.direction;
+      offset += 0.25f * corner.offset;
+      const glm::vec3 chord = corner.u - centre.u;
+      chordSquared = std::max(chordSquared, glm::dot(chord, chord));
     }
     // The smallest reach in the cell: h is 1-Lipschitz in u times |e - c|.
-    const float reach =
-        std::max(eyeDistance, (centre.h - eyeDistance * chord) / sinAsymptote);
+    const float reach = std::max(
+        eyeDistance, (centre.h - eyeDistance * std::sqrt(chordSquared)) / sinAsymptote);
     // The line's angular error: the turn plus the offset's shift over the nearest hit.
     const auto angle = [reach](const glm::vec3& turn, const glm::vec3& shift) {
       return glm::length(turn) + glm::length(shift) / reach;
@@ -99,22 +119,19 @@ void TailLattice::build() {
     // misses where the two cancel, a saddle): at the cell's corners' nodes that have both
     // neighbours in the tile. A cell with none along an axis (a tile one cell wide) is not
     // interpolated.
-    const auto secondDifference = [&](int ni, int nj, int di, int dj, float& worst) {
-      if (ni - di < 0 || nj - dj < 0 || ni + di >= across || nj + dj >= down) return false;
-      const Point& before = nodes_[static_cast<std::size_t>((nj - dj) * across + ni - di)];
-      const Point& at = nodes_[static_cast<std::size_t>(nj * across + ni)];
-      const Point& after = nodes_[static_cast<std::size_t>((nj + dj) * across + ni + di)];
-      worst = std::max(worst, angle(before.direction - 2.0f * at.direction + after.direction,
-                                    before.offset - 2.0f * at.offset + after.offset));
-      return true;
-    };
     float alongX = 0.0f, alongY = 0.0f;
     bool seenX = false, seenY = false;
-    for (int dj = 0; dj <= 1; ++dj)
-      for (int di = 0; di <= 1; ++di) {
-        seenX = secondDifference(i + di, j + dj, 1, 0, alongX) || seenX;
-        seenY = secondDifference(i + di, j + dj, 0, 1, alongY) || seenY;
+    for (int node : cornerNodes) {
+      const std::array<Second, 2>& second = seconds[static_cast<std::size_t>(node)];
+      if (second[0].seen) {
+        seenX = true;
+        alongX = std::max(alongX, second[0].turn + second[0].shift / reach);
       }
+      if (second[1].seen) {
+        seenY = true;
+        alongY = std::max(alongY, second[1].turn + second[1].shift / reach);
+      }
+    }
     const float error =
         std::max(angle(glm::normalize(direction) - centre.direction, offset - centre.offset),
                  seenX && seenY ? 0.125f * (alongX + alongY)
@@ -168,8 +185,8 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     for (int lane = 0; lane < kPacketSize; ++lane) alpha[lane] = lane < samples.count ? 1.0f : 0.0f;
   else
     rays_.pixelAlpha(px, py, samples.count, alpha.data());
-  CameraRays::TailGeometry geometry;
-  rays_.tailGeometry(px, py, geometry);
+  alignas(32) Lanes lastDistance, laneReach;
+  rays_.sampleReach(px, py, lastDistance.data(), laneReach.data());
   // The corners' six components as scalars and the positions in locals (the loop vectorises).
   float node[4][6];
   const std::array<const Point*, 4> corners = {&p00, &p10, &p01, &p11};
@@ -196,7 +213,7 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     const float dz = blended[2] * inverseLength;
     const float ox = blended[3], oy = blended[4], oz = blended[5];
     // The start on the interpolated line at the sample's own |W(last)| = |last| from c.
-    const float distance = geometry.lastDistance[lane];
+    const float distance = lastDistance[lane];
     const float along = std::sqrt(std::max(0.0f, distance * distance - (ox * ox + oy * oy + oz * oz)));
     tails[lane] = dx;
     tails[kPacketSize + lane] = dy;
@@ -205,7 +222,7 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     tails[4 * kPacketSize + lane] = oy + along * dy;
     tails[5 * kPacketSize + lane] = oz + along * dz;
   }
-  return CameraRays::maskTails(alpha.data(), geometry.reach.data(), tails.data(), run, reach);
+  return CameraRays::maskTails(alpha.data(), laneReach.data(), tails.data(), run, reach);
 }
 
 }  // namespace confvis::embree
