@@ -96,9 +96,6 @@ class CameraRays {
         reach;
   };
   void tailGeometry(const float* px, const float* py, TailGeometry& geometry) const;
-  // tailGeometry's lastDistance and reach alone (bit for bit the same), for the samples of an
-  // interpolated cell, which need nothing else of the closed form.
-  void sampleReach(const float* px, const float* py, float* lastDistance, float* reach) const;
   // tailGeometry and the unmasked tails (exactTails' run layout, unlit lanes included) of 8
   // positions, `count` of them meaningful (the cube map is asked only for those).
   void tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,

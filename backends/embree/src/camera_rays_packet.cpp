@@ -88,8 +88,7 @@ void CameraRays::fastTargets(const float* px, const float* py, int count, float*
 
 namespace {
 
-// The closed form of one sample's curve (tailGeometry, sampleReach: both through this, so that
-// an interpolated tail's reach is its exact one, bit for bit): the physical ray's unit direction
+// The closed form of one sample's curve (tailGeometry): the physical ray's unit direction
 // u towards the wall point base + px stepX + py stepY, the eye's offset a = e - c across it
 // (curvedRay's foot relative to c), its length h, and the curve's reach. Divisions by constants
 // are multiplications by their reciprocals (no division is exact either way; the reach's margin
@@ -160,22 +159,6 @@ void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& ou
     geometry.reach[lane] = l.reach;
   }
   out = geometry;
-}
-
-void CameraRays::sampleReach(const float* px, const float* py, float* lastDistance,
-                             float* reach) const {
-  const PacketGeometry& g = packet_;
-  const CurveConstants k = curveConstants(g.base, g.stepX, g.stepY, g.eye);
-  alignas(32) Lanes positionX, positionY, distance, laneReach;
-  std::memcpy(positionX.data(), px, sizeof positionX);
-  std::memcpy(positionY.data(), py, sizeof positionY);
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    const LaneCurve l = laneCurve(k, positionX[lane], positionY[lane]);
-    distance[lane] = l.lastDistance;
-    laneReach[lane] = l.reach;
-  }
-  std::memcpy(lastDistance, distance.data(), sizeof distance);
-  std::memcpy(reach, laneReach.data(), sizeof laneReach);
 }
 
 void CameraRays::tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,

@@ -64,14 +64,17 @@ void TailLattice::build() {
       point.offset = start - glm::dot(start, point.direction) * point.direction;
       point.u = {geometry.ux[lane], geometry.uy[lane], geometry.uz[lane]};
       point.h = geometry.h[lane];
+      point.lastDistance = geometry.lastDistance[lane];
     }
   }
   nodes_.assign(points.begin(), points.begin() + nodeCount);
   pass_.assign(static_cast<std::size_t>(cellCount), 0);
   lit_.assign(static_cast<std::size_t>(cellCount), 0);
+  reach_.assign(static_cast<std::size_t>(cellCount), 0.0f);
   const glm::vec3 eye = rays_.eyeFromCentre();
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
+  const float tanAsymptote = static_cast<float>(std::tan(kAsymptoteAngle));
   // The lattice's second differences along x and y at every node with both neighbours in the
   // tile, once per node (each serves up to four cells): the turn's and the shift's lengths, which
   // a cell weighs by its own reach.
@@ -107,9 +110,21 @@ void TailLattice::build() {
       const glm::vec3 chord = corner.u - centre.u;
       chordSquared = std::max(chordSquared, glm::dot(chord, chord));
     }
-    // The smallest reach in the cell: h is 1-Lipschitz in u times |e - c|.
-    const float reach = std::max(
-        eyeDistance, (centre.h - eyeDistance * std::sqrt(chordSquared)) / sinAsymptote);
+    // h = |e - c| sin(angle(u, e - c)) is 1-Lipschitz in the angle between rays times |e - c|:
+    // within the cell it lies within `spread` of the centre's (the angle from the chord; a
+    // relative margin for float rounding).
+    const float angularRadius = 2.0f * std::asin(std::min(1.0f, 0.5f * std::sqrt(chordSquared)));
+    const float spread = eyeDistance * angularRadius;
+    // The smallest reach in the cell (what the check weighs the offsets' error by) and the
+    // largest (what the cell's samples report: CameraRays::exactTails' reach bounded above,
+    // 1.0001 |e - c| at least as there, so that a packet is straight only where every curve of
+    // it bends inside the empty ball).
+    const float reach = std::max(eyeDistance, (centre.h - spread) / sinAsymptote);
+    reach_[static_cast<std::size_t>(cell)] =
+        1.0001f * std::max(eyeDistance, 1.00001f * (centre.h + spread) / sinAsymptote);
+    // A sample on a line through c (h <= along tan(asymptote), along <= |e - c|) needs its whole
+    // curve traced (infinite reach): a cell that may hold one is not interpolated.
+    const bool offLine = centre.h - spread > 1.01f * eyeDistance * tanAsymptote;
     // The line's angular error: the turn plus the offset's shift over the nearest hit.
     const auto angle = [reach](const glm::vec3& turn, const glm::vec3& shift) {
       return glm::length(turn) + glm::length(shift) / reach;
@@ -156,7 +171,8 @@ void TailLattice::build() {
         rays_.mapGrid()->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
                                        top + kTailCellPixels * pixelToWall_.y);
     pass_[static_cast<std::size_t>(cell)] =
-        std::isinf(tolerancePixels_) || error <= tolerancePixels_ * pixelAngle ? 1 : 0;
+        std::isinf(tolerancePixels_) || (offLine && error <= tolerancePixels_ * pixelAngle) ? 1
+                                                                                         : 0;
   }
 }
 
@@ -185,16 +201,21 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     for (int lane = 0; lane < kPacketSize; ++lane) alpha[lane] = lane < samples.count ? 1.0f : 0.0f;
   else
     rays_.pixelAlpha(px, py, samples.count, alpha.data());
-  alignas(32) Lanes lastDistance, laneReach;
-  rays_.sampleReach(px, py, lastDistance.data(), laneReach.data());
+  // Every lane's reach: the cell's bound (build); its last vertex's distance from c blended as
+  // the tails are (where the packet is straight, the start lies inside the empty ball either way,
+  // on the same line: the same hits).
+  alignas(32) Lanes laneReach;
+  laneReach.fill(reach_[static_cast<std::size_t>(cell)]);
   // The corners' six components as scalars and the positions in locals (the loop vectorises).
-  float node[4][6];
+  float node[4][7];
   const std::array<const Point*, 4> corners = {&p00, &p10, &p01, &p11};
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 4; ++k) {
     for (int component = 0; component < 3; ++component) {
       node[k][component] = corners[static_cast<std::size_t>(k)]->direction[component];
       node[k][3 + component] = corners[static_cast<std::size_t>(k)]->offset[component];
     }
+    node[k][6] = corners[static_cast<std::size_t>(k)]->lastDistance;
+  }
   alignas(32) Lanes positionX, positionY;
   std::memcpy(positionX.data(), px, sizeof positionX);
   std::memcpy(positionY.data(), py, sizeof positionY);
@@ -203,8 +224,8 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     const float tx = (positionX[lane] - left) * perX, ty = (positionY[lane] - top) * perY;
     const float w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
     const float w01 = (1.0f - tx) * ty, w11 = tx * ty;
-    float blended[6];
-    for (int component = 0; component < 6; ++component)
+    float blended[7];
+    for (int component = 0; component < 7; ++component)
       blended[component] = w00 * node[0][component] + w10 * node[1][component] +
                            w01 * node[2][component] + w11 * node[3][component];
     const float inverseLength = 1.0f / std::sqrt(blended[0] * blended[0] +
@@ -213,7 +234,7 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     const float dz = blended[2] * inverseLength;
     const float ox = blended[3], oy = blended[4], oz = blended[5];
     // The start on the interpolated line at the sample's own |W(last)| = |last| from c.
-    const float distance = lastDistance[lane];
+    const float distance = blended[6];
     const float along = std::sqrt(std::max(0.0f, distance * distance - (ox * ox + oy * oy + oz * oz)));
     tails[lane] = dx;
     tails[kPacketSize + lane] = dy;
