@@ -33,6 +33,8 @@ void TailLattice::build() {
   const int nodeCount = across * down, cellCount = cellsAcross_ * cellsDown_;
   // The positions: every cell corner, then every cell centre, in wall pixels.
   std::vector<float> wallX, wallY;
+  wallX.reserve(static_cast<std::size_t>(nodeCount + cellCount));
+  wallY.reserve(static_cast<std::size_t>(nodeCount + cellCount));
   for (int j = 0; j < down; ++j)
     for (int i = 0; i < across; ++i) {
       wallX.push_back(static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x);
@@ -96,6 +98,32 @@ void TailLattice::build() {
         second.shift = glm::length(before.offset - 2.0f * at.offset + after.offset);
         second.seen = true;
       }
+  // One output pixel's angle (across the ray, the smaller of across and down), the smallest at
+  // the tile's corners: it changes by a few per cent over a tile and peaks where the wall is
+  // nearest the eye, so that no point of the tile sees a smaller one.
+  const auto pixelAngleAt = [&](float wallPixelX, float wallPixelY) {
+    const glm::vec3 toWall =
+        rays_.rayBase() + wallPixelX * rays_.rayStepX() + wallPixelY * rays_.rayStepY();
+    const float distance = glm::length(toWall);
+    const glm::vec3 unit = toWall / distance;
+    const auto across1 = [&](const glm::vec3& step) {
+      return glm::length(step - glm::dot(step, unit) * unit) / distance;
+    };
+    return std::min(across1(pixelToWall_.x * rays_.rayStepX()),
+                    across1(pixelToWall_.y * rays_.rayStepY()));
+  };
+  const float tileLeft = static_cast<float>(x0_) * pixelToWall_.x;
+  const float tileTop = static_cast<float>(y0_) * pixelToWall_.y;
+  const float tileRight = static_cast<float>(x0_ + kTailCellPixels * cellsAcross_) * pixelToWall_.x;
+  const float tileBottom = static_cast<float>(y0_ + kTailCellPixels * cellsDown_) * pixelToWall_.y;
+  const float pixelAngle =
+      std::min(std::min(pixelAngleAt(tileLeft, tileTop), pixelAngleAt(tileRight, tileTop)),
+               std::min(pixelAngleAt(tileLeft, tileBottom), pixelAngleAt(tileRight, tileBottom)));
+  // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
+  // no lookup per sample (an override's alpha is its rays', not the wall pixel's); the whole
+  // tile asked first.
+  const WallMapGrid* grid = rays_.overridden() ? nullptr : rays_.mapGrid();
+  const bool tileLit = grid && grid->litThroughout(tileLeft, tileTop, tileRight, tileBottom);
   for (int cell = 0; cell < cellCount; ++cell) {
     const int i = cell % cellsAcross_, j = cell / cellsAcross_;
     const Point& centre = points[static_cast<std::size_t>(nodeCount + cell)];
@@ -151,25 +179,11 @@ void TailLattice::build() {
         std::max(angle(glm::normalize(direction) - centre.direction, offset - centre.offset),
                  seenX && seenY ? 0.125f * (alongX + alongY)
                                 : std::numeric_limits<float>::infinity());
-    // One output pixel's angle at the centre, the smaller of across and down.
-    const glm::vec3 toWall = rays_.rayBase() + wallX[static_cast<std::size_t>(nodeCount + cell)] *
-                                                   rays_.rayStepX() +
-                             wallY[static_cast<std::size_t>(nodeCount + cell)] * rays_.rayStepY();
-    const float distance = glm::length(toWall);
-    const glm::vec3 unit = toWall / distance;
-    const auto across1 = [&](const glm::vec3& step) {
-      return glm::length(step - glm::dot(step, unit) * unit) / distance;
-    };
-    const float pixelAngle = std::min(across1(pixelToWall_.x * rays_.rayStepX()),
-                                      across1(pixelToWall_.y * rays_.rayStepY()));
-    // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
-    // no lookup per sample (an override's alpha is its rays', not the wall pixel's).
     const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
     const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
     lit_[static_cast<std::size_t>(cell)] =
-        !rays_.overridden() && rays_.mapGrid() &&
-        rays_.mapGrid()->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
-                                       top + kTailCellPixels * pixelToWall_.y);
+        tileLit || (grid && grid->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
+                                                top + kTailCellPixels * pixelToWall_.y));
     pass_[static_cast<std::size_t>(cell)] =
         std::isinf(tolerancePixels_) || (offLine && error <= tolerancePixels_ * pixelAngle) ? 1
                                                                                          : 0;
