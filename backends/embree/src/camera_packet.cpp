@@ -48,7 +48,8 @@ void plainPacket(const CameraRays& rays, const TileJob& job, const PacketSamples
 // targetShift, turned by the camera and normalised, as CameraRays::centreDirection does (glm's
 // order of operations), and, for runs with origins, the stored origins placed as
 // CameraRays::placeOffset does, for the whole packet at once (runs without origins: the rays'
-// origins are set already). Unlit samples hold a zero vector.
+// origins are set already). Unlit samples hold a zero vector. Runs with origins (exact tails)
+// hold unit directions (CameraRays::exactTails, TailLattice::tails) and no shift: only turned.
 void runPacket(const CameraRays& rays, const float* run, bool withOrigins, PacketHits& hits) {
   // Copied into locals, which the compiler knows alias nothing (the loop then vectorises).
   alignas(32) Lanes fx, fy, fz;
@@ -58,20 +59,30 @@ void runPacket(const CameraRays& rays, const float* run, bool withOrigins, Packe
   const glm::mat3& m = rays.rotation();
   const glm::vec3 shift = rays.targetShift();
   RTCRay8& ray = hits.rayhit.ray;
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    const float sx = fx[lane] - shift.x, sy = fy[lane] - shift.y, sz = fz[lane] - shift.z;
-    const float x = m[0][0] * sx + m[1][0] * sy + m[2][0] * sz;
-    const float y = m[0][1] * sx + m[1][1] * sy + m[2][1] * sz;
-    const float z = m[0][2] * sx + m[1][2] * sy + m[2][2] * sz;
-    // Unlit (zero) lanes are not traced; their direction only has to stay finite (a blend, not
-    // a select, so that the loop vectorises).
-    const bool lit = fx[lane] != 0.0f || fy[lane] != 0.0f || fz[lane] != 0.0f;
-    const float unlit = lit ? 0.0f : 1.0f;
-    const float inverseLength = 1.0f / std::sqrt(x * x + y * y + z * z + unlit);
-    ray.dir_x[lane] = x * inverseLength;
-    ray.dir_y[lane] = y * inverseLength;
-    ray.dir_z[lane] = z * inverseLength;
-    hits.valid[lane] = lit ? -1 : 0;
+  if (withOrigins) {  // exact tails: unit directions already (the rotation keeps them so)
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const float sx = fx[lane], sy = fy[lane], sz = fz[lane];
+      ray.dir_x[lane] = m[0][0] * sx + m[1][0] * sy + m[2][0] * sz;
+      ray.dir_y[lane] = m[0][1] * sx + m[1][1] * sy + m[2][1] * sz;
+      ray.dir_z[lane] = m[0][2] * sx + m[1][2] * sy + m[2][2] * sz;
+      hits.valid[lane] = sx != 0.0f || sy != 0.0f || sz != 0.0f ? -1 : 0;
+    }
+  } else {
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const float sx = fx[lane] - shift.x, sy = fy[lane] - shift.y, sz = fz[lane] - shift.z;
+      const float x = m[0][0] * sx + m[1][0] * sy + m[2][0] * sz;
+      const float y = m[0][1] * sx + m[1][1] * sy + m[2][1] * sz;
+      const float z = m[0][2] * sx + m[1][2] * sy + m[2][2] * sz;
+      // Unlit (zero) lanes are not traced; their direction only has to stay finite (a blend,
+      // not a select, so that the loop vectorises).
+      const bool lit = fx[lane] != 0.0f || fy[lane] != 0.0f || fz[lane] != 0.0f;
+      const float unlit = lit ? 0.0f : 1.0f;
+      const float inverseLength = 1.0f / std::sqrt(x * x + y * y + z * z + unlit);
+      ray.dir_x[lane] = x * inverseLength;
+      ray.dir_y[lane] = y * inverseLength;
+      ray.dir_z[lane] = z * inverseLength;
+      hits.valid[lane] = lit ? -1 : 0;
+    }
   }
   if (!withOrigins) return;
   alignas(32) Lanes ox, oy, oz;

@@ -86,47 +86,77 @@ void CameraRays::fastTargets(const float* px, const float* py, int count, float*
   }
 }
 
-void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& out) const {
-  static const float tanAsymptote = static_cast<float>(std::tan(kAsymptoteAngle));
-  static const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
+namespace {
+
+// The closed form of one sample's curve (tailGeometry): the physical ray's unit direction
+// u towards the wall point base + px stepX + py stepY, the eye's offset a = e - c across it
+// (curvedRay's foot relative to c), its length h, and the curve's reach. Divisions by constants
+// are multiplications by their reciprocals (no division is exact either way; the reach's margin
+// covers the rounding).
+struct LaneCurve {
+  float x, y, z, perpX, perpY, perpZ, h, lastDistance, reach;
+  bool onLine;
+};
+
+struct CurveConstants {
+  glm::vec3 base, stepX, stepY, eye;
+  float eyeDistance, tanAsymptote, inverseSin;
+};
+
+CurveConstants curveConstants(const glm::vec3& base, const glm::vec3& stepX,
+                              const glm::vec3& stepY, const glm::vec3& eye) {
+  return {base, stepX, stepY, eye, std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z),
+          static_cast<float>(std::tan(kAsymptoteAngle)),
+          static_cast<float>(1.0 / std::sin(kAsymptoteAngle))};
+}
+
+inline LaneCurve laneCurve(const CurveConstants& k, float px, float py) {
   constexpr float kUnbounded = std::numeric_limits<float>::infinity();
+  LaneCurve l;
+  const float tx = k.base.x + px * k.stepX.x + py * k.stepY.x;
+  const float ty = k.base.y + px * k.stepX.y + py * k.stepY.y;
+  const float tz = k.base.z + px * k.stepX.z + py * k.stepY.z;
+  const float inverseLength = 1.0f / std::sqrt(tx * tx + ty * ty + tz * tz);
+  l.x = tx * inverseLength, l.y = ty * inverseLength, l.z = tz * inverseLength;
+  const glm::vec3& a = k.eye;
+  const float along = a.x * l.x + a.y * l.y + a.z * l.z;
+  l.perpX = a.x - along * l.x, l.perpY = a.y - along * l.y, l.perpZ = a.z - along * l.z;
+  l.h = std::sqrt(l.perpX * l.perpX + l.perpY * l.perpY + l.perpZ * l.perpZ);
+  // The angle between u and dir(e - c), atan2(h, along), at most kAsymptoteAngle: a line
+  // through c, for curvedPath.
+  l.onLine = !(l.h > along * k.tanAsymptote);
+  // The last vertex, where the angle at c is kAsymptoteAngle: h / sin(angle) from c. The
+  // curve's vertices lie between |e - c| and that from c; the margin covers float rounding
+  // (the clearance query reaches 1 % beyond the widest reach, curvedReach).
+  l.lastDistance = l.h * k.inverseSin;
+  l.reach = l.onLine ? kUnbounded : 1.0001f * std::max(k.eyeDistance, l.lastDistance);
+  return l;
+}
+
+}  // namespace
+
+void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& out) const {
   const PacketGeometry& g = packet_;
-  const glm::vec3 a = g.eye;
-  const float eyeDistance = std::sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+  const CurveConstants k = curveConstants(g.base, g.stepX, g.stepY, g.eye);
+  const float toLastPerH = 1.0f / k.tanAsymptote;
   // Into locals, which the compiler knows alias nothing (the loop then vectorises).
   alignas(32) Lanes positionX, positionY;
   std::memcpy(positionX.data(), px, sizeof positionX);
   std::memcpy(positionY.data(), py, sizeof positionY);
   TailGeometry geometry;
   for (int lane = 0; lane < kPacketSize; ++lane) {
-    // u: the physical ray's unit direction (towards the sample's wall point).
-    const float tx = g.base.x + positionX[lane] * g.stepX.x + positionY[lane] * g.stepY.x;
-    const float ty = g.base.y + positionX[lane] * g.stepX.y + positionY[lane] * g.stepY.y;
-    const float tz = g.base.z + positionX[lane] * g.stepX.z + positionY[lane] * g.stepY.z;
-    const float inverseLength = 1.0f / std::sqrt(tx * tx + ty * ty + tz * tz);
-    const float x = tx * inverseLength, y = ty * inverseLength, z = tz * inverseLength;
-    // The eye's offset across the ray (curvedRay's foot relative to c) and its length h.
-    const float along = a.x * x + a.y * y + a.z * z;
-    const float perpX = a.x - along * x, perpY = a.y - along * y, perpZ = a.z - along * z;
-    const float h = std::sqrt(perpX * perpX + perpY * perpY + perpZ * perpZ);
-    // The angle between u and dir(e - c), atan2(h, along), at most kAsymptoteAngle: a line
-    // through c, for curvedPath.
-    const bool onLine = !(h > along * tanAsymptote);
-    // The last vertex, where the angle at c is kAsymptoteAngle: h / sin(angle) from c. The
-    // curve's vertices lie between |e - c| and that from c; the margin covers float rounding
-    // (the clearance query reaches 1 % beyond the widest reach, curvedReach).
-    const float toLast = h / tanAsymptote;
-    geometry.lastDistance[lane] = h / sinAsymptote;
+    const LaneCurve l = laneCurve(k, positionX[lane], positionY[lane]);
+    const float toLast = l.h * toLastPerH;
+    geometry.lastDistance[lane] = l.lastDistance;
     // A ray through c (h = 0 behind the eye) has its last vertex at c itself: any direction
     // serves the lookup (a zero one would not; lattice nodes can sit exactly there).
-    const bool throughCentre = onLine || !(h > 0.0f);
-    geometry.lastX[lane] = throughCentre ? x : perpX + toLast * x;
-    geometry.lastY[lane] = throughCentre ? y : perpY + toLast * y;
-    geometry.lastZ[lane] = throughCentre ? z : perpZ + toLast * z;
-    geometry.ux[lane] = x, geometry.uy[lane] = y, geometry.uz[lane] = z;
-    geometry.h[lane] = h;
-    geometry.reach[lane] =
-        onLine ? kUnbounded : 1.0001f * std::max(eyeDistance, geometry.lastDistance[lane]);
+    const bool throughCentre = l.onLine || !(l.h > 0.0f);
+    geometry.lastX[lane] = throughCentre ? l.x : l.perpX + toLast * l.x;
+    geometry.lastY[lane] = throughCentre ? l.y : l.perpY + toLast * l.y;
+    geometry.lastZ[lane] = throughCentre ? l.z : l.perpZ + toLast * l.z;
+    geometry.ux[lane] = l.x, geometry.uy[lane] = l.y, geometry.uz[lane] = l.z;
+    geometry.h[lane] = l.h;
+    geometry.reach[lane] = l.reach;
   }
   out = geometry;
 }

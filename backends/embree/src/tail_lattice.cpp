@@ -33,6 +33,8 @@ void TailLattice::build() {
   const int nodeCount = across * down, cellCount = cellsAcross_ * cellsDown_;
   // The positions: every cell corner, then every cell centre, in wall pixels.
   std::vector<float> wallX, wallY;
+  wallX.reserve(static_cast<std::size_t>(nodeCount + cellCount));
+  wallY.reserve(static_cast<std::size_t>(nodeCount + cellCount));
   for (int j = 0; j < down; ++j)
     for (int i = 0; i < across; ++i) {
       wallX.push_back(static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x);
@@ -64,32 +66,93 @@ void TailLattice::build() {
       point.offset = start - glm::dot(start, point.direction) * point.direction;
       point.u = {geometry.ux[lane], geometry.uy[lane], geometry.uz[lane]};
       point.h = geometry.h[lane];
+      point.lastDistance = geometry.lastDistance[lane];
     }
   }
   nodes_.assign(points.begin(), points.begin() + nodeCount);
   pass_.assign(static_cast<std::size_t>(cellCount), 0);
   lit_.assign(static_cast<std::size_t>(cellCount), 0);
+  reach_.assign(static_cast<std::size_t>(cellCount), 0.0f);
   const glm::vec3 eye = rays_.eyeFromCentre();
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
+  const float tanAsymptote = static_cast<float>(std::tan(kAsymptoteAngle));
+  // The lattice's second differences along x and y at every node with both neighbours in the
+  // tile, once per node (each serves up to four cells): the turn's and the shift's lengths, which
+  // a cell weighs by its own reach.
+  struct Second {
+    float turn = 0.0f, shift = 0.0f;
+    bool seen = false;  // the node has both neighbours along the axis
+  };
+  std::vector<std::array<Second, 2>> seconds(static_cast<std::size_t>(nodeCount));
+  for (int nj = 0; nj < down; ++nj)
+    for (int ni = 0; ni < across; ++ni)
+      for (int axis = 0; axis < 2; ++axis) {
+        const int di = axis == 0 ? 1 : 0, dj = 1 - di;
+        if (ni - di < 0 || nj - dj < 0 || ni + di >= across || nj + dj >= down) continue;
+        const Point& before = nodes_[static_cast<std::size_t>((nj - dj) * across + ni - di)];
+        const Point& at = nodes_[static_cast<std::size_t>(nj * across + ni)];
+        const Point& after = nodes_[static_cast<std::size_t>((nj + dj) * across + ni + di)];
+        Second& second = seconds[static_cast<std::size_t>(nj * across + ni)][axis];
+        second.turn = glm::length(before.direction - 2.0f * at.direction + after.direction);
+        second.shift = glm::length(before.offset - 2.0f * at.offset + after.offset);
+        second.seen = true;
+      }
+  // One output pixel's angle (across the ray, the smaller of across and down), the smallest at
+  // the tile's corners: it changes by a few per cent over a tile and peaks where the wall is
+  // nearest the eye, so that no point of the tile sees a smaller one.
+  const auto pixelAngleAt = [&](float wallPixelX, float wallPixelY) {
+    const glm::vec3 toWall =
+        rays_.rayBase() + wallPixelX * rays_.rayStepX() + wallPixelY * rays_.rayStepY();
+    const float distance = glm::length(toWall);
+    const glm::vec3 unit = toWall / distance;
+    const auto across1 = [&](const glm::vec3& step) {
+      return glm::length(step - glm::dot(step, unit) * unit) / distance;
+    };
+    return std::min(across1(pixelToWall_.x * rays_.rayStepX()),
+                    across1(pixelToWall_.y * rays_.rayStepY()));
+  };
+  const float tileLeft = static_cast<float>(x0_) * pixelToWall_.x;
+  const float tileTop = static_cast<float>(y0_) * pixelToWall_.y;
+  const float tileRight = static_cast<float>(x0_ + kTailCellPixels * cellsAcross_) * pixelToWall_.x;
+  const float tileBottom = static_cast<float>(y0_ + kTailCellPixels * cellsDown_) * pixelToWall_.y;
+  const float pixelAngle =
+      std::min(std::min(pixelAngleAt(tileLeft, tileTop), pixelAngleAt(tileRight, tileTop)),
+               std::min(pixelAngleAt(tileLeft, tileBottom), pixelAngleAt(tileRight, tileBottom)));
+  // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
+  // no lookup per sample (an override's alpha is its rays', not the wall pixel's); the whole
+  // tile asked first.
+  const WallMapGrid* grid = rays_.overridden() ? nullptr : rays_.mapGrid();
+  const bool tileLit = grid && grid->litThroughout(tileLeft, tileTop, tileRight, tileBottom);
   for (int cell = 0; cell < cellCount; ++cell) {
     const int i = cell % cellsAcross_, j = cell / cellsAcross_;
     const Point& centre = points[static_cast<std::size_t>(nodeCount + cell)];
-    const std::array<const Point*, 4> corners = {
-        &nodes_[static_cast<std::size_t>(j * across + i)],
-        &nodes_[static_cast<std::size_t>(j * across + i + 1)],
-        &nodes_[static_cast<std::size_t>((j + 1) * across + i)],
-        &nodes_[static_cast<std::size_t>((j + 1) * across + i + 1)]};
+    const std::array<int, 4> cornerNodes = {j * across + i, j * across + i + 1,
+                                            (j + 1) * across + i, (j + 1) * across + i + 1};
     glm::vec3 direction(0.0f), offset(0.0f);
-    float chord = 0.0f;  // the cell's angular radius seen from the eye (its corners' farthest)
-    for (const Point* corner : corners) {
-      direction += 0.25f * corner->direction;
-      offset += 0.25f * corner->offset;
-      chord = std::max(chord, glm::length(corner->u - centre.u));
+    float chordSquared = 0.0f;  // the cell's angular radius from the eye, squared (farthest corner)
+    for (int node : cornerNodes) {
+      const Point& corner = nodes_[static_cast<std::size_t>(node)];
+      direction += 0.25f * corner.direction;
+      offset += 0.25f * corner.offset;
+      const glm::vec3 chord = corner.u - centre.u;
+      chordSquared = std::max(chordSquared, glm::dot(chord, chord));
     }
-    // The smallest reach in the cell: h is 1-Lipschitz in u times |e - c|.
-    const float reach =
-        std::max(eyeDistance, (centre.h - eyeDistance * chord) / sinAsymptote);
+    // h = |e - c| sin(angle(u, e - c)) is 1-Lipschitz in the angle between rays times |e - c|:
+    // within the cell it lies within `spread` of the centre's (the angle from the chord; a
+    // relative margin for float rounding).
+    const float angularRadius = 2.0f * std::asin(std::min(1.0f, 0.5f * std::sqrt(chordSquared)));
+    const float spread = eyeDistance * angularRadius;
+    // The smallest reach in the cell (what the check weighs the offsets' error by) and the
+    // largest (what the cell's samples report: CameraRays::exactTails' reach bounded above,
+    // 1.0001 |e - c| at least as there, so that a packet is straight only where every curve of
+    // it bends inside the empty ball).
+    const float reach = std::max(eyeDistance, (centre.h - spread) / sinAsymptote);
+    reach_[static_cast<std::size_t>(cell)] =
+        1.0001f * std::max(eyeDistance, 1.00001f * (centre.h + spread) / sinAsymptote);
+    // A sample on a line through c (h <= along tan(asymptote), along <= |e - c|) needs its whole
+    // curve traced (infinite reach): a cell that may hold one is not interpolated.
+    const bool offLine = centre.h - spread > 1.01f * eyeDistance * tanAsymptote;
     // The line's angular error: the turn plus the offset's shift over the nearest hit.
     const auto angle = [reach](const glm::vec3& turn, const glm::vec3& shift) {
       return glm::length(turn) + glm::length(shift) / reach;
@@ -99,47 +162,31 @@ void TailLattice::build() {
     // misses where the two cancel, a saddle): at the cell's corners' nodes that have both
     // neighbours in the tile. A cell with none along an axis (a tile one cell wide) is not
     // interpolated.
-    const auto secondDifference = [&](int ni, int nj, int di, int dj, float& worst) {
-      if (ni - di < 0 || nj - dj < 0 || ni + di >= across || nj + dj >= down) return false;
-      const Point& before = nodes_[static_cast<std::size_t>((nj - dj) * across + ni - di)];
-      const Point& at = nodes_[static_cast<std::size_t>(nj * across + ni)];
-      const Point& after = nodes_[static_cast<std::size_t>((nj + dj) * across + ni + di)];
-      worst = std::max(worst, angle(before.direction - 2.0f * at.direction + after.direction,
-                                    before.offset - 2.0f * at.offset + after.offset));
-      return true;
-    };
     float alongX = 0.0f, alongY = 0.0f;
     bool seenX = false, seenY = false;
-    for (int dj = 0; dj <= 1; ++dj)
-      for (int di = 0; di <= 1; ++di) {
-        seenX = secondDifference(i + di, j + dj, 1, 0, alongX) || seenX;
-        seenY = secondDifference(i + di, j + dj, 0, 1, alongY) || seenY;
+    for (int node : cornerNodes) {
+      const std::array<Second, 2>& second = seconds[static_cast<std::size_t>(node)];
+      if (second[0].seen) {
+        seenX = true;
+        alongX = std::max(alongX, second[0].turn + second[0].shift / reach);
       }
+      if (second[1].seen) {
+        seenY = true;
+        alongY = std::max(alongY, second[1].turn + second[1].shift / reach);
+      }
+    }
     const float error =
         std::max(angle(glm::normalize(direction) - centre.direction, offset - centre.offset),
                  seenX && seenY ? 0.125f * (alongX + alongY)
                                 : std::numeric_limits<float>::infinity());
-    // One output pixel's angle at the centre, the smaller of across and down.
-    const glm::vec3 toWall = rays_.rayBase() + wallX[static_cast<std::size_t>(nodeCount + cell)] *
-                                                   rays_.rayStepX() +
-                             wallY[static_cast<std::size_t>(nodeCount + cell)] * rays_.rayStepY();
-    const float distance = glm::length(toWall);
-    const glm::vec3 unit = toWall / distance;
-    const auto across1 = [&](const glm::vec3& step) {
-      return glm::length(step - glm::dot(step, unit) * unit) / distance;
-    };
-    const float pixelAngle = std::min(across1(pixelToWall_.x * rays_.rayStepX()),
-                                      across1(pixelToWall_.y * rays_.rayStepY()));
-    // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
-    // no lookup per sample (an override's alpha is its rays', not the wall pixel's).
     const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
     const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
     lit_[static_cast<std::size_t>(cell)] =
-        !rays_.overridden() && rays_.mapGrid() &&
-        rays_.mapGrid()->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
-                                       top + kTailCellPixels * pixelToWall_.y);
+        tileLit || (grid && grid->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
+                                                top + kTailCellPixels * pixelToWall_.y));
     pass_[static_cast<std::size_t>(cell)] =
-        std::isinf(tolerancePixels_) || error <= tolerancePixels_ * pixelAngle ? 1 : 0;
+        std::isinf(tolerancePixels_) || (offLine && error <= tolerancePixels_ * pixelAngle) ? 1
+                                                                                         : 0;
   }
 }
 
@@ -168,16 +215,21 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     for (int lane = 0; lane < kPacketSize; ++lane) alpha[lane] = lane < samples.count ? 1.0f : 0.0f;
   else
     rays_.pixelAlpha(px, py, samples.count, alpha.data());
-  CameraRays::TailGeometry geometry;
-  rays_.tailGeometry(px, py, geometry);
+  // Every lane's reach: the cell's bound (build); its last vertex's distance from c blended as
+  // the tails are (where the packet is straight, the start lies inside the empty ball either way,
+  // on the same line: the same hits).
+  alignas(32) Lanes laneReach;
+  laneReach.fill(reach_[static_cast<std::size_t>(cell)]);
   // The corners' six components as scalars and the positions in locals (the loop vectorises).
-  float node[4][6];
+  float node[4][7];
   const std::array<const Point*, 4> corners = {&p00, &p10, &p01, &p11};
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 4; ++k) {
     for (int component = 0; component < 3; ++component) {
       node[k][component] = corners[static_cast<std::size_t>(k)]->direction[component];
       node[k][3 + component] = corners[static_cast<std::size_t>(k)]->offset[component];
     }
+    node[k][6] = corners[static_cast<std::size_t>(k)]->lastDistance;
+  }
   alignas(32) Lanes positionX, positionY;
   std::memcpy(positionX.data(), px, sizeof positionX);
   std::memcpy(positionY.data(), py, sizeof positionY);
@@ -186,8 +238,8 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     const float tx = (positionX[lane] - left) * perX, ty = (positionY[lane] - top) * perY;
     const float w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
     const float w01 = (1.0f - tx) * ty, w11 = tx * ty;
-    float blended[6];
-    for (int component = 0; component < 6; ++component)
+    float blended[7];
+    for (int component = 0; component < 7; ++component)
       blended[component] = w00 * node[0][component] + w10 * node[1][component] +
                            w01 * node[2][component] + w11 * node[3][component];
     const float inverseLength = 1.0f / std::sqrt(blended[0] * blended[0] +
@@ -196,7 +248,7 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     const float dz = blended[2] * inverseLength;
     const float ox = blended[3], oy = blended[4], oz = blended[5];
     // The start on the interpolated line at the sample's own |W(last)| = |last| from c.
-    const float distance = geometry.lastDistance[lane];
+    const float distance = blended[6];
     const float along = std::sqrt(std::max(0.0f, distance * distance - (ox * ox + oy * oy + oz * oz)));
     tails[lane] = dx;
     tails[kPacketSize + lane] = dy;
@@ -205,7 +257,7 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     tails[4 * kPacketSize + lane] = oy + along * dy;
     tails[5 * kPacketSize + lane] = oz + along * dz;
   }
-  return CameraRays::maskTails(alpha.data(), geometry.reach.data(), tails.data(), run, reach);
+  return CameraRays::maskTails(alpha.data(), laneReach.data(), tails.data(), run, reach);
 }
 
 }  // namespace confvis::embree

@@ -11,9 +11,14 @@
 //
 // What is interpolated is what decides the traced line: the unit direction D and the start's
 // offset across it, O = S - (S.D) D (about J_F(u) (e - c)_perp: smooth, where S itself spins
-// with the eye's offset across the ray). Each sample's start is rebuilt on its own line at its
-// own exact distance from c (|W(last)| = |last|, W keeps distances to c), so its reach, and
-// which of its segments the empty ball holds, stay exact. A line moved by dO and turned by dD
+// with the eye's offset across the ray). Each sample's start is rebuilt on its own line at the
+// blended distance of the corners' last vertices from c (|W(last)| = |last|, W keeps distances
+// to c), and every sample of the cell reports the cell's largest reach (from the centre's h
+// plus the cell's angular radius times |e - c|; no closed form per sample): a packet is traced
+// as straight tails only where that bound lies inside the empty ball, and there the true start
+// and the rebuilt one lie on the same line inside the ball, which holds no hit. Cells that may
+// hold a sample on a line through c (infinite reach) are not interpolated. A line moved by dO
+// and turned by dD
 // moves a hit at distance r from c by about |dO| / r + |dD| in angle, and every hit a tail
 // traces lies beyond the sample's reach (else the curve is marched): the check bounds
 // |dD| + |dO| / R, with R the smallest reach in the cell (from the centre's h less the cell's
@@ -41,7 +46,8 @@ class TailLattice {
               float tolerancePixels = kTailTolerancePixels);
 
   // CameraRays::exactTails for a packet of this tile (its positions px, py): interpolated where
-  // its cell passed the check, else exactTails itself.
+  // its cell passed the check (each lane's reach then the cell's bound, at least its own), else
+  // exactTails itself.
   float tails(const PacketSamples& samples, const float* px, const float* py, float* run,
               float* reach);
 
@@ -51,7 +57,7 @@ class TailLattice {
  private:
   struct Point {  // the exact tail at one wall position, with what the check needs
     glm::vec3 direction{0.0f}, offset{0.0f}, u{0.0f};
-    float h = 0.0f;
+    float h = 0.0f, lastDistance = 0.0f;
   };
   void build();
   int cellIndex(int x, int y) const {
@@ -67,6 +73,7 @@ class TailLattice {
   std::vector<Point> nodes_;  // (cellsAcross + 1) x (cellsDown + 1) cell corners, row by row
   std::vector<char> pass_;    // per cell: interpolated
   std::vector<char> lit_;     // per cell: every sample lit (WallMapGrid::litThroughout)
+  std::vector<float> reach_;  // per cell: an upper bound of its samples' reach (exactTails')
 };
 
 }  // namespace confvis::embree

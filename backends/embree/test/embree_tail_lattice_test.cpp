@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "../src/camera_packet.hpp"
@@ -99,8 +100,6 @@ LatticeErrors latticeErrors(const std::string& wallName, Eye eye, const glm::dve
           forced.tails(samples, px.data(), py.data(), forcedRun.data(), forcedReach.data());
           rays.exactTails(px.data(), py.data(), samples.count, exact.data(), exactReach.data());
           for (int lane = 0; lane < samples.count; ++lane) {
-            EXPECT_EQ(reach[lane], exactReach[lane]);  // lit and reach are each lane's own
-            if (!(exactReach[lane] > 0.0f) || std::isinf(exactReach[lane])) continue;
             // One output pixel's angle at the lane (across its ray).
             const glm::dvec3 toWall = glm::dvec3(rays.rayBase()) +
                                       double(px[lane]) * glm::dvec3(rays.rayStepX()) +
@@ -108,6 +107,21 @@ LatticeErrors latticeErrors(const std::string& wallName, Eye eye, const glm::dve
             const glm::dvec3 unit = glm::normalize(toWall);
             const double pixelAngle =
                 glm::length(stepX - glm::dot(stepX, unit) * unit) / glm::length(toWall);
+            if (!accepted || !(exactReach[lane] > 0.0f)) {
+              EXPECT_EQ(reach[lane], exactReach[lane]);  // lit and reach are each lane's own
+            } else {
+              // The cell's bound: no curve of it bends beyond (so that a straight packet's curves
+              // all lie inside the empty ball), and not much looser than the cell's spread of h
+              // (two cell diagonals' angle times |e - c|) allows; the rebuilt start lies within.
+              EXPECT_GE(reach[lane], exactReach[lane]);
+              const double spread = 2.0 * glm::length(glm::dvec3(rays.eyeFromCentre())) * 1.5 *
+                                    kTailCellPixels * pixelAngle / std::sin(kAsymptoteAngle);
+              EXPECT_LE(reach[lane], exactReach[lane] + spread);
+              const glm::dvec3 start(run[3 * kPacketSize + lane], run[4 * kPacketSize + lane],
+                                     run[5 * kPacketSize + lane]);
+              EXPECT_LE(glm::length(start), 1.0001 * reach[lane]);
+            }
+            if (!(exactReach[lane] > 0.0f) || std::isinf(exactReach[lane])) continue;
             const double own =
                 tailDistancePixels(run.data(), exact.data(), lane, exactReach[lane], pixelAngle);
             const double shortcut = tailDistancePixels(forcedRun.data(), exact.data(), lane,
