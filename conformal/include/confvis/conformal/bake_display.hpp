@@ -93,6 +93,8 @@ BakedDisplay bakeDisplay(const DisplayConfig& config, const BakeDisplayOptions& 
 
 // A RetargetMap a DisplayMapSource has already baked (bakeDisplay's checks bake each candidate
 // map to judge it), with the options it was baked with.
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
 struct PrebakedRetargetMap {
   RetargetMap map;
   BakeOptions options;
@@ -103,6 +105,7 @@ struct PrebakedRetargetMap {
 // returns that bake instead of baking the same map again when it was made with the resolution,
 // reference point and interpolation bakeDisplayWith would bake with (threads and progress do not
 // change the texels); otherwise it bakes the map itself.
+// Thread-safety: a value, as PrebakedRetargetMap.
 struct SourcedDisplayMap {
   SourcedDisplayMap() = default;
   // A source of display maps alone (no bake to reuse) converts implicitly.
