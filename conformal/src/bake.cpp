@@ -1,5 +1,6 @@
 #include "confvis/conformal/bake.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -8,6 +9,7 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
+#include "bake_count.hpp"
 #include "cube_texels.hpp"
 #include "disk_locator.hpp"
 #include "parallel_for.hpp"
@@ -24,6 +26,8 @@ double secondsSince(Clock::time_point start) {
 }
 
 constexpr int kMaxResolution = 8192;
+
+std::atomic<std::size_t> bakes{0};  // detail::retargetBakeCount
 
 using detail::writeDirection;
 
@@ -235,6 +239,8 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
 
 }  // namespace
 
+std::size_t detail::retargetBakeCount() { return bakes.load(std::memory_order_relaxed); }
+
 void validateDisplayMap(const DisplayMap& map) {
   validateMesh(map.source, "source");
   validateMesh(map.target, "target");
@@ -256,6 +262,7 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
   if (!isFinite(options.reference))
     throw Error(ErrorCode::InvalidInput, "bake reference point is not finite");
   validateDisplayMap(map);
+  bakes.fetch_add(1, std::memory_order_relaxed);
   BakeTimings t;
   const auto start = Clock::now();
   auto stage = Clock::now();
@@ -284,22 +291,24 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
   for (CubeMap* cube : {&result.ray, &result.geom})
     if (cube->faceSize != resolution) *cube = CubeMap(resolution);
   std::vector<std::uint8_t> rayCovered, geomCovered;
-  stage = Clock::now();
-  if (smooth)
-    detail::bakeDirectionMapSmooth(map.target, map.source, *targetBlend, *sourceBlend, sourceDisk,
-                                   options.threads, result.ray, rayCovered, progress.get());
-  else
-    bakeDirectionMap(map.target, map.source, sourceDisk, options.threads, result.ray, rayCovered,
-                     progress.get());
-  t.ray = secondsSince(stage);
-  stage = Clock::now();
-  if (smooth)
-    detail::bakeDirectionMapSmooth(map.source, map.target, *sourceBlend, *targetBlend, targetDisk,
-                                   options.threads, result.geom, geomCovered, progress.get());
-  else
-    bakeDirectionMap(map.source, map.target, targetDisk, options.threads, result.geom,
-                     geomCovered, progress.get());
-  t.geom = secondsSince(stage);
+  // ray: from the target (physical directions) to the source; geom: the other way round.
+  // Returns the seconds it took.
+  auto bakeDirection = [&](bool ray, CubeMap& out, std::vector<std::uint8_t>& covered) {
+    const SphereDiskMesh& domain = ray ? map.target : map.source;
+    const SphereDiskMesh& codomain = ray ? map.source : map.target;
+    const detail::DiskLocator& codomainDisk = ray ? sourceDisk : targetDisk;
+    const auto directionStart = Clock::now();
+    if (smooth)
+      detail::bakeDirectionMapSmooth(domain, codomain, ray ? *targetBlend : *sourceBlend,
+                                     ray ? *sourceBlend : *targetBlend, codomainDisk,
+                                     options.threads, out, covered, progress.get());
+    else
+      bakeDirectionMap(domain, codomain, codomainDisk, options.threads, out, covered,
+                       progress.get());
+    return secondsSince(directionStart);
+  };
+  t.ray = bakeDirection(true, result.ray, rayCovered);
+  t.geom = bakeDirection(false, result.geom, geomCovered);
   stage = Clock::now();
   detail::parallelFor(2, options.threads, [&](std::size_t which) {
     CubeMap& cube = which == 0 ? result.ray : result.geom;

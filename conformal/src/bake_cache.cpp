@@ -10,6 +10,7 @@
 
 #include "confvis/base/checksum.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/conformal/bake_files.hpp"
 #include "confvis/engine/version.hpp"
@@ -41,8 +42,8 @@ namespace detail {
 std::optional<LoadedBake> loadCacheEntry(const fs::path& entry, const DisplayConfig& config,
                                          const nlohmann::json& mapSettings, std::string& note) {
   std::error_code ec;
-  if (!fs::exists(entry / "bake.json", ec)) {
-    if (fs::exists(entry, ec)) {  // a folder without its sidecar: an interrupted copy
+  if (!pathExists(entry / "bake.json")) {
+    if (pathExists(entry)) {  // a folder without its sidecar: an interrupted copy
       note = "cache entry '" + entry.string() + "' has no bake.json";
       fs::remove_all(entry, ec);
     }

@@ -45,6 +45,26 @@ nlohmann::json bakeMapSettings(const BakeDisplayOptions& options) {
   return mapSettingsJson(map.route, map.grading, bakeInterpolation(options));
 }
 
+BakeOptions displayBakeOptions(const DisplayConfig& config, const BakeDisplayOptions& options) {
+  BakeOptions bake;
+  bake.reference = {config.reference.x, config.reference.y, config.reference.z};
+  bake.threads = options.threads;
+  bake.showProgress = options.showProgress;
+  bake.interpolation = bakeInterpolation(options);
+  return bake;
+}
+
+namespace {
+
+// Whether a source's bake holds the texels bakeRetargetMap(map, resolution, wanted) would.
+bool sameTexels(const PrebakedRetargetMap& baked, int resolution, const BakeOptions& wanted) {
+  return baked.map.resolution() == resolution && baked.map.reference == wanted.reference &&
+         baked.options.reference == wanted.reference &&
+         baked.options.interpolation == wanted.interpolation;
+}
+
+}  // namespace
+
 BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptions& options,
                              const DisplayMapSource& computeMap) {
   BakedDisplay result;
@@ -62,14 +82,15 @@ BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptio
       return result;
     }
   }
-  DisplayMap displayMap = computeMap(result.config);
-  const glm::dvec3& c = result.config.reference;
-  BakeOptions bake;
-  bake.reference = {c.x, c.y, c.z};
-  bake.threads = options.threads;
-  bake.showProgress = options.showProgress;
-  bake.interpolation = bakeInterpolation(options);
-  result.map = bakeRetargetMap(displayMap, result.config.cubeResolution, bake, &result.timings);
+  SourcedDisplayMap sourced = computeMap(result.config);
+  DisplayMap& displayMap = sourced.map;
+  const BakeOptions bake = displayBakeOptions(result.config, options);
+  if (sourced.baked && sameTexels(*sourced.baked, result.config.cubeResolution, bake)) {
+    result.map = std::move(sourced.baked->map);
+    result.timings = sourced.baked->timings;
+  } else {
+    result.map = bakeRetargetMap(displayMap, result.config.cubeResolution, bake, &result.timings);
+  }
   result.sidecar = makeBakeSidecar(result.config, displayMap, result.map, result.timings, 0,
                                    options.showProgress);
   result.sidecar["map_settings"] = mapSettings;

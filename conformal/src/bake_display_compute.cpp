@@ -4,6 +4,7 @@
 #include "confvis/conformal/bake_display.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -16,6 +17,11 @@
 
 namespace confvis {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 struct Attempt {
   double edgeLength;
@@ -72,13 +78,17 @@ std::string bandNote(const DisplayConfig& config) {
   return text;
 }
 
-DisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
-                                    const BakeDisplayOptions& options) {
+// The first map of the repair plan whose bake passes the checks, with that bake (the one
+// bakeDisplay returns: the map is baked once).
+SourcedDisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
+                                           const BakeDisplayOptions& options) {
   std::vector<std::string> failures;
   std::optional<Error> firstError;
   bool sameErrorEverywhere = true;
   const std::vector<Attempt> plan = repairPlan(effective);
+  const auto planStart = Clock::now();
   for (std::size_t k = 0; k < plan.size(); ++k) {
+    const double failedSeconds = secondsSince(planStart);  // the attempts before this one
     DisplayConfig config = effective;
     config.edgeLength = plan[k].edgeLength;
     if (plan[k].hemisphere) config.source = SourceField::Hemisphere;
@@ -95,16 +105,22 @@ DisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
       continue;
     }
     sameErrorEverywhere = false;
-    BakeOptions bake;
-    bake.reference = {config.reference.x, config.reference.y, config.reference.z};
-    bake.threads = options.threads;
-    bake.interpolation = bakeInterpolation(options);  // the verdict judges the map as it is baked
-    const BakeVerdict verdict = judgeBake(map, bakeRetargetMap(map, config.cubeResolution, bake));
+    // The verdict judges the map as bakeDisplayWith bakes it, and that bake is handed back.
+    PrebakedRetargetMap baked;
+    baked.options = displayBakeOptions(config, options);
+    baked.map = bakeRetargetMap(map, config.cubeResolution, baked.options, &baked.timings);
+    const auto judging = Clock::now();
+    const BakeVerdict verdict = judgeBake(map, baked.map);
     if (verdict.ok()) {
       map.stats["checks"] = verdict.toJson();
+      map.stats["checks"]["seconds"] = secondsSince(judging);
       if (k > 0)
-        map.stats["repair"] = {{"applied", plan[k].what()}, {"failed_attempts", failures}};
-      return map;
+        map.stats["repair"] = {{"applied", plan[k].what()},
+                               {"failed_attempts", failures},
+                               {"failed_attempts_seconds", failedSeconds}};
+      SourcedDisplayMap result(std::move(map));
+      result.baked = std::move(baked);
+      return result;
     }
     failures.push_back(plan[k].what() + ": " + verdict.summary());
   }

@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <future>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
@@ -14,6 +17,7 @@
 #include "confvis/conformal/display_template.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "display_alignment.hpp"
+#include "flow_progress.hpp"
 
 namespace confvis {
 namespace {
@@ -96,6 +100,7 @@ std::vector<std::complex<double>> centredOnBoundary(const SphereDiskMesh& mesh,
 struct FlowResult {
   conformal::DiskMap map;
   double seconds = 0;
+  std::string directFailure;  // why the direct spherical flow failed, if it did
 };
 
 FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool graded,
@@ -129,6 +134,24 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
   // 20 cm; cave5's 4); one that fails costs most of the re-bake (cave3 at 10 cm: 4.3 + 2.1 s CPU
   // for 20 steps each, against ~0.4 s for the fallback), so it is given up after 12.
   if (graded) options.maxIterations = 12;
+  // And sooner where it is not converging (flow_progress.hpp): cave3 at 10 cm then gives its
+  // source up after 7 + 4 steps (without, then with flips) instead of 12 + 12, its target after
+  // 4 + 4. A flow that converges is never given up (cave4-6 in 4 steps, cave3's source at 20 cm
+  // in 8), so the maps and routes stay as they were.
+  std::vector<double> directErrors;
+  if (graded && route == DisplayMapRoute::Spherical)
+    options.onIteration = [&](int iteration, double error) {
+      if (iteration == 1) directErrors.clear();  // a retry with flips starts afresh
+      directErrors.push_back(error);
+      if (detail::flowIsNotConverging(directErrors)) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "the spherical flow is not converging (max curvature error %.3g after %d "
+                      "Newton steps, %.3g three steps before)",
+                      error, iteration, directErrors[directErrors.size() - 4]);
+        throw Error(ErrorCode::Unreachable, text);
+      }
+    };
   // A graded mesh has many rings of tiny triangles around each corner, all of which must open:
   // start them near z^(π/α) (disk_map.hpp). Uniform meshes keep their start (and their maps).
   options.cornerGuess = graded;
@@ -139,6 +162,9 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
     result.map = conformal::computeDiskMap(mesh.sphere, mesh.triangles, whole, options);
   } catch (const Error& e) {
     if (e.code() != ErrorCode::Unreachable) throw;
+    if (spherical) result.directFailure = e.what();
+    // The flows below run to their own caps: only the direct flow is given up early.
+    options.onIteration = nullptr;
     // The spherical energy is not convex; the Euclidean route's always is.
     conformal::DiskMapOptions euclidean = options;
     euclidean.geometry = conformal::Geometry::Euclidean;
@@ -171,14 +197,16 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
 }
 
 nlohmann::json meshStats(const SphereDiskMesh& mesh, const FlowResult& flow) {
-  return {{"route", conformal::toString(flow.map.geometry)},
-          {"vertices", mesh.sphere.size()},
-          {"triangles", mesh.triangles.size()},
-          {"boundary_vertices", mesh.boundary.size()},
-          {"flow_iterations", flow.map.flow.iterations},
-          {"flow_seconds", flow.seconds},
-          {"used_flips", flow.map.usedFlips},
-          {"max_curvature_error", flow.map.flow.maxCurvatureError}};
+  nlohmann::json stats = {{"route", conformal::toString(flow.map.geometry)},
+                           {"vertices", mesh.sphere.size()},
+                           {"triangles", mesh.triangles.size()},
+                           {"boundary_vertices", mesh.boundary.size()},
+                           {"flow_iterations", flow.map.flow.iterations},
+                           {"flow_seconds", flow.seconds},
+                           {"used_flips", flow.map.usedFlips},
+                           {"max_curvature_error", flow.map.flow.maxCurvatureError}};
+  if (!flow.directFailure.empty()) stats["direct_spherical_flow"] = flow.directFailure;
+  return stats;
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "mesh_files.hpp"
 
 namespace confvis::conformal {
@@ -246,8 +247,7 @@ std::string MeshSource::numbering() const {
 }
 
 TriMesh readMesh(const std::filesystem::path& path, MeshSource& source) {
-  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
-  if (!std::filesystem::exists(path, unreadable))
+  if (!pathExists(path))
     throw Error(ErrorCode::FileNotFound, "mesh file '" + path.string() + "' does not exist");
   // Our own readers (mesh_files.hpp), not OpenMesh's: those hang or crash on small malformed
   // files. Polygons are fanned into triangles, as OpenMesh's TriMesh reader does.

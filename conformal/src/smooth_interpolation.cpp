@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace confvis::detail {
 namespace {
@@ -265,13 +266,16 @@ std::complex<double> MobiusBlend::toDisk(int t, const std::array<double, 3>& b,
   const std::array<double, 3> weight = mobiusBlendWeights(b);
   const auto& corners = mesh_.triangles[t];
   double zx = 0, zy = 0;
+  // The triangle's linear map, for every corner that blends it: computed once, when first needed.
+  std::optional<Complex> linear;
   for (int i = 0; i < 3; ++i) {
     if (weight[i] == 0) continue;
     if (linear_[corners[i]]) {
-      const Complex linear = b[0] * mesh_.disk[corners[0]] + b[1] * mesh_.disk[corners[1]] +
-                             b[2] * mesh_.disk[corners[2]];
-      zx += weight[i] * linear.real();
-      zy += weight[i] * linear.imag();
+      if (!linear)
+        linear = b[0] * mesh_.disk[corners[0]] + b[1] * mesh_.disk[corners[1]] +
+                 b[2] * mesh_.disk[corners[2]];
+      zx += weight[i] * linear->real();
+      zy += weight[i] * linear->imag();
       continue;
     }
     const Chart& chart = charts_[corners[i]];
@@ -303,12 +307,14 @@ Vec3d MobiusBlend::toSphere(int t, const std::array<double, 3>& l, std::complex<
   const std::array<double, 3> weight = mobiusBlendWeights(l);
   const auto& corners = mesh_.triangles[t];
   Vec3d sum{0.0};
+  std::optional<Vec3d> linear;  // as in toDisk: once, when first needed
   for (int i = 0; i < 3; ++i) {
     if (weight[i] == 0) continue;
     if (linear_[corners[i]]) {  // a unit vector, like the Möbius maps' terms
-      sum += weight[i] * normalized(l[0] * mesh_.sphere[corners[0]] +
-                                    l[1] * mesh_.sphere[corners[1]] +
-                                    l[2] * mesh_.sphere[corners[2]]);
+      if (!linear)
+        linear = normalized(l[0] * mesh_.sphere[corners[0]] + l[1] * mesh_.sphere[corners[1]] +
+                            l[2] * mesh_.sphere[corners[2]]);
+      sum += weight[i] * *linear;
       continue;
     }
     const Chart& chart = charts_[corners[i]];

@@ -10,6 +10,7 @@
 #include "command.hpp"
 #include "preset_option.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/base/input_limits.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/conformal/bake_verdict.hpp"
@@ -82,8 +83,7 @@ int runBake(const BakeArgs& args) {
   const fs::path output = args.output.empty()
                               ? childPath({}, baked.config.name + "-bake", "display name")
                               : fs::path(args.output);
-  std::error_code ec;
-  if (!baked.cacheEntry.empty() && fs::exists(baked.cacheEntry / "bake.json", ec))
+  if (!baked.cacheEntry.empty() && pathExists(baked.cacheEntry / "bake.json"))
     copyBakeDirectory(baked.cacheEntry, output);
   else  // no cache, or it could not be written: the files come from memory
     writeBakeDirectory(output, *baked.displayMap, baked.map, baked.sidecar, args.threads,

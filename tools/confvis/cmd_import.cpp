@@ -8,6 +8,7 @@
 #include "command.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/engine/display_import.hpp"
 
 namespace confvis::cli {
@@ -39,8 +40,8 @@ int runImport(const ImportArgs& a) {
   if (!a.resolution.empty()) options.fallbackResolution = parseResolution(a.resolution);
   if (a.source == "sphere") options.source = SourceField::FullSphere;
   if (a.source == "hemisphere") options.source = SourceField::Hemisphere;
-  std::error_code unreadable;  // a name too long for the file system is not the input either
-  if (!a.output.empty() && std::filesystem::exists(a.output, unreadable) &&
+  std::error_code unreadable;  // as pathExists: an unreadable name is not the input either
+  if (!a.output.empty() && pathExists(a.output) &&
       std::filesystem::equivalent(a.input, a.output, unreadable))
     throw Error(ErrorCode::InvalidInput, "-o would overwrite the input '" + a.input + "'");
 

@@ -1,19 +1,19 @@
 #include "confvis/backends/retarget_map_files.hpp"
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/conformal/bake_files.hpp"
 
 namespace confvis {
 
 RetargetMap readRetargetMapDirectory(const std::filesystem::path& directory) {
-  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
-  if (!std::filesystem::is_directory(directory, unreadable))
+  if (!isDirectory(directory))
     throw Error(ErrorCode::FileNotFound,
                 "baked map directory '" + directory.string() + "' does not exist");
   // Only a directory verified as a whole is used: bake.json records the reference point the map
   // was baked around and each file's size and checksum (loadBakeDirectory). Two bare EXRs could
   // be swapped, stale or of another display, and would render with exit 0.
-  if (!std::filesystem::exists(directory / "bake.json", unreadable))
+  if (!pathExists(directory / "bake.json"))
     throw Error(ErrorCode::InvalidInput,
                 "baked map directory '" + directory.string() +
                     "' has no bake.json, so its maps cannot be verified (write it with confvis "

@@ -3,7 +3,8 @@
 // renderers, `confvis bake` and the public API use.
 //
 //   config -> effective config (overrides applied, validated, hashed) -> cache lookup ->
-//   on a miss: computeDisplayMap -> bakeRetargetMap -> bake directory written into the cache.
+//   on a miss: computeDisplayMap -> bakeRetargetMap (once: the checks' bake is the one returned)
+//   -> bake directory written into the cache.
 //
 // The cache key is the effective config's hash (DisplayConfig::hash covers every field,
 // resolution, edge length and reference point included) plus a digest of the map settings the
@@ -18,6 +19,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -73,6 +75,10 @@ DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplay
 DisplayMapOptions bakeMapOptions(const BakeDisplayOptions& options);
 // How it interpolates between the mesh vertices (the preset's unless overridden).
 MapInterpolation bakeInterpolation(const BakeDisplayOptions& options);
+// The BakeOptions of a bake of the effective config with these options (its reference point,
+// the interpolation above, threads and progress).
+BakeOptions displayBakeOptions(const DisplayConfig& effectiveConfig,
+                               const BakeDisplayOptions& options);
 // mapSettingsJson of both.
 nlohmann::json bakeMapSettings(const BakeDisplayOptions& options);
 
@@ -85,8 +91,31 @@ std::filesystem::path bakeCacheEntry(const std::filesystem::path& cacheDirectory
 // computeDisplayMap (templates, flows, alignment) and bakeRetargetMap, through the cache.
 BakedDisplay bakeDisplay(const DisplayConfig& config, const BakeDisplayOptions& options = {});
 
+// A RetargetMap a DisplayMapSource has already baked (bakeDisplay's checks bake each candidate
+// map to judge it), with the options it was baked with.
+// Thread-safety: a value: read it from any number of threads at once; change it from one
+// thread while no other reads it.
+struct PrebakedRetargetMap {
+  RetargetMap map;
+  BakeOptions options;
+  BakeTimings timings;
+};
+
+// What a DisplayMapSource hands back: the display map and, optionally, its bake. bakeDisplayWith
+// returns that bake instead of baking the same map again when it was made with the resolution,
+// reference point and interpolation bakeDisplayWith would bake with (threads and progress do not
+// change the texels); otherwise it bakes the map itself.
+// Thread-safety: a value, as PrebakedRetargetMap.
+struct SourcedDisplayMap {
+  SourcedDisplayMap() = default;
+  // A source of display maps alone (no bake to reuse) converts implicitly.
+  SourcedDisplayMap(DisplayMap displayMap) : map(std::move(displayMap)) {}  // NOLINT
+  DisplayMap map;
+  std::optional<PrebakedRetargetMap> baked;
+};
+
 // The same with another source of DisplayMaps (tests, custom templates).
-using DisplayMapSource = std::function<DisplayMap(const DisplayConfig& effectiveConfig)>;
+using DisplayMapSource = std::function<SourcedDisplayMap(const DisplayConfig& effectiveConfig)>;
 BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptions& options,
                              const DisplayMapSource& computeMap);
 

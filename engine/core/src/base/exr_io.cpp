@@ -12,6 +12,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "exr_internal.hpp"
 
 namespace confvis {
@@ -90,8 +91,7 @@ void writeExrLayers(const fs::path& path, const std::vector<ExrLayer>& layers, E
 }
 
 void withExrInput(const fs::path& path, const std::function<void(Imf::InputFile&)>& use) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
+  if (!isRegularFile(path))
     throw Error(ErrorCode::FileNotFound, "cannot open EXR file " + quoted(path) + ": not found");
   requirePlausibleExrHeader(path);
   try {

@@ -9,6 +9,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 
 // libpng's simplified API (png_image_*) reports errors through return values and a message,
 // so no setjmp/longjmp crosses C++ frames.
@@ -61,8 +62,7 @@ void writePng(const fs::path& path, const ImageRGBA& image, const PngOptions& op
 }
 
 ImageRGBA readPng(const fs::path& path, PngDecoding decoding) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec))
+  if (!isRegularFile(path))
     throw Error(ErrorCode::FileNotFound, "cannot open PNG file '" + path.string() + "': not found");
   png_image png{};
   png.version = PNG_IMAGE_VERSION;

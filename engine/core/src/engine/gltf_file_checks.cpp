@@ -9,6 +9,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/base/input_limits.hpp"
 #include "scene_file_parts.hpp"
 
@@ -64,15 +65,12 @@ bool decodeGltfImage(tinygltf::Image* image, int index, std::string* error, std:
 
 namespace {
 
-bool regularFileExists(const std::string& path, void*) {
-  std::error_code ec;
-  return std::filesystem::is_regular_file(path, ec);
-}
+bool regularFileExists(const std::string& path, void*) { return isRegularFile(path); }
 
 bool readRegularFile(std::vector<unsigned char>* out, std::string* error, const std::string& path,
                      void*) {
+  const bool regular = isRegularFile(path);
   std::error_code ec;
-  const bool regular = std::filesystem::is_regular_file(path, ec);
   const auto size = regular ? std::filesystem::file_size(path, ec) : 0;
   if (!regular || ec) {
     if (error) *error += "'" + path + "' is not a readable file\n";

@@ -6,6 +6,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/base/text_encoding.hpp"
 #include "confvis/engine/number_text.hpp"
 #include "scene_file_parts.hpp"
@@ -86,8 +87,7 @@ std::string prepareMtl(const std::filesystem::path& file) {
 std::vector<std::filesystem::path> mtlFiles(const std::filesystem::path& directory,
                                             const std::string& rest) {
   const std::filesystem::path whole = directory / forwardSlashes(rest);
-  std::error_code unreadable;  // a name too long for the file system is not that file
-  if (std::filesystem::is_regular_file(whole, unreadable)) return {whole};
+  if (isRegularFile(whole)) return {whole};
   std::vector<std::filesystem::path> files;
   std::istringstream words(rest);
   for (std::string w; words >> w;) files.push_back(directory / forwardSlashes(w));
@@ -119,8 +119,7 @@ ObjText prepareObjText(const std::filesystem::path& path) {
     }
   }
   for (const auto& file : libraries) {
-    std::error_code unreadable;  // e.g. a name too long for the file system: not found either
-    if (!std::filesystem::is_regular_file(file, unreadable)) {
+    if (!isRegularFile(file)) {
       warn(path, "material library '" + file.string() + "' not found; materials keep defaults");
       continue;
     }

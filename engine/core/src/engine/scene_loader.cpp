@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
 #include "scene_file_parts.hpp"
 
@@ -37,8 +38,7 @@ Scene loadScene(const std::filesystem::path& path) {
     throw Error(ErrorCode::InvalidInput, "scene file '" + path.string() +
                                              "' has an unknown extension (supported: .obj, "
                                              ".gltf, .glb)");
-  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
-  if (!std::filesystem::is_regular_file(path, unreadable))
+  if (!isRegularFile(path))
     throw Error(ErrorCode::FileNotFound, "scene file '" + path.string() + "' does not exist");
   Scene scene = extension == ".obj" ? scene_files::loadObjScene(path)
                                     : scene_files::loadGltfScene(path, extension == ".glb");
@@ -52,8 +52,7 @@ Scene sceneByNameOrFile(const std::string& nameOrPath) {
   const std::vector<std::string> names = builtinSceneNames();
   if (std::find(names.begin(), names.end(), nameOrPath) != names.end())
     return builtinScene(nameOrPath);
-  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
-  if (!std::filesystem::exists(nameOrPath, unreadable)) {
+  if (!pathExists(nameOrPath)) {
     std::string list;
     for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
     throw Error(ErrorCode::FileNotFound, "scene '" + nameOrPath +

@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "scene_file_parts.hpp"
 
 namespace confvis::scene_files {
@@ -49,8 +50,7 @@ Texture textureFromPixels(const void* pixels, int width, int height, int channel
 }
 
 Texture loadTextureFile(const std::filesystem::path& path) {
-  std::error_code unreadable;  // e.g. a name too long for the file system: does not exist either
-  if (!std::filesystem::is_regular_file(path, unreadable))
+  if (!isRegularFile(path))
     throw Error(ErrorCode::FileNotFound, "texture image '" + path.string() + "' does not exist");
   int width = 0, height = 0, channels = 0;
   if (stbi_info(path.c_str(), &width, &height, &channels) && !texturePixelsAllowed(width, height))

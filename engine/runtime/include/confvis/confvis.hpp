@@ -20,6 +20,7 @@
 #include "confvis/base/error.hpp"
 #include "confvis/base/export.hpp"
 #include "confvis/base/exr_io.hpp"
+#include "confvis/base/file_checks.hpp"
 #include "confvis/base/image.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/base/progress.hpp"
