@@ -10,6 +10,8 @@
 //             edges down to 1/64), spherical route, per-vertex Möbius blending
 //             (map_interpolation.hpp): cave5 at p99 0.43 px, max 0.97 px, kinks p99 0.04
 //             degrees, for ~13x the CPU of `fast` (~1 s): what offline bakes and renders use.
+//             presetSettings(preset, config) takes 0.4 of the edge where the display has a
+//             convex boundary corner (cave3: p99 0.90 px at 8 cm against 2.1 px at 10 cm).
 // `confvis bake` and `render` default to accurate (baked once, then cached); `view`, `walk` and
 // the live map follower (backgroundBake) to fast. BakeDisplayOptions (bake_display.hpp) takes a
 // preset and lets route, grading and interpolation be overridden one by one.
