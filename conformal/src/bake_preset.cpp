@@ -1,9 +1,14 @@
 // Bake presets (bake_preset.hpp).
 #include "confvis/conformal/bake_preset.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include "confvis/base/error.hpp"
+#include "confvis/engine/display_surfaces.hpp"
 
 namespace confvis {
 
@@ -31,6 +36,64 @@ BakePresetSettings presetSettings(BakePreset preset) {
   settings.grading.radiusDegrees = 30;
   settings.grading.minScale = 1.0 / 64;
   settings.interpolation = MapInterpolation::Mobius;
+  return settings;
+}
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::array<Vec3d, 4> cornersOf(const Wall& wall) {  // counter-clockwise seen from the front
+  const Vec3d right = wall.lowerRight - wall.lowerLeft, up = wall.upperLeft - wall.lowerLeft;
+  return {wall.lowerLeft, wall.lowerRight, wall.lowerLeft + right + up, wall.upperLeft};
+}
+
+// The angle at corner k of `wall` on the sphere of directions from c: between the great circles
+// towards its two neighbouring corners.
+double sphericalCornerAngle(const std::array<Vec3d, 4>& corners, int k, const Vec3d& c) {
+  const Vec3d p = normalized(corners[k] - c);
+  auto tangent = [&](int j) {
+    const Vec3d q = normalized(corners[j] - c);
+    return q - dot(q, p) * p;
+  };
+  return angleBetween(tangent((k + 1) % 4), tangent((k + 3) % 4));
+}
+
+// What `wall` adds to the angle around point x: its corner angle, π on an edge, 2π inside, 0 off.
+double angleAround(const Wall& wall, const Vec3d& x, const Vec3d& c, double tolerance) {
+  const auto corners = cornersOf(wall);
+  for (int k = 0; k < 4; ++k)
+    if (norm(corners[k] - x) < tolerance) return sphericalCornerAngle(corners, k, c);
+  const Vec3d right = wall.lowerRight - wall.lowerLeft, up = wall.upperLeft - wall.lowerLeft;
+  const Vec3d d = x - wall.lowerLeft;
+  if (std::abs(dot(d, normalized(cross(right, up)))) > tolerance) return 0;
+  const double s = dot(d, right) / dot(right, right), t = dot(d, up) / dot(up, up);
+  const double ts = tolerance / norm(right), tt = tolerance / norm(up);
+  if (s < -ts || s > 1 + ts || t < -tt || t > 1 + tt) return 0;
+  const bool onEdge = s < ts || s > 1 - ts || t < tt || t > 1 - tt;
+  return onEdge ? kPi : 2 * kPi;
+}
+
+}  // namespace
+
+double smallestBoundaryCornerAngle(const DisplayConfig& config) {
+  const DisplayConfig surfaces = surfaceConfig(config);
+  double smallest = 2 * kPi;
+  for (const Wall& wall : surfaces.walls)
+    for (const Vec3d& x : cornersOf(wall)) {
+      const double tolerance = 1e-6 * std::max(1.0, norm(x - config.reference));
+      double around = 0;
+      for (const Wall& other : surfaces.walls)
+        around += angleAround(other, x, config.reference, tolerance);
+      if (around < 2 * kPi - 1e-9) smallest = std::min(smallest, around);
+    }
+  return smallest;
+}
+
+BakePresetSettings presetSettings(BakePreset preset, const DisplayConfig& config) {
+  BakePresetSettings settings = presetSettings(preset);
+  if (preset == BakePreset::Accurate && smallestBoundaryCornerAngle(config) < kPi - 0.2)
+    settings.edgeScale = 0.4;
   return settings;
 }
 

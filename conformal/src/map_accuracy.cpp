@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "disk_locator.hpp"
+#include "map_accuracy_detail.hpp"
 #include "parallel_for.hpp"
 #include "smooth_interpolation.hpp"
 #include "sphere_locator.hpp"
@@ -14,52 +15,6 @@ namespace confvis {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180;
-
-template <class Stats>
-void fillPercentiles(std::vector<double>& values, Stats& out) {
-  out.samples = values.size();
-  if (values.empty()) return;
-  std::sort(values.begin(), values.end());
-  auto at = [&](double q) {
-    return values[std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()))];
-  };
-  out.p50 = at(0.5);
-  out.p95 = at(0.95);
-  out.p99 = at(0.99);
-  out.max = values.back();
-}
-
-// Where the ray from c along dir meets a wall's full rectangle (bezels included): the nearest
-// hit's distance along the ray; nullopt if it meets none.
-std::optional<Vec3d> hitDisplay(const DisplayConfig& config, const Vec3d& c, const Vec3d& dir) {
-  std::optional<Vec3d> best;
-  double nearest = 1e300;
-  for (const Wall& wall : config.walls) {
-    const Vec3d n = wall.normal();
-    const double along = dot(dir, n);
-    if (std::abs(along) < 1e-12) continue;
-    const double lambda = dot(wall.lowerLeft - c, n) / along;
-    if (!(lambda > 0) || lambda >= nearest) continue;
-    const Vec3d q = c + lambda * dir - wall.lowerLeft;
-    const double s = dot(q, wall.right()) / wall.widthMetres();
-    const double t = dot(q, wall.up()) / wall.heightMetres();
-    const double tol = 1e-6;
-    if (s < -tol || s > 1 + tol || t < -tol || t > 1 + tol) continue;
-    nearest = lambda;
-    best = c + lambda * dir;
-  }
-  return best;
-}
-
-// Where the ray meets the plane of `wall` (content moved past the display's edge is measured in
-// the plane of the wall it left).
-std::optional<Vec3d> hitPlane(const Wall& wall, const Vec3d& c, const Vec3d& dir) {
-  const double along = dot(dir, wall.normal());
-  if (std::abs(along) < 1e-12) return std::nullopt;
-  const double lambda = dot(wall.lowerLeft - c, wall.normal()) / along;
-  if (!(lambda > 0)) return std::nullopt;
-  return c + lambda * dir;
-}
 
 Vec3d someTangent(const Vec3d& v) {
   const Vec3d a = std::abs(v.y) < 0.9 ? Vec3d(0, 1, 0) : Vec3d(1, 0, 0);
@@ -154,12 +109,7 @@ MapError measureMapError(const DisplayConfig& config, const DisplayMap& test,
       referenceMap(reference, referenceInterpolation);
   const Vec3d c = config.reference;
   const int n = samplesPerSide;
-  struct Sample {
-    double pixels;
-    int wall;
-    double s, t;
-  };
-  std::vector<std::vector<Sample>> rows(config.walls.size() * n);
+  std::vector<std::vector<detail::WallSample>> rows(config.walls.size() * n);
   detail::parallelFor(rows.size(), threads, [&](std::size_t task) {
     const int w = static_cast<int>(task / n), j = static_cast<int>(task % n);
     const Wall lit = config.walls[w].litRectangle();
@@ -169,29 +119,12 @@ MapError measureMapError(const DisplayConfig& config, const DisplayMap& test,
       const Vec3d p = lit.pointAt(s, t);
       const auto v = testMap.toVirtual(p - c);
       if (!v) continue;
-      const auto back = referenceMap.toPhysical(v->direction);
-      if (!back) continue;
-      std::optional<Vec3d> q = hitDisplay(config, c, back->direction);
-      if (!q) q = hitPlane(lit, c, back->direction);
+      const std::optional<Vec3d> q = detail::shownAt(config, referenceMap, lit, v->direction);
       if (!q) continue;
       rows[task].push_back({norm(*q - p) / pitch, w, s, t});
     }
   });
-  std::vector<double> pixels;
-  MapError out;
-  double worst = -1;
-  for (const auto& row : rows)
-    for (const Sample& sample : row) {
-      pixels.push_back(sample.pixels);
-      if (sample.pixels > worst) {
-        worst = sample.pixels;
-        out.worstWall = config.walls[sample.wall].name;
-        out.worstS = sample.s;
-        out.worstT = sample.t;
-      }
-    }
-  fillPercentiles(pixels, out);
-  return out;
+  return detail::summarizeWallSamples(config, rows);
 }
 
 std::vector<double> kinkTurns(const DisplayMapEvaluator& eval, const std::vector<VirtualLine>& lines,
@@ -291,7 +224,7 @@ KinkStats measureKinks(const DisplayConfig& config, const DisplayMap& map, int l
                                         stepDegrees * kDegree, singularCorners(map),
                                         excludeDegrees, threads);
   KinkStats out;
-  fillPercentiles(turns, out);
+  detail::fillPercentiles(turns, out);
   out.lines = lines.size();
   return out;
 }

@@ -10,6 +10,10 @@
 // halved until the p99 change between two levels is below --converge-px (or --reference-min is
 // reached); every level is printed with its change. Reference maps are cached in --cache-dir
 // (delete it after changing the map code: the key is the config, route, edge and kCacheVersion).
+// With --reference-extrapolate the errors are measured against the Richardson extrapolation of
+// the last two levels (map_reference_extrapolation.hpp): the order is estimated from the last
+// three levels (or given by --reference-order), and each row adds the error against the finest
+// level alone and the extrapolated reference's uncertainty.
 //
 //   nice -n 10 build/confvis_bench_map_accuracy [--configs configs/cave5.json,...]
 //       [--scales 1,0.5,0.25] [--routes spherical,euclidean,hyperbolic] [--repeat 5]
@@ -22,6 +26,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -33,6 +38,7 @@
 #include "confvis/conformal/bake_preset.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/map_accuracy.hpp"
+#include "confvis/conformal/map_reference_extrapolation.hpp"
 #include "confvis/engine/display_config.hpp"
 
 using namespace confvis;
@@ -194,6 +200,13 @@ int main(int argc, char** argv) {
                  "Map interpolations, comma-separated: linear, mobius")->capture_default_str();
   app.add_option("--reference-interpolation", referenceInterpolationName,
                  "Interpolation of the converged map: linear, mobius")->capture_default_str();
+  bool extrapolate = false;
+  double referenceOrder = 0;
+  app.add_flag("--reference-extrapolate", extrapolate,
+               "Measure against the Richardson extrapolation of the last two reference levels");
+  app.add_option("--reference-order", referenceOrder,
+                 "Order of the extrapolation (0: estimated from the p99 changes of the last three "
+                 "levels, 2 with only two)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     const MapInterpolation referenceInterpolation = parseMapInterpolation(referenceInterpolationName);
@@ -205,23 +218,47 @@ int main(int argc, char** argv) {
       // The converged reference.
       const DisplayMapRoute refRoute = parseRoute(referenceRoute);
       double scale = referenceStart;
-      DisplayMap reference =
-          referenceMap(config, refRoute, referenceRoute, scale * config.edgeLength, referenceGrading, cacheDir);
+      // The last three levels, coarse first (the extrapolation's); the finest is `reference`.
+      std::vector<std::unique_ptr<DisplayMap>> levels;
+      levels.push_back(std::make_unique<DisplayMap>(referenceMap(
+          config, refRoute, referenceRoute, scale * config.edgeLength, referenceGrading, cacheDir)));
       while (scale * 0.5 >= referenceMin * (1 - 1e-9)) {
         scale *= 0.5;
-        DisplayMap finer =
-            referenceMap(config, refRoute, referenceRoute, scale * config.edgeLength, referenceGrading, cacheDir);
-        const MapError change = measureMapError(config, reference, finer, samples, threads,
+        auto finer = std::make_unique<DisplayMap>(referenceMap(
+            config, refRoute, referenceRoute, scale * config.edgeLength, referenceGrading, cacheDir));
+        const MapError change = measureMapError(config, *levels.back(), *finer, samples, threads,
                                                 referenceInterpolation, referenceInterpolation);
         std::printf("reference %s %.4f m -> %.4f m: change p50 %.3f p95 %.3f p99 %.3f max %.3f px\n",
                     referenceRoute.c_str(), 2 * scale * config.edgeLength,
                     scale * config.edgeLength, change.p50, change.p95, change.p99, change.max);
         std::fflush(stdout);
-        reference = std::move(finer);
+        levels.push_back(std::move(finer));
+        if (levels.size() > 3) levels.erase(levels.begin());
         if (change.p99 < convergePx) break;
       }
-      std::printf("| edge m | route | interpolation | grading deg | S+T vertices | p50 | p95 | p99 | max px (worst wall s,t) | kink p50 / p95 / p99 / max deg | re-bake ms wall / CPU |\n");
-      std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+      const DisplayMap& reference = *levels.back();
+      std::vector<std::unique_ptr<DisplayMapEvaluator>> levelEvaluators;
+      std::vector<const DisplayMapEvaluator*> levelViews;
+      double order = referenceOrder;
+      if (extrapolate) {
+        if (levels.size() < 2)
+          throw Error(ErrorCode::InvalidInput, "--reference-extrapolate needs two reference levels or more");
+        for (const auto& level : levels) {
+          levelEvaluators.push_back(std::make_unique<DisplayMapEvaluator>(*level, referenceInterpolation));
+          levelViews.push_back(levelEvaluators.back().get());
+        }
+        const ReferenceConvergence convergence =
+            measureReferenceConvergence(config, levelViews, samples, threads);
+        if (convergence.changes.size() >= 2)
+          std::printf("reference order (last three levels): p50 %.2f p95 %.2f p99 %.2f\n",
+                      convergence.orderP50, convergence.orderP95, convergence.orderP99);
+        if (order <= 0) order = convergence.changes.size() >= 2 ? convergence.orderP99 : 2.0;
+        std::printf("extrapolating the last two levels with order %.2f\n", order);
+        std::fflush(stdout);
+      }
+      std::printf("| edge m | route | interpolation | grading deg | S+T vertices | p50 | p95 | p99 | max px (worst wall s,t) | kink p50 / p95 / p99 / max deg | re-bake ms wall / CPU |%s\n",
+                  extrapolate ? " p99 / max vs finest level | reference uncertainty p50 / p99 / max |" : "");
+      std::printf("|---|---|---|---|---|---|---|---|---|---|---|%s\n", extrapolate ? "---|---|" : "");
       for (const std::string& s : splitList(scales))
         for (const std::string& routeName : splitList(routes))
           for (const std::string& g : splitList(gradings))
@@ -250,14 +287,27 @@ int main(int argc, char** argv) {
           }
           const std::string taken = map.stats["source"]["route"].get<std::string>() + "/" +
                                     map.stats["target"]["route"].get<std::string>();
-          const MapError e = measureMapError(config, map, reference, samples, threads,
-                                             interpolation, referenceInterpolation);
+          MapError e;
+          std::string extra;
+          if (extrapolate) {
+            const DisplayMapEvaluator test(map, interpolation);
+            const ExtrapolatedMapError x =
+                measureMapErrorExtrapolated(config, test, levelViews, order, samples, threads);
+            e = x.error;
+            char text[160];
+            std::snprintf(text, sizeof text, " %.3f / %.2f | %.3f / %.3f / %.2f |", x.finest.p99,
+                          x.finest.max, x.uncertainty.p50, x.uncertainty.p99, x.uncertainty.max);
+            extra = text;
+          } else {
+            e = measureMapError(config, map, reference, samples, threads, interpolation,
+                                referenceInterpolation);
+          }
           const KinkStats k = measureKinks(config, map, lines, 10, 0.01, 3, threads, interpolation);
-          std::printf("| %.4f | %s%s | %s | %s | %zu+%zu | %.3f | %.3f | %.3f | %.2f (%s %.2f,%.2f) | %.3f / %.3f / %.3f / %.1f | %.1f / %.1f |\n",
+          std::printf("| %.4f | %s%s | %s | %s | %zu+%zu | %.3f | %.3f | %.3f | %.2f (%s %.2f,%.2f) | %.3f / %.3f / %.3f / %.1f | %.1f / %.1f |%s\n",
                       edge, routeName.c_str(),
                       taken == routeName + "/" + routeName ? "" : (" (took " + taken + ")").c_str(),
                       interpolationName.c_str(), g.c_str(), map.source.sphere.size(), map.target.sphere.size(), e.p50, e.p95, e.p99,
-                      e.max, e.worstWall.c_str(), e.worstS, e.worstT, k.p50, k.p95, k.p99, k.max, median(times), median(cpu));
+                      e.max, e.worstWall.c_str(), e.worstS, e.worstT, k.p50, k.p95, k.p99, k.max, median(times), median(cpu), extra.c_str());
           std::fflush(stdout);
         }
     }

@@ -10,6 +10,8 @@
 //             edges down to 1/64), spherical route, per-vertex Möbius blending
 //             (map_interpolation.hpp): cave5 at p99 0.43 px, max 0.97 px, kinks p99 0.04
 //             degrees, for ~13x the CPU of `fast` (~1 s): what offline bakes and renders use.
+//             presetSettings(preset, config) takes 0.4 of the edge where the display has a
+//             convex boundary corner (cave3: p99 0.90 px at 8 cm against 2.1 px at 10 cm).
 // `confvis bake` and `render` default to accurate (baked once, then cached); `view`, `walk` and
 // the live map follower (backgroundBake) to fast. BakeDisplayOptions (bake_display.hpp) takes a
 // preset and lets route, grading and interpolation be overridden one by one.
@@ -21,6 +23,7 @@
 #include "confvis/base/export.hpp"
 #include "confvis/conformal/display_map.hpp"
 #include "confvis/conformal/map_interpolation.hpp"
+#include "confvis/engine/display_config.hpp"
 
 namespace confvis CONFVIS_API {
 
@@ -43,6 +46,20 @@ struct BakePresetSettings {
   MapInterpolation interpolation = MapInterpolation::Linear;
 };
 BakePresetSettings presetSettings(BakePreset preset);
+
+// The smallest angle (radians), on the sphere of directions from the config's reference point, at
+// a corner of the display's boundary: at each corner of a wall (of surfaceConfig), the angles of
+// the walls having it as a corner plus π for each wall having it on an edge; where they add up
+// to less than 2π the point is a boundary corner. 2π where there is none. cave5's top corners:
+// 4π/3; cave3's open back corners and md230x6's outer corners: below π (convex).
+double smallestBoundaryCornerAngle(const DisplayConfig& config);
+
+// The preset's settings for this display. `accurate` takes 0.4 of the config's edge instead of
+// 0.5 where the display has a convex boundary corner (smallestBoundaryCornerAngle < π - 0.2):
+// there the map to the disk goes like z^(π/β), its inverse has an unbounded derivative, and
+// cave3 (corners of 2π/3) measured p99 2.1 px at 0.5 against 0.90 px at 0.4, where cave5 (no
+// convex corner) meets its goal at 0.5 (conformal/README.md, "Map accuracy").
+BakePresetSettings presetSettings(BakePreset preset, const DisplayConfig& config);
 
 // The settings of a display map that the config does not hold (route, grading, interpolation), as
 // JSON: part of the bake cache's key and of bake.json ("map_settings"), so that bakes differing

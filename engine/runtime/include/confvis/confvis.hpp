@@ -75,6 +75,7 @@
 #include "confvis/conformal/bake_verdict.hpp"
 #include "confvis/conformal/map_alignment_quality.hpp"
 #include "confvis/conformal/map_accuracy.hpp"
+#include "confvis/conformal/map_reference_extrapolation.hpp"
 #include "confvis/conformal/map_interpolation.hpp"
 
 // Keeping the map around the tracked head.
