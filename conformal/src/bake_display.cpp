@@ -13,7 +13,7 @@ DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplay
   std::string source = "display config '" + config.name + "'";
   if (options.resolution) json["cube_resolution"] = *options.resolution;
   if (options.edgeLength) json["edge_length"] = *options.edgeLength;
-  const double presetScale = presetSettings(options.preset).edgeScale;
+  const double presetScale = presetSettings(options.preset, config).edgeScale;
   if (!options.edgeLength && presetScale != 1) json["edge_length"] = config.edgeLength * presetScale;
   if (options.reference) {
     const Vec3d& r = *options.reference;

@@ -3,6 +3,7 @@
 
 #include <numbers>
 
+#include "confvis/conformal/bake_display.hpp"
 #include "confvis/conformal/bake_preset.hpp"
 #include "display_test_configs.hpp"
 
@@ -35,6 +36,21 @@ TEST(BakePresetRule, AccurateTakesFinerEdgesOnlyWhereTheDisplayHasConvexCorners)
     EXPECT_EQ(accurate.interpolation, plain.interpolation) << name;
   }
   EXPECT_EQ(presetSettings(BakePreset::Accurate).edgeScale, 0.5);
+}
+
+// What `confvis bake` and `render` bake: the rule reaches the effective config (and with it the
+// cache key), and an explicit edge length still wins.
+TEST(BakePresetRule, TheBakedConfigTakesTheRulesEdge) {
+  for (const char* name : {"cave3", "cave5"}) {
+    const DisplayConfig config = testing::shipped(name);
+    BakeDisplayOptions options;
+    options.preset = BakePreset::Accurate;
+    const double scale = std::string(name) == "cave3" ? 0.4 : 0.5;
+    EXPECT_NEAR(effectiveBakeConfig(config, options).edgeLength, scale * config.edgeLength, 1e-12)
+        << name;
+    options.edgeLength = 0.3;
+    EXPECT_NEAR(effectiveBakeConfig(config, options).edgeLength, 0.3, 1e-12) << name;
+  }
 }
 
 }  // namespace

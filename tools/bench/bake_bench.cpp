@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
   const DisplayConfig base = loadDisplayConfig(configPath);
   std::optional<BakePresetSettings> preset;
   if (!presetName.empty()) {
-    preset = presetSettings(parseBakePreset(presetName));
+    preset = presetSettings(parseBakePreset(presetName), base);
     if (edgesOption->count() == 0) edges = std::to_string(preset->edgeScale * base.edgeLength);
     if (interpolationsOption->count() == 0) interpolations = toString(preset->interpolation);
     std::printf("preset %s: %s\n", presetName.c_str(),

@@ -38,7 +38,8 @@ struct BakeDisplayOptions {
   std::optional<glm::dvec3> reference;     // default: config.reference
   // The accuracy / speed trade (bake_preset.hpp). The API's default is the live one (fast: what a
   // map follower re-bakes with); `confvis bake` and `render` ask for accurate. Without an
-  // explicit edgeLength the preset scales the config's edge_length (accurate: half).
+  // explicit edgeLength the preset scales the config's edge_length (accurate: half, 0.4 on a display
+  // with convex boundary corners: presetSettings(preset, config)).
   BakePreset preset = kLiveBakePreset;
   std::optional<DisplayMapRoute> route;    // default: the preset's
   std::optional<TemplateGrading> grading;  // default: the preset's
