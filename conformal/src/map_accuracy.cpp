@@ -110,19 +110,13 @@ MapError measureMapError(const DisplayConfig& config, const DisplayMap& test,
   const Vec3d c = config.reference;
   const int n = samplesPerSide;
   std::vector<std::vector<detail::WallSample>> rows(config.walls.size() * n);
-  detail::parallelFor(rows.size(), threads, [&](std::size_t task) {
-    const int w = static_cast<int>(task / n), j = static_cast<int>(task % n);
-    const Wall lit = config.walls[w].litRectangle();
-    const double pitch = lit.widthMetres() / lit.width;
-    for (int i = 0; i < n; ++i) {
-      const double s = (i + 0.5) / n, t = (j + 0.5) / n;
-      const Vec3d p = lit.pointAt(s, t);
-      const auto v = testMap.toVirtual(p - c);
-      if (!v) continue;
-      const std::optional<Vec3d> q = detail::shownAt(config, referenceMap, lit, v->direction);
-      if (!q) continue;
-      rows[task].push_back({norm(*q - p) / pitch, w, s, t});
-    }
+  detail::forEachWallGridPoint(config, n, threads, [&](std::size_t row, const Wall& lit,
+                                                      const detail::WallGridPoint& at) {
+    const auto v = testMap.toVirtual(at.p - c);
+    if (!v) return;
+    const std::optional<Vec3d> q = detail::shownAt(config, referenceMap, lit, v->direction);
+    if (!q) return;
+    rows[row].push_back({norm(*q - at.p) / at.pitch, at.wall, at.s, at.t});
   });
   return detail::summarizeWallSamples(config, rows);
 }

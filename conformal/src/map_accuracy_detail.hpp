@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "confvis/conformal/map_accuracy.hpp"
+#include "parallel_for.hpp"
 
 namespace confvis::detail {
 
@@ -21,6 +22,29 @@ void fillPercentiles(std::vector<double>& values, Stats& out) {
   out.p95 = at(0.95);
   out.p99 = at(0.99);
   out.max = values.back();
+}
+
+// A sample point of a wall: the centre of cell (i, j) of an n x n grid over its lit rectangle.
+struct WallGridPoint {
+  Vec3d p;
+  double pitch;  // metres per pixel of the wall
+  int wall;
+  double s, t;
+};
+
+// Calls visit(row, lit, point) for every wall's grid points, a row (wall w, grid row j; row index
+// w * n + j) per parallel task, in order within the row.
+template <class Visit>
+void forEachWallGridPoint(const DisplayConfig& config, int n, int threads, Visit&& visit) {
+  parallelFor(config.walls.size() * n, threads, [&](std::size_t row) {
+    const int w = static_cast<int>(row / n), j = static_cast<int>(row % n);
+    const Wall lit = config.walls[w].litRectangle();
+    const double pitch = lit.widthMetres() / lit.width;
+    for (int i = 0; i < n; ++i) {
+      const double s = (i + 0.5) / n, t = (j + 0.5) / n;
+      visit(row, lit, WallGridPoint{lit.pointAt(s, t), pitch, w, s, t});
+    }
+  });
 }
 
 // Where the ray from c along dir meets a wall's full rectangle (bezels included): the nearest

@@ -24,22 +24,17 @@ std::vector<std::vector<LevelSample>> sampleLevels(
     const DisplayConfig& config, const DisplayMapEvaluator& test,
     std::span<const DisplayMapEvaluator* const> levels, int n, int threads) {
   std::vector<std::vector<LevelSample>> rows(config.walls.size() * n);
-  detail::parallelFor(rows.size(), threads, [&](std::size_t task) {
-    const int w = static_cast<int>(task / n), j = static_cast<int>(task % n);
-    const Wall lit = config.walls[w].litRectangle();
-    const double pitch = lit.widthMetres() / lit.width;
-    for (int i = 0; i < n; ++i) {
-      const double s = (i + 0.5) / n, t = (j + 0.5) / n;
-      LevelSample sample{lit.pointAt(s, t), pitch, w, s, t, {}};
-      const auto v = test.toVirtual(sample.p - config.reference);
-      if (!v) continue;
-      for (const DisplayMapEvaluator* level : levels) {
-        const auto q = detail::shownAt(config, *level, lit, v->direction);
-        if (!q) break;
-        sample.shown.push_back(*q);
-      }
-      if (sample.shown.size() == levels.size()) rows[task].push_back(std::move(sample));
+  detail::forEachWallGridPoint(config, n, threads, [&](std::size_t row, const Wall& lit,
+                                                      const detail::WallGridPoint& at) {
+    LevelSample sample{at.p, at.pitch, at.wall, at.s, at.t, {}};
+    const auto v = test.toVirtual(sample.p - config.reference);
+    if (!v) return;
+    for (const DisplayMapEvaluator* level : levels) {
+      const auto q = detail::shownAt(config, *level, lit, v->direction);
+      if (!q) break;
+      sample.shown.push_back(*q);
     }
+    if (sample.shown.size() == levels.size()) rows[row].push_back(std::move(sample));
   });
   return rows;
 }

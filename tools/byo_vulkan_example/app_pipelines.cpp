@@ -37,17 +37,6 @@ VkShaderModule shaderModule(VkDevice device, const std::uint32_t (&spirv)[N]) {
   return module;
 }
 
-VkDescriptorSetLayout setLayout(VkDevice device,
-                                const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
-  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  info.bindingCount = static_cast<std::uint32_t>(bindings.size());
-  info.pBindings = bindings.data();
-  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-  vkCheck(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout),
-          "vkCreateDescriptorSetLayout");
-  return layout;
-}
-
 VkRenderPass createRenderPass(VkDevice device) {
   std::array<VkAttachmentDescription, 2> attachments{};
   attachments[0].format = kAppColorFormat;
@@ -100,8 +89,9 @@ VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits bit, VkShaderModule 
 
 AppPipelines::AppPipelines(VkDevice device) : device_(device) {
   // Set 0: what confvis_render_common.glsl and confvis_pulled_vertex.glsl declare.
-  setLayouts_[0] = setLayout(
-      device, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
+  using Bindings = std::vector<VkDescriptorSetLayoutBinding>;
+  setLayouts_[0] = confvis::vulkan::makeDescriptorSetLayout(
+      device, Bindings{{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages, nullptr},
                {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
                {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
                 nullptr},
@@ -111,8 +101,9 @@ AppPipelines::AppPipelines(VkDevice device) : device_(device) {
   // Set 1: the warp (confvis_warp.glsl, and the rim's coverage map that warp.geom reads:
   // confvis_warp_rim.glsl), as warp_interface.hpp describes it.
   setLayouts_[1] = confvis::vulkan::makeWarpSetLayout(device, kGeometryStages);
-  setLayouts_[2] = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
+  setLayouts_[2] = confvis::vulkan::makeDescriptorSetLayout(
+      device, Bindings{{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
   const VkPushConstantRange push{kAllStages, 0, sizeof(AppPush)};
   VkPipelineLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layoutInfo.setLayoutCount = 3;

@@ -29,8 +29,8 @@ std::vector<VkDescriptorSet> allocateDescriptorSets(VkDevice device, VkDescripto
   return sets;
 }
 
-VkDescriptorSetLayout makeWarpSetLayout(VkDevice device, VkShaderStageFlags warpStages) {
-  const auto bindings = warpSetLayoutBindings(warpStages, VK_SHADER_STAGE_GEOMETRY_BIT);
+VkDescriptorSetLayout makeDescriptorSetLayout(
+    VkDevice device, std::span<const VkDescriptorSetLayoutBinding> bindings) {
   VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   info.bindingCount = static_cast<std::uint32_t>(bindings.size());
   info.pBindings = bindings.data();
@@ -38,6 +38,11 @@ VkDescriptorSetLayout makeWarpSetLayout(VkDevice device, VkShaderStageFlags warp
   check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout),
         "vkCreateDescriptorSetLayout");
   return layout;
+}
+
+VkDescriptorSetLayout makeWarpSetLayout(VkDevice device, VkShaderStageFlags warpStages) {
+  const auto bindings = warpSetLayoutBindings(warpStages, VK_SHADER_STAGE_GEOMETRY_BIT);
+  return makeDescriptorSetLayout(device, bindings);
 }
 
 void writeWarpSet(VkDevice device, VkDescriptorSet set, const UploadedRetargetMap& map) {

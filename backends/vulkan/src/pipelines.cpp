@@ -36,13 +36,7 @@ UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t* code, std:
 
 UniqueDescriptorSetLayout setLayout(VkDevice device,
                                     const std::vector<VkDescriptorSetLayoutBinding>& bindings) {
-  VkDescriptorSetLayoutCreateInfo info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  info.bindingCount = static_cast<std::uint32_t>(bindings.size());
-  info.pBindings = bindings.data();
-  VkDescriptorSetLayout layout = VK_NULL_HANDLE;
-  check(vkCreateDescriptorSetLayout(device, &info, nullptr, &layout),
-        "vkCreateDescriptorSetLayout");
-  return UniqueDescriptorSetLayout(device, layout);
+  return UniqueDescriptorSetLayout(device, makeDescriptorSetLayout(device, bindings));
 }
 
 UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,

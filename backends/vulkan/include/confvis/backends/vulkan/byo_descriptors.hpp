@@ -1,6 +1,7 @@
 #pragma once
 // Descriptor pools and sets on the application's device, as the backend makes its own (frame,
-// warp and pre-pass sets): a pool sized for a known set of layouts, then one set per layout.
+// warp and pre-pass sets): layouts, a pool sized for a known set of layouts, then one set per
+// layout.
 // tools/byo_vulkan_example allocates its frame, warp and material sets with these, and makes and
 // fills its warp set with makeWarpSetLayout / writeWarpSet.
 // Thread-safety: free functions; a pool must not be used from two threads at once (Vulkan's
@@ -27,6 +28,11 @@ VkDescriptorPool makeDescriptorPool(VkDevice device, std::span<const VkDescripto
 // vkAllocateDescriptorSets where the pool is too small.
 std::vector<VkDescriptorSet> allocateDescriptorSets(VkDevice device, VkDescriptorPool pool,
                                                     std::span<const VkDescriptorSetLayout> layouts);
+
+// A set layout of `bindings`; the caller destroys it (vkDestroyDescriptorSetLayout). Throws
+// Error(Internal) naming vkCreateDescriptorSetLayout where the device refuses.
+VkDescriptorSetLayout makeDescriptorSetLayout(
+    VkDevice device, std::span<const VkDescriptorSetLayoutBinding> bindings);
 
 // Combined image samplers a warp set (makeWarpSetLayout) takes from its pool: the geom map and
 // the coverage (ray) map.
