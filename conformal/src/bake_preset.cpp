@@ -31,10 +31,13 @@ BakePresetSettings presetSettings(BakePreset preset) {
   // 1/64 of the edge takes the tail (p99 15 -> 0.87 px, max 80 -> 1.3 px at 10 cm, 20 degrees);
   // Möbius blending takes the kinks from first order to ~0 (p99 3.7 -> 0.04 degrees) and the
   // error further down: 30 degrees with Möbius blending is the first setting measured within
-  // issue 22's goals (p99 0.43 px, max 0.97 px; 20 degrees: p99 0.56 px).
+  // issue 22's goals (p99 0.43 px, max 0.97 px; 20 degrees: p99 0.56 px). The floor of 1/1024
+  // (not 1/64) takes cave5's max from 3.8-5.4 px to 0.6 px against a reference resolved there
+  // (conformal/README.md, "cave5's max"): the worst content sits on the top edges next to the
+  // images of the cut's centres and comes from virtual directions next to the cut leaves.
   settings.edgeScale = 0.5;
   settings.grading.radiusDegrees = 30;
-  settings.grading.minScale = 1.0 / 64;
+  settings.grading.minScale = 1.0 / 1024;
   settings.interpolation = MapInterpolation::Mobius;
   return settings;
 }

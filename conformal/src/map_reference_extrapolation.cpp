@@ -79,7 +79,7 @@ ReferenceConvergence measureReferenceConvergence(
   return out;
 }
 
-ExtrapolatedMapError measureMapErrorExtrapolated(
+std::vector<ExtrapolatedSample> extrapolatedErrorSamples(
     const DisplayConfig& config, const DisplayMapEvaluator& test,
     std::span<const DisplayMapEvaluator* const> levels, double order, int samplesPerSide,
     int threads) {
@@ -89,18 +89,38 @@ ExtrapolatedMapError measureMapErrorExtrapolated(
                                              std::to_string(order));
   const auto rows = sampleLevels(config, test, levels, samplesPerSide, threads);
   const std::size_t last = levels.size() - 1;
-  std::vector<std::vector<detail::WallSample>> error(rows.size()), finest(rows.size());
-  std::vector<double> uncertainty;
-  for (std::size_t r = 0; r < rows.size(); ++r)
-    for (const LevelSample& sample : rows[r]) {
+  std::vector<ExtrapolatedSample> out;
+  for (const auto& row : rows)
+    for (const LevelSample& sample : row) {
       const auto& q = sample.shown;
       const Vec3d limit = richardsonExtrapolate(q[last - 1], q[last], order);
-      error[r].push_back({norm(limit - sample.p) / sample.pitch, sample.wall, sample.s, sample.t});
-      finest[r].push_back({norm(q[last] - sample.p) / sample.pitch, sample.wall, sample.s, sample.t});
       const Vec3d other =
           last >= 2 ? richardsonExtrapolate(q[last - 2], q[last - 1], order) : q[last];
-      uncertainty.push_back(norm(limit - other) / sample.pitch);
+      ExtrapolatedSample& x = out.emplace_back();
+      x.wall = sample.wall;
+      x.s = sample.s;
+      x.t = sample.t;
+      x.point = sample.p;
+      x.error = norm(limit - sample.p) / sample.pitch;
+      x.finestError = norm(q[last] - sample.p) / sample.pitch;
+      x.uncertainty = norm(limit - other) / sample.pitch;
+      for (std::size_t k = 0; k < last; ++k) x.changes.push_back(norm(q[k + 1] - q[k]) / sample.pitch);
     }
+  return out;
+}
+
+ExtrapolatedMapError measureMapErrorExtrapolated(
+    const DisplayConfig& config, const DisplayMapEvaluator& test,
+    std::span<const DisplayMapEvaluator* const> levels, double order, int samplesPerSide,
+    int threads) {
+  const auto samples = extrapolatedErrorSamples(config, test, levels, order, samplesPerSide, threads);
+  std::vector<std::vector<detail::WallSample>> error(1), finest(1);
+  std::vector<double> uncertainty;
+  for (const ExtrapolatedSample& x : samples) {
+    error[0].push_back({x.error, x.wall, x.s, x.t});
+    finest[0].push_back({x.finestError, x.wall, x.s, x.t});
+    uncertainty.push_back(x.uncertainty);
+  }
   ExtrapolatedMapError out;
   out.error = detail::summarizeWallSamples(config, error);
   out.finest = detail::summarizeWallSamples(config, finest);

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include "confvis/base/error.hpp"
 #include "display_test_configs.hpp"
@@ -83,6 +85,24 @@ TEST(MapReferenceExtrapolation, ExtrapolatedReferenceBeatsItsFinestLevelOnTheFro
   // A wrong order (here: assuming first order) over-corrects and is worse.
   const ExtrapolatedMapError wrong = measureMapErrorExtrapolated(config, exact, levels, 1.0, 32);
   EXPECT_GT(wrong.error.p50, 1.5 * three.error.p50);
+
+  // Per sample (the bench's --worst): the same samples and worst values as the summary, and each
+  // sample's own level changes, which fall at about the displays' order in the bulk.
+  const auto samples = extrapolatedErrorSamples(config, exact, levels, order, 32);
+  ASSERT_EQ(samples.size(), three.error.samples);
+  double worst = 0, worstFinest = 0;
+  std::vector<double> localOrders;
+  for (const ExtrapolatedSample& x : samples) {
+    worst = std::max(worst, x.error);
+    worstFinest = std::max(worstFinest, x.finestError);
+    ASSERT_EQ(x.changes.size(), 2u);
+    if (x.changes[1] > 0) localOrders.push_back(richardsonOrder(x.changes[0], x.changes[1]));
+  }
+  EXPECT_EQ(worst, three.error.max);
+  EXPECT_EQ(worstFinest, three.finest.max);
+  std::nth_element(localOrders.begin(), localOrders.begin() + localOrders.size() / 2,
+                   localOrders.end());
+  EXPECT_NEAR(localOrders[localOrders.size() / 2], convergence.orderP50, 0.5);
 }
 
 TEST(MapReferenceExtrapolation, RefusesTooFewLevelsAndABadOrder) {

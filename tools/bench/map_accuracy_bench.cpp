@@ -27,6 +27,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <numbers>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -159,6 +161,41 @@ double median(std::vector<double> v) {
   return v.empty() ? 0 : v[v.size() / 2];
 }
 
+// The n worst samples against the extrapolated reference, each with the levels' changes there (a
+// local order: log2 of two successive changes) and its angle to the nearest singular corner of
+// the finest level (seen from the reference point).
+void printWorstSamples(const DisplayConfig& config, const DisplayMapEvaluator& test,
+                       std::span<const DisplayMapEvaluator* const> levels, const DisplayMap& finest,
+                       double order, int samples, int threads, int n) {
+  auto all = extrapolatedErrorSamples(config, test, levels, order, samples, threads);
+  const auto count = std::min<std::size_t>(n, all.size());
+  std::partial_sort(all.begin(), all.begin() + count, all.end(),
+                    [](const auto& a, const auto& b) { return a.error > b.error; });
+  const std::vector<Vec3d> corners = singularCorners(finest);
+  for (std::size_t i = 0; i < count; ++i) {
+    const ExtrapolatedSample& x = all[i];
+    const Vec3d d = normalized(x.point - config.reference);
+    double nearest = 1e9;
+    Vec3d corner{0.0};
+    for (const Vec3d& c : corners)
+      if (angleBetween(d, c) < nearest) nearest = angleBetween(d, c), corner = c;
+    std::string changes;
+    for (double c : x.changes) changes += (changes.empty() ? "" : " -> ") + std::to_string(c);
+    // The virtual direction the test map shows there (where on the source the content comes from).
+    const auto shown = test.toVirtual(x.point - config.reference);
+    const Vec3d v = shown ? shown->direction : Vec3d{0.0};
+    std::printf("  worst %zu: %s %.4f,%.4f error %.3f px (finest %.3f, uncertainty %.3f), level "
+                "changes %s px, local order %.2f; %.2f deg from corner (%.3f, %.3f, %.3f); shows "
+                "virtual (%.4f, %.4f, %.4f)\n",
+                i + 1, config.walls[x.wall].name.c_str(), x.s, x.t, x.error, x.finestError,
+                x.uncertainty, changes.c_str(),
+                x.changes.size() >= 2
+                    ? richardsonOrder(x.changes[x.changes.size() - 2], x.changes.back())
+                    : 0.0,
+                nearest * 180 / std::numbers::pi, corner.x, corner.y, corner.z, v.x, v.y, v.z);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -207,6 +244,10 @@ int main(int argc, char** argv) {
   app.add_option("--reference-order", referenceOrder,
                  "Order of the extrapolation (0: estimated from the p99 changes of the last three "
                  "levels, 2 with only two)")->capture_default_str();
+  int worst = 0;
+  app.add_option("--worst", worst,
+                 "With --reference-extrapolate: print each row's N worst samples (errors, the "
+                 "levels' changes there, degrees to the nearest singular corner)")->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     const MapInterpolation referenceInterpolation = parseMapInterpolation(referenceInterpolationName);
@@ -298,6 +339,8 @@ int main(int argc, char** argv) {
             std::snprintf(text, sizeof text, " %.3f / %.2f | %.3f / %.3f / %.2f |", x.finest.p99,
                           x.finest.max, x.uncertainty.p50, x.uncertainty.p99, x.uncertainty.max);
             extra = text;
+            if (worst > 0) printWorstSamples(config, test, levelViews, *levels.back(), order, samples,
+                                             threads, worst);
           } else {
             e = measureMapError(config, map, reference, samples, threads, interpolation,
                                 referenceInterpolation);

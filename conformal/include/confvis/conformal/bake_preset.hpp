@@ -7,8 +7,9 @@
 //             idle 2-core machine), but content lands up to ~54 px (p99) / 113 px (max) off near
 //             the singular corners, and straight lines kink by ~21 degrees (p99).
 //   accurate  half the config's edge_length, graded toward the singular corners (30 degrees,
-//             edges down to 1/64), spherical route, per-vertex Möbius blending
-//             (map_interpolation.hpp): cave5 at p99 0.43 px, max 0.97 px, kinks p99 0.04
+//             edges down to 1/1024), spherical route, per-vertex Möbius blending
+//             (map_interpolation.hpp): cave5 at p99 0.47 px, max 0.6 px against an
+//             extrapolated reference resolved near the corners, kinks p99 0.04
 //             degrees, for ~13x the CPU of `fast` (~1 s): what offline bakes and renders use.
 //             presetSettings(preset, config) takes 0.4 of the edge where the display has a
 //             convex boundary corner (cave3: p99 0.90 px at 8 cm against 2.1 px at 10 cm).

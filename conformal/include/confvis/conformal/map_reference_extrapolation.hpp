@@ -52,4 +52,18 @@ ExtrapolatedMapError measureMapErrorExtrapolated(
     std::span<const DisplayMapEvaluator* const> levels, double order, int samplesPerSide = 96,
     int threads = 0);
 
+// One sample of measureMapErrorExtrapolated, to find where the worst lie and what the levels do
+// there (a local order from successive changes).
+struct ExtrapolatedSample {
+  int wall = 0;
+  double s = 0, t = 0;  // on the wall's lit rectangle
+  Vec3d point{0.0};     // on the wall
+  double error = 0, finestError = 0, uncertainty = 0;  // pixels
+  std::vector<double> changes;  // level k -> k+1, pixels
+};
+std::vector<ExtrapolatedSample> extrapolatedErrorSamples(
+    const DisplayConfig& config, const DisplayMapEvaluator& test,
+    std::span<const DisplayMapEvaluator* const> levels, double order, int samplesPerSide = 96,
+    int threads = 0);
+
 }  // namespace confvis
