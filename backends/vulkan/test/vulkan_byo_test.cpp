@@ -119,9 +119,15 @@ TEST(VulkanBringYourOwn, ExampleAppMatchesTheBackendThroughTheBakedMap) {
     }
 }
 
-// The map uploaded on the application's command buffer with the pre-pass: the very same pixels
-// as uploaded by its own submission. The mixed layout (positions R32G32B32A32_SFLOAT, normals
+// The map uploaded on the application's command buffer with the pre-pass: the same pixels as
+// uploaded by its own submission, but for a few: the pre-pass appends its piece lists with
+// atomics, lavapipe's compute threads vary their order from run to run, and pieces meeting at
+// the same depth along the cut (both sides now reach the rim) may then draw in either order
+// (4 of 12 runs differed in 1 pixel with 2 lavapipe threads, none with LP_NUM_THREADS=1). A
+// wrong upload changes whole walls. The mixed layout (positions R32G32B32A32_SFLOAT, normals
 // R16G16B16A16_SFLOAT, uvs R16G16_UNORM) within the tolerance.
+constexpr std::size_t kDrawOrderPixels = 4;
+
 TEST(VulkanBringYourOwn, RecordedUploadAndMixedLayoutMatch) {
   const Fixture& f = fixture();
   byo_example::AppOptions recorded;
@@ -132,9 +138,9 @@ TEST(VulkanBringYourOwn, RecordedUploadAndMixedLayoutMatch) {
       << (viaRecorded.messages.empty() ? "" : viaRecorded.messages.front());
   ASSERT_EQ(viaRecorded.images.size(), viaSubmitted.images.size());
   for (std::size_t i = 0; i < viaRecorded.images.size(); ++i)
-    EXPECT_EQ(test::comparePixels(viaRecorded.images[i].image, viaSubmitted.images[i].image, 0.0f)
+    EXPECT_LE(test::comparePixels(viaRecorded.images[i].image, viaSubmitted.images[i].image, 0.0f)
                   .bad,
-              0u)
+              kDrawOrderPixels)
         << viaRecorded.images[i].wall;
   byo_example::AppOptions mixed;
   mixed.vertexFormat = byo_example::AppOptions::VertexFormat::Mixed;
