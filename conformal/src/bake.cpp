@@ -1,7 +1,6 @@
 #include "confvis/conformal/bake.hpp"
 
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -15,15 +14,14 @@
 #include "parallel_for.hpp"
 #include "smooth_interpolation.hpp"
 #include "sphere_raster.hpp"
+#include "stage_clock.hpp"
 
 namespace confvis {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::secondsSince;
 
 constexpr int kMaxResolution = 8192;
 

@@ -4,7 +4,6 @@
 #include "confvis/conformal/bake_display.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -14,14 +13,13 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/bake_verdict.hpp"
+#include "stage_clock.hpp"
 
 namespace confvis {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::secondsSince;
 
 struct Attempt {
   double edgeLength;

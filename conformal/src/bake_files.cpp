@@ -1,7 +1,6 @@
 #include "confvis/conformal/bake_files.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <functional>
 #include <string>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/version.hpp"
 #include "parallel_for.hpp"
+#include "stage_clock.hpp"
 
 namespace confvis {
 
@@ -27,10 +27,8 @@ using nlohmann::json;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using detail::Clock;
+using detail::secondsSince;
 
 constexpr int kDiskPreviewSize = 512;
 

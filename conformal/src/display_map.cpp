@@ -4,7 +4,6 @@
 #include "confvis/conformal/display_map.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <future>
 #include <limits>
@@ -18,14 +17,13 @@
 #include "confvis/engine/display_config.hpp"
 #include "display_alignment.hpp"
 #include "flow_progress.hpp"
+#include "stage_clock.hpp"
 
 namespace confvis {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
+using detail::Clock;
+using detail::secondsSince;
 
 SphereDiskMesh projectToSphere(const TemplateMesh& mesh, const glm::dvec3& reference) {
   SphereDiskMesh out;
