@@ -14,6 +14,7 @@
 #include "confvis/base/progress.hpp"
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/display_template.hpp"
+#include "confvis/conformal/mobius.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "display_alignment.hpp"
 #include "flow_progress.hpp"
@@ -78,20 +79,20 @@ std::vector<std::complex<double>> centredOnBoundary(const SphereDiskMesh& mesh,
     weight[k] += 0.5 * side;
     weight[(k + 1) % n] += 0.5 * side;
   }
-  std::complex<double> a = 0;
+  conformal::Mobius centring;  // moves the boundary's current barycentre to 0
   for (int iteration = 0; iteration < 100; ++iteration) {
     std::complex<double> mean = 0;
     double total = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      const std::complex<double> z = uv[mesh.boundary[k]];
-      mean += weight[k] * (z - a) / (1.0 - std::conj(a) * z);
+      mean += weight[k] * centring(uv[mesh.boundary[k]]);
       total += weight[k];
     }
     mean /= total;
     if (std::abs(mean) < 1e-15) break;
-    a = (a + 0.5 * mean) / (1.0 + std::conj(a) * 0.5 * mean);
+    // Half a step towards the barycentre, in the disk before this iteration's centring.
+    centring = conformal::Mobius::diskAutomorphism(centring.inverse()(0.5 * mean), 0);
   }
-  for (auto& z : uv) z = (z - a) / (1.0 - std::conj(a) * z);
+  for (auto& z : uv) z = centring(z);
   return uv;
 }
 
