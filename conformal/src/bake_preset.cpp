@@ -47,8 +47,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 std::array<Vec3d, 4> cornersOf(const Wall& wall) {  // counter-clockwise seen from the front
-  const Vec3d right = wall.lowerRight - wall.lowerLeft, up = wall.upperLeft - wall.lowerLeft;
-  return {wall.lowerLeft, wall.lowerRight, wall.lowerLeft + right + up, wall.upperLeft};
+  return {wall.lowerLeft, wall.lowerRight, wall.upperRight(), wall.upperLeft};
 }
 
 // The angle at corner k of `wall` on the sphere of directions from c: between the great circles
@@ -67,11 +66,11 @@ double angleAround(const Wall& wall, const Vec3d& x, const Vec3d& c, double tole
   const auto corners = cornersOf(wall);
   for (int k = 0; k < 4; ++k)
     if (norm(corners[k] - x) < tolerance) return sphericalCornerAngle(corners, k, c);
-  const Vec3d right = wall.lowerRight - wall.lowerLeft, up = wall.upperLeft - wall.lowerLeft;
   const Vec3d d = x - wall.lowerLeft;
-  if (std::abs(dot(d, normalized(cross(right, up)))) > tolerance) return 0;
-  const double s = dot(d, right) / dot(right, right), t = dot(d, up) / dot(up, up);
-  const double ts = tolerance / norm(right), tt = tolerance / norm(up);
+  if (std::abs(dot(d, wall.normal())) > tolerance) return 0;
+  const double width = wall.widthMetres(), height = wall.heightMetres();
+  const double s = dot(d, wall.right()) / width, t = dot(d, wall.up()) / height;
+  const double ts = tolerance / width, tt = tolerance / height;
   if (s < -ts || s > 1 + ts || t < -tt || t > 1 + tt) return 0;
   const bool onEdge = s < ts || s > 1 - ts || t < tt || t > 1 - tt;
   return onEdge ? kPi : 2 * kPi;
