@@ -55,7 +55,7 @@ std::vector<Attempt> repairPlan(const DisplayConfig& config) {
 std::string bandNote(const DisplayConfig& config) {
   double azMin = 1e9, azMax = -1e9, elMin = 1e9, elMax = -1e9;
   for (const Wall& w : config.walls)
-    for (const glm::dvec3& corner : {w.lowerLeft, w.lowerRight, w.upperLeft, w.upperRight()}) {
+    for (const glm::dvec3& corner : w.corners()) {
       const glm::dvec3 d = corner - config.reference;
       const double az = std::atan2(d.x, -d.z), el = std::atan2(d.y, std::hypot(d.x, d.z));
       azMin = std::min(azMin, az), azMax = std::max(azMax, az);

@@ -46,10 +46,6 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-std::array<Vec3d, 4> cornersOf(const Wall& wall) {  // counter-clockwise seen from the front
-  return {wall.lowerLeft, wall.lowerRight, wall.upperRight(), wall.upperLeft};
-}
-
 // The angle at corner k of `wall` on the sphere of directions from c: between the great circles
 // towards its two neighbouring corners.
 double sphericalCornerAngle(const std::array<Vec3d, 4>& corners, int k, const Vec3d& c) {
@@ -63,7 +59,7 @@ double sphericalCornerAngle(const std::array<Vec3d, 4>& corners, int k, const Ve
 
 // What `wall` adds to the angle around point x: its corner angle, π on an edge, 2π inside, 0 off.
 double angleAround(const Wall& wall, const Vec3d& x, const Vec3d& c, double tolerance) {
-  const auto corners = cornersOf(wall);
+  const auto corners = wall.corners();
   for (int k = 0; k < 4; ++k)
     if (norm(corners[k] - x) < tolerance) return sphericalCornerAngle(corners, k, c);
   const Vec3d d = x - wall.lowerLeft;
@@ -82,7 +78,7 @@ double smallestBoundaryCornerAngle(const DisplayConfig& config) {
   const DisplayConfig surfaces = surfaceConfig(config);
   double smallest = 2 * kPi;
   for (const Wall& wall : surfaces.walls)
-    for (const Vec3d& x : cornersOf(wall)) {
+    for (const Vec3d& x : wall.corners()) {
       const double tolerance = 1e-6 * std::max(1.0, norm(x - config.reference));
       double around = 0;
       for (const Wall& other : surfaces.walls)

@@ -44,7 +44,7 @@ std::optional<BoxFrame> findBox(const DisplayConfig& config) {
   frame.hi.fill(-1e300);
   for (const Wall& w : config.walls) {
     if (axisIndex(frame, w.right()) < 0 || axisIndex(frame, w.up()) < 0) return std::nullopt;
-    for (const glm::dvec3& p : {w.lowerLeft, w.lowerRight, w.upperLeft, w.upperRight()})
+    for (const glm::dvec3& p : w.corners())
       for (int k = 0; k < 3; ++k) {
         frame.lo[k] = std::min(frame.lo[k], frame.coord(p, k));
         frame.hi[k] = std::max(frame.hi[k], frame.coord(p, k));
@@ -290,7 +290,8 @@ StarCut closedDisplayStar(const DisplayConfig& config, const CoarseDisplay& disp
   if (!hasBezel(wall)) {
     for (const FanCell& cell : display.cells)  // the wall's single fan (see wallCells)
       if (cell.wall == best) star.centre = cell.centre;
-    star.leaves = {wall.lowerLeft, wall.lowerRight, wall.upperRight(), wall.upperLeft};
+    const std::array<glm::dvec3, 4> corners = wall.corners();
+    star.leaves.assign(corners.begin(), corners.end());
     for (const glm::dvec3& leaf : star.leaves) star.edges.push_back({star.centre, leaf});
     return star;
   }

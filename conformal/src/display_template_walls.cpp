@@ -25,10 +25,6 @@ std::string pointText(const glm::dvec3& p) {
   return buffer;
 }
 
-std::array<glm::dvec3, 4> corners(const Wall& w) {
-  return {w.lowerLeft, w.lowerRight, w.upperRight(), w.upperLeft};
-}
-
 // Whether a plane through the reference separates the two walls' viewing cones, as the best
 // smallest angular clearance (a sine) over the planes tried: positive when separated, about 0
 // when they touch, negative when one hides part of the other. If any separating plane exists,
@@ -37,8 +33,8 @@ std::array<glm::dvec3, 4> corners(const Wall& w) {
 struct ConeSeparation {
   std::vector<glm::dvec3> rays;  // a's rays, then b's rays negated: want n . ray >= margin
   ConeSeparation(const Wall& a, const Wall& b, const glm::dvec3& c) {
-    for (const glm::dvec3& p : corners(a)) rays.push_back(glm::normalize(p - c));
-    for (const glm::dvec3& p : corners(b)) rays.push_back(-glm::normalize(p - c));
+    for (const glm::dvec3& p : a.corners()) rays.push_back(glm::normalize(p - c));
+    for (const glm::dvec3& p : b.corners()) rays.push_back(-glm::normalize(p - c));
   }
   double margin(const glm::dvec3& n) const {
     double m = 2;
@@ -93,7 +89,7 @@ double segmentDistance(const glm::dvec3& p0, const glm::dvec3& p1, const glm::dv
 
 double wallDistance(const Wall& a, const Wall& b) {
   double best = 1e300;
-  const auto ca = corners(a), cb = corners(b);
+  const auto ca = a.corners(), cb = b.corners();
   for (int i = 0; i < 4; ++i) {
     best = std::min({best, pointRectangleDistance(ca[i], b), pointRectangleDistance(cb[i], a)});
     for (int j = 0; j < 4; ++j)

@@ -51,8 +51,7 @@ Interval interiorAlongLine(const Wall& w, const glm::dvec3& base, const glm::dve
 // Coplanar rectangles: interiors are disjoint iff some side direction of either separates
 // their projections (separating-axis theorem; touching projections count as separated).
 bool coplanarInteriorsIntersect(const Wall& a, const Wall& b) {
-  const std::array<glm::dvec3, 4> cornersA{a.lowerLeft, a.lowerRight, a.upperLeft, a.upperRight()};
-  const std::array<glm::dvec3, 4> cornersB{b.lowerLeft, b.lowerRight, b.upperLeft, b.upperRight()};
+  const std::array<glm::dvec3, 4> cornersA = a.corners(), cornersB = b.corners();
   for (const glm::dvec3& axis : {a.right(), a.up(), b.right(), b.up()}) {
     auto range = [&](const std::array<glm::dvec3, 4>& corners) {
       double lo = std::numeric_limits<double>::infinity(), hi = -lo;

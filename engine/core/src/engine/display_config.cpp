@@ -25,6 +25,9 @@ using nlohmann::json;
 // ---- Wall geometry -------------------------------------------------------------------------
 
 glm::dvec3 Wall::upperRight() const { return lowerRight + (upperLeft - lowerLeft); }
+std::array<glm::dvec3, 4> Wall::corners() const {
+  return {lowerLeft, lowerRight, upperRight(), upperLeft};
+}
 glm::dvec3 Wall::right() const { return glm::normalize(lowerRight - lowerLeft); }
 glm::dvec3 Wall::up() const { return glm::normalize(upperLeft - lowerLeft); }
 glm::dvec3 Wall::normal() const { return glm::normalize(glm::cross(right(), up())); }

@@ -27,7 +27,7 @@ PlaneBox boxIn(const Wall& frame, const Wall& w) {
   const glm::dvec3 r = frame.right(), u = frame.up();
   PlaneBox box{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
                std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-  for (const glm::dvec3& p : {w.lowerLeft, w.lowerRight, w.upperLeft, w.upperRight()}) {
+  for (const glm::dvec3& p : w.corners()) {
     const double s = glm::dot(p - frame.lowerLeft, r), t = glm::dot(p - frame.lowerLeft, u);
     box.s0 = std::min(box.s0, s), box.s1 = std::max(box.s1, s);
     box.t0 = std::min(box.t0, t), box.t1 = std::max(box.t1, t);

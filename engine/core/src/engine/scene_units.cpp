@@ -10,8 +10,7 @@ namespace confvis {
 double displayExtent(const DisplayConfig& display) {
   Bounds box;
   for (const Wall& wall : display.walls)
-    for (const glm::dvec3& corner :
-         {wall.lowerLeft, wall.lowerRight, wall.upperLeft, wall.upperRight()})
+    for (const glm::dvec3& corner : wall.corners())
       box.extend(glm::vec3(corner));
   return box.empty() ? 0.0 : static_cast<double>(glm::length(box.max - box.min));
 }

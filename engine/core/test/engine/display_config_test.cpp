@@ -132,6 +132,13 @@ TEST(DisplayWall, HelpersDescribeTheRectangle) {
   EXPECT_DOUBLE_EQ(w.widthMetres(), 4.0);
   EXPECT_DOUBLE_EQ(w.heightMetres(), 2.0);
   EXPECT_TRUE(vecNear(w.pointAt(0.25, 0.5), {1, 1, -1}));
+  // corners() runs counter-clockwise seen from the front: each turn points along the normal.
+  const std::array<glm::dvec3, 4> c = w.corners();
+  EXPECT_TRUE(vecNear(c[0], w.lowerLeft) && vecNear(c[2], w.upperRight()));
+  for (int k = 0; k < 4; ++k) {
+    const glm::dvec3 turn = glm::cross(c[(k + 1) % 4] - c[k], c[(k + 2) % 4] - c[(k + 1) % 4]);
+    EXPECT_GT(glm::dot(turn, w.normal()), 0.0) << "corner " << k;
+  }
 }
 
 TEST(DisplayWall, PixelCentresCountRowsFromTheTop) {

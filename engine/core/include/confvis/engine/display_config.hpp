@@ -28,6 +28,7 @@
 //     }]
 //   }
 #include <filesystem>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -62,6 +63,8 @@ struct Wall {
   bool preview = false;
 
   glm::dvec3 upperRight() const;
+  // Lower-left, lower-right, upper-right, upper-left: counter-clockwise seen from the front.
+  std::array<glm::dvec3, 4> corners() const;
   glm::dvec3 right() const;   // unit, lower-left -> lower-right
   glm::dvec3 up() const;      // unit, lower-left -> upper-left
   glm::dvec3 normal() const;  // unit, right x up: points to the viewer's side
