@@ -14,14 +14,12 @@
 #include "parallel_for.hpp"
 #include "smooth_interpolation.hpp"
 #include "sphere_raster.hpp"
-#include "stage_clock.hpp"
+#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 
 namespace {
 
-using detail::Clock;
-using detail::secondsSince;
 
 constexpr int kMaxResolution = 8192;
 
@@ -262,8 +260,8 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
   validateDisplayMap(map);
   bakes.fetch_add(1, std::memory_order_relaxed);
   BakeTimings t;
-  const auto start = Clock::now();
-  auto stage = Clock::now();
+  const auto start = SteadyClock::now();
+  auto stage = SteadyClock::now();
   // Both point-location structures at once (a tracked head re-bakes: wall time counts).
   std::optional<detail::DiskLocator> sourceLocator, targetLocator;
   std::optional<detail::MobiusBlend> sourceBlend, targetBlend;
@@ -295,7 +293,7 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
     const SphereDiskMesh& domain = ray ? map.target : map.source;
     const SphereDiskMesh& codomain = ray ? map.source : map.target;
     const detail::DiskLocator& codomainDisk = ray ? sourceDisk : targetDisk;
-    const auto directionStart = Clock::now();
+    const auto directionStart = SteadyClock::now();
     if (smooth)
       detail::bakeDirectionMapSmooth(domain, codomain, ray ? *targetBlend : *sourceBlend,
                                      ray ? *sourceBlend : *targetBlend, codomainDisk,
@@ -307,7 +305,7 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
   };
   t.ray = bakeDirection(true, result.ray, rayCovered);
   t.geom = bakeDirection(false, result.geom, geomCovered);
-  stage = Clock::now();
+  stage = SteadyClock::now();
   detail::parallelFor(2, options.threads, [&](std::size_t which) {
     CubeMap& cube = which == 0 ? result.ray : result.geom;
     const std::vector<std::uint8_t>& covered = which == 0 ? rayCovered : geomCovered;

@@ -13,13 +13,11 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/conformal/bake_verdict.hpp"
-#include "stage_clock.hpp"
+#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 namespace {
 
-using detail::Clock;
-using detail::secondsSince;
 
 struct Attempt {
   double edgeLength;
@@ -84,7 +82,7 @@ SourcedDisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
   std::optional<Error> firstError;
   bool sameErrorEverywhere = true;
   const std::vector<Attempt> plan = repairPlan(effective);
-  const auto planStart = Clock::now();
+  const auto planStart = SteadyClock::now();
   for (std::size_t k = 0; k < plan.size(); ++k) {
     const double failedSeconds = secondsSince(planStart);  // the attempts before this one
     DisplayConfig config = effective;
@@ -107,7 +105,7 @@ SourcedDisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
     PrebakedRetargetMap baked;
     baked.options = displayBakeOptions(config, options);
     baked.map = bakeRetargetMap(map, config.cubeResolution, baked.options, &baked.timings);
-    const auto judging = Clock::now();
+    const auto judging = SteadyClock::now();
     const BakeVerdict verdict = judgeBake(map, baked.map);
     if (verdict.ok()) {
       map.stats["checks"] = verdict.toJson();

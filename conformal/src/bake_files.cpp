@@ -18,7 +18,7 @@
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/version.hpp"
 #include "parallel_for.hpp"
-#include "stage_clock.hpp"
+#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 
@@ -27,8 +27,6 @@ using nlohmann::json;
 
 namespace {
 
-using detail::Clock;
-using detail::secondsSince;
 
 constexpr int kDiskPreviewSize = 512;
 
@@ -102,7 +100,7 @@ json makeBakeSidecar(const DisplayConfig& config, const DisplayMap& displayMap,
                      bool showProgress) {
   const int n = map.resolution();
   const int stride = qualityStride > 0 ? qualityStride : std::max(1, n / 128);
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   Progress progress("quality", 5, showProgress);
   const ConformalityOptions conformality{.margin = 2, .discontinuityTolerance = 0.5, .stride = stride};
   const BakedConformality rayConformality = measureBakedConformality(map.ray, conformality);
@@ -179,7 +177,7 @@ json writeBakeDirectory(const fs::path& directory, const DisplayMap& displayMap,
          writePng(p, detail::diskPreview(displayMap.target, kDiskPreviewSize), {.alpha = true});
        }},
   };
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   Progress progress("files", files.size(), showProgress);
   detail::parallelFor(files.size(), threads, [&](std::size_t i) {
     files[i].second(directory / files[i].first);

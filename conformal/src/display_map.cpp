@@ -18,13 +18,11 @@
 #include "confvis/engine/display_config.hpp"
 #include "display_alignment.hpp"
 #include "flow_progress.hpp"
-#include "stage_clock.hpp"
+#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 namespace {
 
-using detail::Clock;
-using detail::secondsSince;
 
 SphereDiskMesh projectToSphere(const TemplateMesh& mesh, const glm::dvec3& reference) {
   SphereDiskMesh out;
@@ -104,7 +102,7 @@ struct FlowResult {
 
 FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool graded,
                       Progress& progress) {
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   FlowResult result;
   // Inversive distance (exact for any initial lengths, like Yamabe) converged in 5 Newton
   // iterations where Yamabe took 7 on the cut cube sources (tools/bench/display_map_bench.cpp).
@@ -212,7 +210,7 @@ nlohmann::json meshStats(const SphereDiskMesh& mesh, const FlowResult& flow) {
 
 DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOptions& options) {
   Progress progress("display map " + config.name, 4, options.showProgress);
-  auto start = Clock::now();
+  auto start = SteadyClock::now();
   const DisplayTemplates templates = buildDisplayTemplates(config, options.edgeLength, options.grading);
   DisplayMap map;
   map.source = projectToSphere(templates.source, config.reference);
@@ -224,7 +222,7 @@ DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOption
 
   // The two Riemann maps are independent (dissertation 8.3.3: "processed independently and in
   // parallel"); a closed display's source is its target, so one map serves both.
-  start = Clock::now();
+  start = SteadyClock::now();
   const bool identical = templates.sourceKind == SourceKind::Closed;
   const bool graded = options.grading.radiusDegrees > 0;
   auto sourceFuture = std::async(std::launch::async, [&] {
@@ -238,7 +236,7 @@ DisplayMap computeDisplayMap(const DisplayConfig& config, const DisplayMapOption
   }
   const double flowSeconds = secondsSince(start);
 
-  start = Clock::now();
+  start = SteadyClock::now();
   map.source.disk = sourceFlow.map.uv;
   map.target.disk = targetFlow.map.uv;
   // The forward direction: the hemisphere's axis, else -z (design note §2).

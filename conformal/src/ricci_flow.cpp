@@ -7,13 +7,13 @@
 #include "confvis/conformal/ricci_flow.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <sstream>
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "metric_evaluation.hpp"
 #include "ricci_flow_newton.hpp"
 
@@ -22,19 +22,18 @@ namespace {
 
 using detail::MetricEvaluation;
 using detail::SparseMatrix;
-using Clock = std::chrono::steady_clock;
 
 // Adds the lifetime of the scope to `total` (seconds).
 class ScopedTimer {
  public:
-  explicit ScopedTimer(double& total) : total_(total), start_(Clock::now()) {}
-  ~ScopedTimer() { total_ += std::chrono::duration<double>(Clock::now() - start_).count(); }
+  explicit ScopedTimer(double& total) : total_(total), start_(SteadyClock::now()) {}
+  ~ScopedTimer() { total_ += secondsSince(start_); }
   ScopedTimer(const ScopedTimer&) = delete;
   ScopedTimer& operator=(const ScopedTimer&) = delete;
 
  private:
   double& total_;
-  Clock::time_point start_;
+  SteadyClock::time_point start_;
 };
 
 double maxAbsDifference(const std::vector<double>& a, const std::vector<double>& b) {

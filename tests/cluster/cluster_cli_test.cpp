@@ -18,8 +18,10 @@
 #include "../cli_test_support.hpp"
 #include "../projector_sample.hpp"
 #include "../screenshot_compare.hpp"
+#include "confvis/base/stopwatch.hpp"
 
 namespace fs = std::filesystem;
+using confvis::secondsSince;
 using confvis::testing::CliRun;
 using confvis::testing::runCli;
 using confvis::testing::scratch;
@@ -201,10 +203,6 @@ struct RunningWalk {
   // Everything mpirun and the ranks print, and the exit status, once the job ended.
   CliRun finish() { return ::finish(pipe); }
 };
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 TEST(ClusterCli, ARankThatStopsAnsweringEndsEveryRankWithinTheTimeout) {
   RunningWalk walk("stall", "--cluster-timeout 1");

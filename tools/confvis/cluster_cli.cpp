@@ -7,6 +7,7 @@
 
 #include "command.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #ifdef CONFVIS_HAVE_CLUSTER
 #include "confvis/runtime/cluster.hpp"
 #endif
@@ -165,11 +166,10 @@ std::optional<RenderResult> CliCluster::render(RenderBackend& backend,
     if (settings.walls.empty() ||
         std::find(settings.walls.begin(), settings.walls.end(), wall) != settings.walls.end())
       mine.walls.push_back(wall);
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   RenderResult result;  // a rank without walls renders nothing (empty walls would mean all)
   if (!mine.walls.empty()) result = backend.render(display, map, mine);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = secondsSince(start);
   // Other ranks may draw more than this one: wait a few times this rank's own time for them.
   // The swap lock first: a rank that stopped answering is named to every rank there.
   const double patience = 4.0 * seconds + 1.0;

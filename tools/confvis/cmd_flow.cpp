@@ -9,6 +9,7 @@
 #include "command.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/distortion.hpp"
 #include "confvis/conformal/real_mesh_map.hpp"
@@ -74,12 +75,11 @@ int runFlow(const FlowArgs& args) {
   std::array<int, 3> markers{};
   if (!args.markers.empty()) markers = parseMarkers(args.markers, mesh, source);
 
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   const RealMeshMap real = computeRealMeshDiskMap(mesh, source, options);
   DiskMap map = real.map;
   if (!args.markers.empty()) alignDiskMap(map.uv, markers[0], markers[1], markers[2]);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = secondsSince(start);
   const DistortionStats stats = measureDistortion(mesh, map.uv);
 
   const std::filesystem::path output =

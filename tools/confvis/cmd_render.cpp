@@ -18,6 +18,7 @@
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/input_limits.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "render_options.hpp"
 #include "retarget_map_source.hpp"
@@ -75,12 +76,8 @@ VirtualCamera parseCamera(const std::string& text) {
 // How long the other ranks of a --cluster run wait for rank 0's bake of the map.
 constexpr double kClusterBakeSeconds = 600.0;
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 int runRender(const RenderArgs& args) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   const fs::path configPath = args.config.empty()
                                   ? shippedFile("configs/cave5.json", "display config")
                                   : fs::path(args.config);
@@ -113,13 +110,13 @@ int runRender(const RenderArgs& args) {
   planRender(config, renderMap, settings);
   const double setupSeconds = secondsSince(start);
 
-  auto stage = std::chrono::steady_clock::now();
+  auto stage = SteadyClock::now();
   const Scene scene = loadSceneInUnits(args.scene, args.sceneScale, config);
   const double loadSeconds = secondsSince(stage);
-  stage = std::chrono::steady_clock::now();
+  stage = SteadyClock::now();
   backend->setScene(scene);
   const double uploadSeconds = secondsSince(stage);
-  stage = std::chrono::steady_clock::now();
+  stage = SteadyClock::now();
   std::optional<RenderResult> rendered =
       cluster ? cluster->render(*backend, config, renderMap, settings)
               : backend->render(config, renderMap, settings);

@@ -24,6 +24,7 @@
 #include "confvis/backends/render_output.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/scene_loader.hpp"
 #include "confvis/runtime/tracker.hpp"
@@ -37,7 +38,7 @@ namespace confvis::cli {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 
 struct WalkArgs {
   std::string config, path, scene = "checker-tunnel", backend = "embree", output = "out/walk";
@@ -51,10 +52,6 @@ struct WalkArgs {
 
 nlohmann::json toJson(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json toJson(const glm::dquat& q) { return {q.w, q.x, q.y, q.z}; }
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // --cluster: how long the other ranks wait for rank 0's first bake, and for its frames (rank 0
 // also renders and writes every frame's images).

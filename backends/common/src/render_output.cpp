@@ -9,6 +9,7 @@
 #include "confvis/base/exr_io.hpp"
 #include "confvis/base/input_limits.hpp"
 #include "confvis/base/png_io.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/engine/version.hpp"
 
 namespace confvis {
@@ -57,7 +58,7 @@ nlohmann::json writeRenderOutput(const std::filesystem::path& directory,
                                  const RenderResult& result, const nlohmann::json& extra) {
   if (result.images.empty())
     throw Error(ErrorCode::InvalidInput, "nothing to write: the render produced no image");
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   nlohmann::json files = nlohmann::json::array();
   auto record = [&](const std::filesystem::path& name) { files.push_back(name.string()); };
 
@@ -103,8 +104,7 @@ nlohmann::json writeRenderOutput(const std::filesystem::path& directory,
       {"overview_eye", eyeName(overviewEye)},
       {"backend", toJson(result.stats)},
       {"files", files}};
-  report["write_seconds"] =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report["write_seconds"] = secondsSince(start);
   report.merge_patch(extra);
   writeTextAtomically(directory / "render.json", report.dump(2) + "\n");
   return report;

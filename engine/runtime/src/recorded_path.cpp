@@ -5,6 +5,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/runtime/tracker.hpp"
 #include "confvis/engine/number_text.hpp"
 
@@ -122,10 +123,8 @@ HeadPose RecordedPath::at(double seconds, bool loop) const {
 RecordedPathTracker::RecordedPathTracker(RecordedPath path, bool loop, Clock clock)
     : path_(std::move(path)), loop_(loop), clock_(std::move(clock)) {
   if (!clock_) {
-    const auto start = std::chrono::steady_clock::now();
-    clock_ = [start] {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    };
+    const auto start = SteadyClock::now();
+    clock_ = [start] { return secondsSince(start); };
   }
 }
 
