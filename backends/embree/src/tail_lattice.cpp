@@ -6,13 +6,9 @@
 #include <cstring>
 #include <limits>
 
+#include "tail_blend.hpp"
+
 namespace confvis::embree {
-
-namespace {
-
-using Lanes = std::array<float, kPacketSize>;
-
-}  // namespace
 
 TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int y0, int x1,
                          int y1, float tolerancePixels)
@@ -23,6 +19,7 @@ TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int
       cellsAcross_((x1 - x0 + kTailCellPixels - 1) / kTailCellPixels),
       cellsDown_((y1 - y0 + kTailCellPixels - 1) / kTailCellPixels),
       tolerancePixels_(tolerancePixels),
+      simd_(job.shading.simd),
       // Packets (blocks of 4 x 2 from the tile's corner) must each lie inside one cell.
       usable_(job.tileSize % kTailCellPixels == 0 && kTailCellPixels % kBlockColumns == 0 &&
               kTailCellPixels % kBlockRows == 0) {}
@@ -64,15 +61,16 @@ void TailLattice::build() {
       point.direction = {component(0), component(1), component(2)};
       const glm::vec3 start(component(3), component(4), component(5));
       point.offset = start - glm::dot(start, point.direction) * point.direction;
+      point.startDistance = glm::length(start);
       point.u = {geometry.ux[lane], geometry.uy[lane], geometry.uz[lane]};
       point.h = geometry.h[lane];
-      point.lastDistance = geometry.lastDistance[lane];
     }
   }
   nodes_.assign(points.begin(), points.begin() + nodeCount);
   pass_.assign(static_cast<std::size_t>(cellCount), 0);
   lit_.assign(static_cast<std::size_t>(cellCount), 0);
   reach_.assign(static_cast<std::size_t>(cellCount), 0.0f);
+  along_.assign(static_cast<std::size_t>(cellCount), 0.0f);
   const glm::vec3 eye = rays_.eyeFromCentre();
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
@@ -130,11 +128,14 @@ void TailLattice::build() {
     const std::array<int, 4> cornerNodes = {j * across + i, j * across + i + 1,
                                             (j + 1) * across + i, (j + 1) * across + i + 1};
     glm::vec3 direction(0.0f), offset(0.0f);
+    float nearestStart = std::numeric_limits<float>::infinity(), widestOffset = 0.0f;
     float chordSquared = 0.0f;  // the cell's angular radius from the eye, squared (farthest corner)
     for (int node : cornerNodes) {
       const Point& corner = nodes_[static_cast<std::size_t>(node)];
       direction += 0.25f * corner.direction;
       offset += 0.25f * corner.offset;
+      nearestStart = std::min(nearestStart, corner.startDistance);
+      widestOffset = std::max(widestOffset, glm::length(corner.offset));
       const glm::vec3 chord = corner.u - centre.u;
       chordSquared = std::max(chordSquared, glm::dot(chord, chord));
     }
@@ -148,6 +149,12 @@ void TailLattice::build() {
     // 1.0001 |e - c| at least as there, so that a packet is straight only where every curve of
     // it bends inside the empty ball).
     const float reach = std::max(eyeDistance, (centre.h - spread) / sinAsymptote);
+    // How far along its blended line each sample starts from the blended offset O: by the
+    // triangle inequality the start lies within |O| + along <= the corners' largest |O| + along
+    // = their nearest start of c, inside the cell's reach (no nearer the scene than the curves'
+    // own starts); a per-mille margin for rounding. Starting at O itself, a few cm from c,
+    // would make Embree cross the scene's bounding boxes from inside (about 10 % slower).
+    along_[static_cast<std::size_t>(cell)] = 0.999f * std::max(0.0f, nearestStart - widestOffset);
     reach_[static_cast<std::size_t>(cell)] =
         1.0001f * std::max(eyeDistance, 1.00001f * (centre.h + spread) / sinAsymptote);
     // A sample on a line through c (h <= along tan(asymptote), along <= |e - c|) needs its whole
@@ -202,62 +209,28 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
     return rays_.exactTails(px, py, samples.count, run, reach);
   const int cell = cellIndex(samples.x, samples.y);
   const int i = cell % cellsAcross_, j = cell / cellsAcross_, across = cellsAcross_ + 1;
-  const Point& p00 = nodes_[static_cast<std::size_t>(j * across + i)];
-  const Point& p10 = nodes_[static_cast<std::size_t>(j * across + i + 1)];
-  const Point& p01 = nodes_[static_cast<std::size_t>((j + 1) * across + i)];
-  const Point& p11 = nodes_[static_cast<std::size_t>((j + 1) * across + i + 1)];
-  const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
-  const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
-  const float perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
-  const float perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
-  alignas(32) Lanes alpha;
-  if (lit_[static_cast<std::size_t>(cell)])
-    for (int lane = 0; lane < kPacketSize; ++lane) alpha[lane] = lane < samples.count ? 1.0f : 0.0f;
-  else
-    rays_.pixelAlpha(px, py, samples.count, alpha.data());
-  // Every lane's reach: the cell's bound (build); its last vertex's distance from c blended as
-  // the tails are (where the packet is straight, the start lies inside the empty ball either way,
-  // on the same line: the same hits).
-  alignas(32) Lanes laneReach;
-  laneReach.fill(reach_[static_cast<std::size_t>(cell)]);
-  // The corners' six components as scalars and the positions in locals (the loop vectorises).
-  float node[4][7];
-  const std::array<const Point*, 4> corners = {&p00, &p10, &p01, &p11};
-  for (int k = 0; k < 4; ++k) {
+  TailCell corners;
+  const std::array<int, 4> cornerNodes = {j * across + i, j * across + i + 1,
+                                          (j + 1) * across + i, (j + 1) * across + i + 1};
+  for (std::size_t k = 0; k < 4; ++k) {
+    const Point& corner = nodes_[static_cast<std::size_t>(cornerNodes[k])];
     for (int component = 0; component < 3; ++component) {
-      node[k][component] = corners[static_cast<std::size_t>(k)]->direction[component];
-      node[k][3 + component] = corners[static_cast<std::size_t>(k)]->offset[component];
+      corners.corners[k][static_cast<std::size_t>(component)] = corner.direction[component];
+      corners.corners[k][static_cast<std::size_t>(3 + component)] = corner.offset[component];
     }
-    node[k][6] = corners[static_cast<std::size_t>(k)]->lastDistance;
   }
-  alignas(32) Lanes positionX, positionY;
-  std::memcpy(positionX.data(), px, sizeof positionX);
-  std::memcpy(positionY.data(), py, sizeof positionY);
-  alignas(32) std::array<float, 6 * kPacketSize> tails;
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    const float tx = (positionX[lane] - left) * perX, ty = (positionY[lane] - top) * perY;
-    const float w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
-    const float w01 = (1.0f - tx) * ty, w11 = tx * ty;
-    float blended[7];
-    for (int component = 0; component < 7; ++component)
-      blended[component] = w00 * node[0][component] + w10 * node[1][component] +
-                           w01 * node[2][component] + w11 * node[3][component];
-    const float inverseLength = 1.0f / std::sqrt(blended[0] * blended[0] +
-                                                 blended[1] * blended[1] + blended[2] * blended[2]);
-    const float dx = blended[0] * inverseLength, dy = blended[1] * inverseLength;
-    const float dz = blended[2] * inverseLength;
-    const float ox = blended[3], oy = blended[4], oz = blended[5];
-    // The start on the interpolated line at the sample's own |W(last)| = |last| from c.
-    const float distance = blended[6];
-    const float along = std::sqrt(std::max(0.0f, distance * distance - (ox * ox + oy * oy + oz * oz)));
-    tails[lane] = dx;
-    tails[kPacketSize + lane] = dy;
-    tails[2 * kPacketSize + lane] = dz;
-    tails[3 * kPacketSize + lane] = ox + along * dx;
-    tails[4 * kPacketSize + lane] = oy + along * dy;
-    tails[5 * kPacketSize + lane] = oz + along * dz;
-  }
-  return CameraRays::maskTails(alpha.data(), laneReach.data(), tails.data(), run, reach);
+  corners.left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
+  corners.top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
+  corners.perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
+  corners.perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
+  // Every lane's reach: the cell's bound (build).
+  corners.reach = reach_[static_cast<std::size_t>(cell)];
+  corners.along = along_[static_cast<std::size_t>(cell)];
+  if (lit_[static_cast<std::size_t>(cell)])
+    return blendTails(simd_, corners, px, py, nullptr, samples.count, run, reach);
+  alignas(32) Lanes alpha;
+  rays_.pixelAlpha(px, py, samples.count, alpha.data());
+  return blendTails(simd_, corners, px, py, alpha.data(), samples.count, run, reach);
 }
 
 }  // namespace confvis::embree

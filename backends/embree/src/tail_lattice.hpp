@@ -30,6 +30,7 @@
 
 #include "camera_packet.hpp"
 #include "camera_rays.hpp"
+#include "surface_shading.hpp"
 #include "tile_renderer.hpp"
 
 namespace confvis::embree {
@@ -57,7 +58,7 @@ class TailLattice {
  private:
   struct Point {  // the exact tail at one wall position, with what the check needs
     glm::vec3 direction{0.0f}, offset{0.0f}, u{0.0f};
-    float h = 0.0f, lastDistance = 0.0f;
+    float h = 0.0f, startDistance = 0.0f;
   };
   void build();
   int cellIndex(int x, int y) const {
@@ -68,12 +69,14 @@ class TailLattice {
   glm::vec2 pixelToWall_{1.0f};
   int x0_ = 0, y0_ = 0, cellsAcross_ = 0, cellsDown_ = 0;
   float tolerancePixels_ = kTailTolerancePixels;
+  SimdLevel simd_ = SimdLevel::Sse2;  // which variant of the blend runs (tail_blend.hpp)
   bool usable_ = false;  // tiles aligned to whole cells only
   bool built_ = false;
   std::vector<Point> nodes_;  // (cellsAcross + 1) x (cellsDown + 1) cell corners, row by row
   std::vector<char> pass_;    // per cell: interpolated
   std::vector<char> lit_;     // per cell: every sample lit (WallMapGrid::litThroughout)
   std::vector<float> reach_;  // per cell: an upper bound of its samples' reach (exactTails')
+  std::vector<float> along_;  // per cell: its samples' starts along their lines (TailCell)
 };
 
 }  // namespace confvis::embree
