@@ -10,6 +10,18 @@
 
 namespace confvis::embree {
 
+namespace {
+
+// An upper bound of asin(x), x in [0, 1], without the library call: the series' coefficients
+// from x^3 on are at most 1/6, so asin(x) <= x + x^3 / (6 (1 - x^2)); a relative margin covers
+// float rounding. Near 1 (cells far wider than any wall's), the library's value with the margin.
+float asinAbove(float x) {
+  if (!(x < 0.5f)) return 1.0001f * std::asin(std::min(1.0f, x));
+  return 1.0001f * (x + x * x * x / (6.0f * (1.0f - x * x)));
+}
+
+}  // namespace
+
 TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int y0, int x1,
                          int y1, float tolerancePixels)
     : rays_(rays),
@@ -69,8 +81,7 @@ void TailLattice::build() {
   nodes_.assign(points.begin(), points.begin() + nodeCount);
   pass_.assign(static_cast<std::size_t>(cellCount), 0);
   lit_.assign(static_cast<std::size_t>(cellCount), 0);
-  reach_.assign(static_cast<std::size_t>(cellCount), 0.0f);
-  along_.assign(static_cast<std::size_t>(cellCount), 0.0f);
+  cells_.assign(static_cast<std::size_t>(cellCount), TailCell{});
   const glm::vec3 eye = rays_.eyeFromCentre();
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
@@ -142,7 +153,7 @@ void TailLattice::build() {
     // h = |e - c| sin(angle(u, e - c)) is 1-Lipschitz in the angle between rays times |e - c|:
     // within the cell it lies within `spread` of the centre's (the angle from the chord; a
     // relative margin for float rounding).
-    const float angularRadius = 2.0f * std::asin(std::min(1.0f, 0.5f * std::sqrt(chordSquared)));
+    const float angularRadius = 2.0f * asinAbove(0.5f * std::sqrt(chordSquared));
     const float spread = eyeDistance * angularRadius;
     // The smallest reach in the cell (what the check weighs the offsets' error by) and the
     // largest (what the cell's samples report: CameraRays::exactTails' reach bounded above,
@@ -154,8 +165,9 @@ void TailLattice::build() {
     // = their nearest start of c, inside the cell's reach (no nearer the scene than the curves'
     // own starts); a per-mille margin for rounding. Starting at O itself, a few cm from c,
     // would make Embree cross the scene's bounding boxes from inside (about 10 % slower).
-    along_[static_cast<std::size_t>(cell)] = 0.999f * std::max(0.0f, nearestStart - widestOffset);
-    reach_[static_cast<std::size_t>(cell)] =
+    TailCell& blend = cells_[static_cast<std::size_t>(cell)];
+    blend.along = 0.999f * std::max(0.0f, nearestStart - widestOffset);
+    blend.reach =
         1.0001f * std::max(eyeDistance, 1.00001f * (centre.h + spread) / sinAsymptote);
     // A sample on a line through c (h <= along tan(asymptote), along <= |e - c|) needs its whole
     // curve traced (infinite reach): a cell that may hold one is not interpolated.
@@ -188,6 +200,17 @@ void TailLattice::build() {
                                 : std::numeric_limits<float>::infinity());
     const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
     const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
+    // The blend's corners and place (tail_blend.hpp).
+    for (std::size_t k = 0; k < 4; ++k) {
+      const Point& corner = nodes_[static_cast<std::size_t>(cornerNodes[k])];
+      for (int component = 0; component < 3; ++component) {
+        blend.corners[k][static_cast<std::size_t>(component)] = corner.direction[component];
+        blend.corners[k][static_cast<std::size_t>(3 + component)] = corner.offset[component];
+      }
+    }
+    blend.left = left, blend.top = top;
+    blend.perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
+    blend.perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
     lit_[static_cast<std::size_t>(cell)] =
         tileLit || (grid && grid->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
                                                 top + kTailCellPixels * pixelToWall_.y));
@@ -208,24 +231,7 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
   if (!interpolated(samples.x, samples.y))
     return rays_.exactTails(px, py, samples.count, run, reach);
   const int cell = cellIndex(samples.x, samples.y);
-  const int i = cell % cellsAcross_, j = cell / cellsAcross_, across = cellsAcross_ + 1;
-  TailCell corners;
-  const std::array<int, 4> cornerNodes = {j * across + i, j * across + i + 1,
-                                          (j + 1) * across + i, (j + 1) * across + i + 1};
-  for (std::size_t k = 0; k < 4; ++k) {
-    const Point& corner = nodes_[static_cast<std::size_t>(cornerNodes[k])];
-    for (int component = 0; component < 3; ++component) {
-      corners.corners[k][static_cast<std::size_t>(component)] = corner.direction[component];
-      corners.corners[k][static_cast<std::size_t>(3 + component)] = corner.offset[component];
-    }
-  }
-  corners.left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
-  corners.top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
-  corners.perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
-  corners.perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
-  // Every lane's reach: the cell's bound (build).
-  corners.reach = reach_[static_cast<std::size_t>(cell)];
-  corners.along = along_[static_cast<std::size_t>(cell)];
+  const TailCell& corners = cells_[static_cast<std::size_t>(cell)];
   if (lit_[static_cast<std::size_t>(cell)])
     return blendTails(simd_, corners, px, py, nullptr, samples.count, run, reach);
   alignas(32) Lanes alpha;

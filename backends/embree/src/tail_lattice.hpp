@@ -31,6 +31,7 @@
 #include "camera_packet.hpp"
 #include "camera_rays.hpp"
 #include "surface_shading.hpp"
+#include "tail_blend.hpp"
 #include "tile_renderer.hpp"
 
 namespace confvis::embree {
@@ -75,8 +76,9 @@ class TailLattice {
   std::vector<Point> nodes_;  // (cellsAcross + 1) x (cellsDown + 1) cell corners, row by row
   std::vector<char> pass_;    // per cell: interpolated
   std::vector<char> lit_;     // per cell: every sample lit (WallMapGrid::litThroughout)
-  std::vector<float> reach_;  // per cell: an upper bound of its samples' reach (exactTails')
-  std::vector<float> along_;  // per cell: its samples' starts along their lines (TailCell)
+  // per cell: its corners, place, an upper bound of its samples' reach (exactTails') and how far
+  // along their lines they start, for the blend
+  std::vector<TailCell> cells_;
 };
 
 }  // namespace confvis::embree
