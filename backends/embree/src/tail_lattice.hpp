@@ -57,10 +57,6 @@ class TailLattice {
   bool interpolated(int x, int y);
 
  private:
-  struct Point {  // the exact tail at one wall position, with what the check needs
-    glm::vec3 direction{0.0f}, offset{0.0f}, u{0.0f};
-    float h = 0.0f, startDistance = 0.0f;
-  };
   void build();
   int cellIndex(int x, int y) const {
     return ((y - y0_) / kTailCellPixels) * cellsAcross_ + (x - x0_) / kTailCellPixels;
@@ -73,7 +69,6 @@ class TailLattice {
   SimdLevel simd_ = SimdLevel::Sse2;  // which variant of the blend runs (tail_blend.hpp)
   bool usable_ = false;  // tiles aligned to whole cells only
   bool built_ = false;
-  std::vector<Point> nodes_;  // (cellsAcross + 1) x (cellsDown + 1) cell corners, row by row
   std::vector<char> pass_;    // per cell: interpolated
   std::vector<char> lit_;     // per cell: every sample lit (WallMapGrid::litThroughout)
   // per cell: its corners, place, an upper bound of its samples' reach (exactTails') and how far
