@@ -11,12 +11,12 @@
 //
 // What is interpolated is what decides the traced line: the unit direction D and the start's
 // offset across it, O = S - (S.D) D (about J_F(u) (e - c)_perp: smooth, where S itself spins
-// with the eye's offset across the ray). Each sample's start is rebuilt on its own line at the
-// blended distance of the corners' last vertices from c (|W(last)| = |last|, W keeps distances
-// to c), and every sample of the cell reports the cell's largest reach (from the centre's h
+// with the eye's offset across the ray). Each sample starts on its own line at O + along D, one
+// `along` a cell that keeps the start within the corners' nearest |S| of c (tail_blend.hpp),
+// and every sample of the cell reports the cell's largest reach (from the centre's h
 // plus the cell's angular radius times |e - c|; no closed form per sample): a packet is traced
 // as straight tails only where that bound lies inside the empty ball, and there the true start
-// and the rebuilt one lie on the same line inside the ball, which holds no hit. Cells that may
+// and the blended one lie on the same line inside the ball, which holds no hit. Cells that may
 // hold a sample on a line through c (infinite reach) are not interpolated. A line moved by dO
 // and turned by dD
 // moves a hit at distance r from c by about |dO| / r + |dD| in angle, and every hit a tail
