@@ -6,11 +6,20 @@
 #include <cstring>
 #include <limits>
 
+#include "tail_blend.hpp"
+
 namespace confvis::embree {
 
 namespace {
 
-using Lanes = std::array<float, kPacketSize>;
+// An upper bound of asin(x), x in [0, 1], without the library call: the series' coefficients
+// from x^3 on are at most 1/6, so asin(x) <= x + x^3 / (6 (1 - x^2)); a relative margin covers
+// float rounding. From 1/2 on (cells far wider than any wall's), pi / 2 and a little.
+float asinAbove(float x) {
+  const float small = std::min(x, 0.5f);  // a select, so that the check's loop vectorises
+  return x < 0.5f ? 1.0001f * (small + small * small * small / (6.0f * (1.0f - small * small)))
+                  : 1.5709f;
+}
 
 }  // namespace
 
@@ -23,6 +32,7 @@ TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int
       cellsAcross_((x1 - x0 + kTailCellPixels - 1) / kTailCellPixels),
       cellsDown_((y1 - y0 + kTailCellPixels - 1) / kTailCellPixels),
       tolerancePixels_(tolerancePixels),
+      simd_(job.shading.simd),
       // Packets (blocks of 4 x 2 from the tile's corner) must each lie inside one cell.
       usable_(job.tileSize % kTailCellPixels == 0 && kTailCellPixels % kBlockColumns == 0 &&
               kTailCellPixels % kBlockRows == 0) {}
@@ -31,73 +41,88 @@ void TailLattice::build() {
   built_ = true;
   const int across = cellsAcross_ + 1, down = cellsDown_ + 1;
   const int nodeCount = across * down, cellCount = cellsAcross_ * cellsDown_;
-  // The positions: every cell corner, then every cell centre, in wall pixels.
-  std::vector<float> wallX, wallY;
-  wallX.reserve(static_cast<std::size_t>(nodeCount + cellCount));
-  wallY.reserve(static_cast<std::size_t>(nodeCount + cellCount));
+  const int total = nodeCount + cellCount;
+  const int padded = (total + kPacketSize - 1) / kPacketSize * kPacketSize;
+  // The positions: every cell corner, then every cell centre, in wall pixels (the last repeated
+  // up to a whole packet).
+  std::vector<float> wallX(static_cast<std::size_t>(padded)), wallY(static_cast<std::size_t>(padded));
   for (int j = 0; j < down; ++j)
     for (int i = 0; i < across; ++i) {
-      wallX.push_back(static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x);
-      wallY.push_back(static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y);
+      wallX[static_cast<std::size_t>(j * across + i)] = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
+      wallY[static_cast<std::size_t>(j * across + i)] = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
     }
   constexpr float kHalfCell = 0.5f * kTailCellPixels;
   for (int j = 0; j < cellsDown_; ++j)
     for (int i = 0; i < cellsAcross_; ++i) {
-      wallX.push_back((static_cast<float>(x0_ + kTailCellPixels * i) + kHalfCell) * pixelToWall_.x);
-      wallY.push_back((static_cast<float>(y0_ + kTailCellPixels * j) + kHalfCell) * pixelToWall_.y);
+      const auto at = static_cast<std::size_t>(nodeCount + j * cellsAcross_ + i);
+      wallX[at] = (static_cast<float>(x0_ + kTailCellPixels * i) + kHalfCell) * pixelToWall_.x;
+      wallY[at] = (static_cast<float>(y0_ + kTailCellPixels * j) + kHalfCell) * pixelToWall_.y;
     }
-  const int total = nodeCount + cellCount;
-  std::vector<Point> points(static_cast<std::size_t>(total));
-  for (int first = 0; first < total; first += kPacketSize) {
-    const int count = std::min(kPacketSize, total - first);
-    alignas(32) Lanes px, py;
-    for (int lane = 0; lane < kPacketSize; ++lane) {
-      const auto at = static_cast<std::size_t>(first + std::min(lane, count - 1));
-      px[lane] = wallX[at], py[lane] = wallY[at];
-    }
+  for (int at = total; at < padded; ++at)
+    wallX[static_cast<std::size_t>(at)] = wallX[static_cast<std::size_t>(total - 1)],
+    wallY[static_cast<std::size_t>(at)] = wallY[static_cast<std::size_t>(total - 1)];
+  // The exact tails there, structure of arrays: unit direction D, the start's offset across it
+  // O = S - (S.D) D, the physical ray's direction u, the eye's distance h across it, |S|, |O|.
+  enum Field { kDx, kDy, kDz, kOx, kOy, kOz, kUx, kUy, kUz, kH, kStart, kOffset, kFields };
+  std::vector<float> fields(static_cast<std::size_t>(kFields * padded));
+  const auto field = [&](int f) { return fields.data() + static_cast<std::size_t>(f * padded); };
+  for (int first = 0; first < padded; first += kPacketSize) {
     CameraRays::TailGeometry geometry;
     alignas(32) std::array<float, 6 * kPacketSize> tails;
-    rays_.tailsAt(px.data(), py.data(), count, geometry, tails.data());
-    for (int lane = 0; lane < count; ++lane) {
-      const auto component = [&](int k) { return tails[static_cast<std::size_t>(k * kPacketSize + lane)]; };
-      Point& point = points[static_cast<std::size_t>(first + lane)];
-      point.direction = {component(0), component(1), component(2)};
-      const glm::vec3 start(component(3), component(4), component(5));
-      point.offset = start - glm::dot(start, point.direction) * point.direction;
-      point.u = {geometry.ux[lane], geometry.uy[lane], geometry.uz[lane]};
-      point.h = geometry.h[lane];
-      point.lastDistance = geometry.lastDistance[lane];
+    rays_.tailsAt(&wallX[static_cast<std::size_t>(first)], &wallY[static_cast<std::size_t>(first)],
+                  std::min(kPacketSize, total - first), geometry, tails.data());
+    const auto component = [&](int k, int lane) {
+      return tails[static_cast<std::size_t>(k * kPacketSize + lane)];
+    };
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      const float dx = component(0, lane), dy = component(1, lane), dz = component(2, lane);
+      const float sx = component(3, lane), sy = component(4, lane), sz = component(5, lane);
+      const float along = sx * dx + sy * dy + sz * dz;
+      const float ox = sx - along * dx, oy = sy - along * dy, oz = sz - along * dz;
+      const int at = first + lane;
+      field(kDx)[at] = dx, field(kDy)[at] = dy, field(kDz)[at] = dz;
+      field(kOx)[at] = ox, field(kOy)[at] = oy, field(kOz)[at] = oz;
+      field(kUx)[at] = geometry.ux[lane], field(kUy)[at] = geometry.uy[lane];
+      field(kUz)[at] = geometry.uz[lane], field(kH)[at] = geometry.h[lane];
+      field(kStart)[at] = std::sqrt(sx * sx + sy * sy + sz * sz);
+      field(kOffset)[at] = std::sqrt(ox * ox + oy * oy + oz * oz);
     }
   }
-  nodes_.assign(points.begin(), points.begin() + nodeCount);
+  const float* dX = field(kDx); const float* dY = field(kDy); const float* dZ = field(kDz);
+  const float* oX = field(kOx); const float* oY = field(kOy); const float* oZ = field(kOz);
+  const float* uX = field(kUx); const float* uY = field(kUy); const float* uZ = field(kUz);
+  const float* hs = field(kH); const float* starts = field(kStart); const float* offsets = field(kOffset);
   pass_.assign(static_cast<std::size_t>(cellCount), 0);
   lit_.assign(static_cast<std::size_t>(cellCount), 0);
-  reach_.assign(static_cast<std::size_t>(cellCount), 0.0f);
+  cells_.assign(static_cast<std::size_t>(cellCount), TailCell{});
   const glm::vec3 eye = rays_.eyeFromCentre();
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
   const float tanAsymptote = static_cast<float>(std::tan(kAsymptoteAngle));
   // The lattice's second differences along x and y at every node with both neighbours in the
   // tile, once per node (each serves up to four cells): the turn's and the shift's lengths, which
-  // a cell weighs by its own reach.
-  struct Second {
-    float turn = 0.0f, shift = 0.0f;
-    bool seen = false;  // the node has both neighbours along the axis
+  // a cell weighs by its own reach; a negative turn where the node lacks a neighbour.
+  std::vector<float> seconds(static_cast<std::size_t>(4 * nodeCount), -1.0f);
+  float* turnX = seconds.data();
+  float* shiftX = turnX + nodeCount;
+  float* turnY = shiftX + nodeCount;
+  float* shiftY = turnY + nodeCount;
+  const auto second = [&](int before, int at, int after, float& turn, float& shift) {
+    const auto length = [&](const float* x, const float* y, const float* z) {
+      const float ex = x[before] - 2.0f * x[at] + x[after];
+      const float ey = y[before] - 2.0f * y[at] + y[after];
+      const float ez = z[before] - 2.0f * z[at] + z[after];
+      return std::sqrt(ex * ex + ey * ey + ez * ez);
+    };
+    turn = length(dX, dY, dZ);
+    shift = length(oX, oY, oZ);
   };
-  std::vector<std::array<Second, 2>> seconds(static_cast<std::size_t>(nodeCount));
   for (int nj = 0; nj < down; ++nj)
-    for (int ni = 0; ni < across; ++ni)
-      for (int axis = 0; axis < 2; ++axis) {
-        const int di = axis == 0 ? 1 : 0, dj = 1 - di;
-        if (ni - di < 0 || nj - dj < 0 || ni + di >= across || nj + dj >= down) continue;
-        const Point& before = nodes_[static_cast<std::size_t>((nj - dj) * across + ni - di)];
-        const Point& at = nodes_[static_cast<std::size_t>(nj * across + ni)];
-        const Point& after = nodes_[static_cast<std::size_t>((nj + dj) * across + ni + di)];
-        Second& second = seconds[static_cast<std::size_t>(nj * across + ni)][axis];
-        second.turn = glm::length(before.direction - 2.0f * at.direction + after.direction);
-        second.shift = glm::length(before.offset - 2.0f * at.offset + after.offset);
-        second.seen = true;
-      }
+    for (int ni = 0; ni < across; ++ni) {
+      const int n = nj * across + ni;
+      if (ni > 0 && ni + 1 < across) second(n - 1, n, n + 1, turnX[n], shiftX[n]);
+      if (nj > 0 && nj + 1 < down) second(n - across, n, n + across, turnY[n], shiftY[n]);
+    }
   // One output pixel's angle (across the ray, the smaller of across and down), the smallest at
   // the tile's corners: it changes by a few per cent over a tile and peaks where the wall is
   // nearest the eye, so that no point of the tile sees a smaller one.
@@ -119,74 +144,101 @@ void TailLattice::build() {
   const float pixelAngle =
       std::min(std::min(pixelAngleAt(tileLeft, tileTop), pixelAngleAt(tileRight, tileTop)),
                std::min(pixelAngleAt(tileLeft, tileBottom), pixelAngleAt(tileRight, tileBottom)));
+  const bool everyCell = std::isinf(tolerancePixels_);
+  const float bound = tolerancePixels_ * pixelAngle;
+  constexpr float kInfinity = std::numeric_limits<float>::infinity();
+  // The check, cell by cell along each row (structure of arrays: the row's loop vectorises).
+  std::vector<float> cellAlong(static_cast<std::size_t>(cellCount)), cellReach(cellAlong.size());
+  for (int j = 0; j < cellsDown_; ++j) {
+    const int row = j * across;  // the node at the row's first cell's top-left corner
+    const int firstCell = j * cellsAcross_;
+    for (int i = 0; i < cellsAcross_; ++i) {
+      const int corners[4] = {row + i, row + i + 1, row + across + i, row + across + i + 1};
+      const int centre = nodeCount + firstCell + i;
+      float directionX = 0.0f, directionY = 0.0f, directionZ = 0.0f;
+      float offsetX = 0.0f, offsetY = 0.0f, offsetZ = 0.0f;
+      float nearestStart = kInfinity, widestOffset = 0.0f;
+      float chordSquared = 0.0f;  // the cell's angular radius from the eye, squared (farthest corner)
+      for (int n : corners) {
+        directionX += 0.25f * dX[n], directionY += 0.25f * dY[n], directionZ += 0.25f * dZ[n];
+        offsetX += 0.25f * oX[n], offsetY += 0.25f * oY[n], offsetZ += 0.25f * oZ[n];
+        nearestStart = std::min(nearestStart, starts[n]);
+        widestOffset = std::max(widestOffset, offsets[n]);
+        const float cx = uX[n] - uX[centre], cy = uY[n] - uY[centre], cz = uZ[n] - uZ[centre];
+        chordSquared = std::max(chordSquared, cx * cx + cy * cy + cz * cz);
+      }
+      // h = |e - c| sin(angle(u, e - c)) is 1-Lipschitz in the angle between rays times |e - c|:
+      // within the cell it lies within `spread` of the centre's (the angle from the chord).
+      const float spread = eyeDistance * 2.0f * asinAbove(0.5f * std::sqrt(chordSquared));
+      const float h = hs[centre];
+      // The smallest reach in the cell (what the check weighs the offsets' error by) and the
+      // largest (what the cell's samples report: CameraRays::exactTails' reach bounded above,
+      // 1.0001 |e - c| at least as there, so that a packet is straight only where every curve
+      // of it bends inside the empty ball).
+      const float reach = std::max(eyeDistance, (h - spread) / sinAsymptote);
+      cellReach[static_cast<std::size_t>(firstCell + i)] =
+          1.0001f * std::max(eyeDistance, 1.00001f * (h + spread) / sinAsymptote);
+      // How far along its blended line each sample starts from the blended offset O: by the
+      // triangle inequality the start lies within |O| + along <= the corners' largest |O| +
+      // along = their nearest start of c, inside the cell's reach (no nearer the scene than
+      // the curves' own starts); a per-mille margin for rounding. Starting at O itself, a few
+      // cm from c, would make Embree cross the scene's bounding boxes from inside (about 10 %
+      // slower).
+      cellAlong[static_cast<std::size_t>(firstCell + i)] =
+          0.999f * std::max(0.0f, nearestStart - widestOffset);
+      // A sample on a line through c (h <= along tan(asymptote), along <= |e - c|) needs its
+      // whole curve traced (infinite reach): a cell that may hold one is not interpolated.
+      const bool offLine = h - spread > 1.01f * eyeDistance * tanAsymptote;
+      // The line's angular error: the turn plus the offset's shift over the nearest hit, at the
+      // centre; and from the lattice's second differences along each axis (the bilinear
+      // blend's error is at most (|f_xx| + |f_yy|) / 8 in cell units, which the centre alone
+      // misses where the two cancel, a saddle): at the cell's corners' nodes that have both
+      // neighbours in the tile. A cell with none along an axis (a tile one cell wide) is not
+      // interpolated.
+      const float inverseLength = 1.0f / std::sqrt(directionX * directionX +
+                                                   directionY * directionY + directionZ * directionZ);
+      const float turnX0 = directionX * inverseLength - dX[centre];
+      const float turnY0 = directionY * inverseLength - dY[centre];
+      const float turnZ0 = directionZ * inverseLength - dZ[centre];
+      const float shiftX0 = offsetX - oX[centre], shiftY0 = offsetY - oY[centre];
+      const float shiftZ0 = offsetZ - oZ[centre];
+      const float atCentre = std::sqrt(turnX0 * turnX0 + turnY0 * turnY0 + turnZ0 * turnZ0) +
+                             std::sqrt(shiftX0 * shiftX0 + shiftY0 * shiftY0 + shiftZ0 * shiftZ0) / reach;
+      float alongX = -1.0f, alongY = -1.0f;  // negative: no node with both neighbours
+      for (int n : corners) {
+        alongX = std::max(alongX, turnX[n] < 0.0f ? -1.0f : turnX[n] + shiftX[n] / reach);
+        alongY = std::max(alongY, turnY[n] < 0.0f ? -1.0f : turnY[n] + shiftY[n] / reach);
+      }
+      const float error =
+          std::max(atCentre, alongX >= 0.0f && alongY >= 0.0f ? 0.125f * (alongX + alongY) : kInfinity);
+      pass_[static_cast<std::size_t>(firstCell + i)] =
+          everyCell || (offLine && error <= bound) ? 1 : 0;
+    }
+  }
   // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
   // no lookup per sample (an override's alpha is its rays', not the wall pixel's); the whole
-  // tile asked first.
+  // tile asked first. And each cell's blend record (tail_blend.hpp).
   const WallMapGrid* grid = rays_.overridden() ? nullptr : rays_.mapGrid();
   const bool tileLit = grid && grid->litThroughout(tileLeft, tileTop, tileRight, tileBottom);
   for (int cell = 0; cell < cellCount; ++cell) {
     const int i = cell % cellsAcross_, j = cell / cellsAcross_;
-    const Point& centre = points[static_cast<std::size_t>(nodeCount + cell)];
-    const std::array<int, 4> cornerNodes = {j * across + i, j * across + i + 1,
-                                            (j + 1) * across + i, (j + 1) * across + i + 1};
-    glm::vec3 direction(0.0f), offset(0.0f);
-    float chordSquared = 0.0f;  // the cell's angular radius from the eye, squared (farthest corner)
-    for (int node : cornerNodes) {
-      const Point& corner = nodes_[static_cast<std::size_t>(node)];
-      direction += 0.25f * corner.direction;
-      offset += 0.25f * corner.offset;
-      const glm::vec3 chord = corner.u - centre.u;
-      chordSquared = std::max(chordSquared, glm::dot(chord, chord));
+    const int corners[4] = {j * across + i, j * across + i + 1, (j + 1) * across + i,
+                            (j + 1) * across + i + 1};
+    TailCell& blend = cells_[static_cast<std::size_t>(cell)];
+    for (std::size_t k = 0; k < 4; ++k) {
+      const int n = corners[k];
+      blend.corners[k] = {dX[n], dY[n], dZ[n], oX[n], oY[n], oZ[n]};
     }
-    // h = |e - c| sin(angle(u, e - c)) is 1-Lipschitz in the angle between rays times |e - c|:
-    // within the cell it lies within `spread` of the centre's (the angle from the chord; a
-    // relative margin for float rounding).
-    const float angularRadius = 2.0f * std::asin(std::min(1.0f, 0.5f * std::sqrt(chordSquared)));
-    const float spread = eyeDistance * angularRadius;
-    // The smallest reach in the cell (what the check weighs the offsets' error by) and the
-    // largest (what the cell's samples report: CameraRays::exactTails' reach bounded above,
-    // 1.0001 |e - c| at least as there, so that a packet is straight only where every curve of
-    // it bends inside the empty ball).
-    const float reach = std::max(eyeDistance, (centre.h - spread) / sinAsymptote);
-    reach_[static_cast<std::size_t>(cell)] =
-        1.0001f * std::max(eyeDistance, 1.00001f * (centre.h + spread) / sinAsymptote);
-    // A sample on a line through c (h <= along tan(asymptote), along <= |e - c|) needs its whole
-    // curve traced (infinite reach): a cell that may hold one is not interpolated.
-    const bool offLine = centre.h - spread > 1.01f * eyeDistance * tanAsymptote;
-    // The line's angular error: the turn plus the offset's shift over the nearest hit.
-    const auto angle = [reach](const glm::vec3& turn, const glm::vec3& shift) {
-      return glm::length(turn) + glm::length(shift) / reach;
-    };
-    // At the centre; and from the lattice's second differences along each axis (the bilinear
-    // blend's error is at most (|f_xx| + |f_yy|) / 8 in cell units, which the centre alone
-    // misses where the two cancel, a saddle): at the cell's corners' nodes that have both
-    // neighbours in the tile. A cell with none along an axis (a tile one cell wide) is not
-    // interpolated.
-    float alongX = 0.0f, alongY = 0.0f;
-    bool seenX = false, seenY = false;
-    for (int node : cornerNodes) {
-      const std::array<Second, 2>& second = seconds[static_cast<std::size_t>(node)];
-      if (second[0].seen) {
-        seenX = true;
-        alongX = std::max(alongX, second[0].turn + second[0].shift / reach);
-      }
-      if (second[1].seen) {
-        seenY = true;
-        alongY = std::max(alongY, second[1].turn + second[1].shift / reach);
-      }
-    }
-    const float error =
-        std::max(angle(glm::normalize(direction) - centre.direction, offset - centre.offset),
-                 seenX && seenY ? 0.125f * (alongX + alongY)
-                                : std::numeric_limits<float>::infinity());
     const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
     const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
+    blend.left = left, blend.top = top;
+    blend.perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
+    blend.perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
+    blend.reach = cellReach[static_cast<std::size_t>(cell)];
+    blend.along = cellAlong[static_cast<std::size_t>(cell)];
     lit_[static_cast<std::size_t>(cell)] =
         tileLit || (grid && grid->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
                                                 top + kTailCellPixels * pixelToWall_.y));
-    pass_[static_cast<std::size_t>(cell)] =
-        std::isinf(tolerancePixels_) || (offLine && error <= tolerancePixels_ * pixelAngle) ? 1
-                                                                                         : 0;
   }
 }
 
@@ -201,63 +253,12 @@ float TailLattice::tails(const PacketSamples& samples, const float* px, const fl
   if (!interpolated(samples.x, samples.y))
     return rays_.exactTails(px, py, samples.count, run, reach);
   const int cell = cellIndex(samples.x, samples.y);
-  const int i = cell % cellsAcross_, j = cell / cellsAcross_, across = cellsAcross_ + 1;
-  const Point& p00 = nodes_[static_cast<std::size_t>(j * across + i)];
-  const Point& p10 = nodes_[static_cast<std::size_t>(j * across + i + 1)];
-  const Point& p01 = nodes_[static_cast<std::size_t>((j + 1) * across + i)];
-  const Point& p11 = nodes_[static_cast<std::size_t>((j + 1) * across + i + 1)];
-  const float left = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
-  const float top = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
-  const float perX = 1.0f / (kTailCellPixels * pixelToWall_.x);
-  const float perY = 1.0f / (kTailCellPixels * pixelToWall_.y);
-  alignas(32) Lanes alpha;
+  const TailCell& corners = cells_[static_cast<std::size_t>(cell)];
   if (lit_[static_cast<std::size_t>(cell)])
-    for (int lane = 0; lane < kPacketSize; ++lane) alpha[lane] = lane < samples.count ? 1.0f : 0.0f;
-  else
-    rays_.pixelAlpha(px, py, samples.count, alpha.data());
-  // Every lane's reach: the cell's bound (build); its last vertex's distance from c blended as
-  // the tails are (where the packet is straight, the start lies inside the empty ball either way,
-  // on the same line: the same hits).
-  alignas(32) Lanes laneReach;
-  laneReach.fill(reach_[static_cast<std::size_t>(cell)]);
-  // The corners' six components as scalars and the positions in locals (the loop vectorises).
-  float node[4][7];
-  const std::array<const Point*, 4> corners = {&p00, &p10, &p01, &p11};
-  for (int k = 0; k < 4; ++k) {
-    for (int component = 0; component < 3; ++component) {
-      node[k][component] = corners[static_cast<std::size_t>(k)]->direction[component];
-      node[k][3 + component] = corners[static_cast<std::size_t>(k)]->offset[component];
-    }
-    node[k][6] = corners[static_cast<std::size_t>(k)]->lastDistance;
-  }
-  alignas(32) Lanes positionX, positionY;
-  std::memcpy(positionX.data(), px, sizeof positionX);
-  std::memcpy(positionY.data(), py, sizeof positionY);
-  alignas(32) std::array<float, 6 * kPacketSize> tails;
-  for (int lane = 0; lane < kPacketSize; ++lane) {
-    const float tx = (positionX[lane] - left) * perX, ty = (positionY[lane] - top) * perY;
-    const float w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
-    const float w01 = (1.0f - tx) * ty, w11 = tx * ty;
-    float blended[7];
-    for (int component = 0; component < 7; ++component)
-      blended[component] = w00 * node[0][component] + w10 * node[1][component] +
-                           w01 * node[2][component] + w11 * node[3][component];
-    const float inverseLength = 1.0f / std::sqrt(blended[0] * blended[0] +
-                                                 blended[1] * blended[1] + blended[2] * blended[2]);
-    const float dx = blended[0] * inverseLength, dy = blended[1] * inverseLength;
-    const float dz = blended[2] * inverseLength;
-    const float ox = blended[3], oy = blended[4], oz = blended[5];
-    // The start on the interpolated line at the sample's own |W(last)| = |last| from c.
-    const float distance = blended[6];
-    const float along = std::sqrt(std::max(0.0f, distance * distance - (ox * ox + oy * oy + oz * oz)));
-    tails[lane] = dx;
-    tails[kPacketSize + lane] = dy;
-    tails[2 * kPacketSize + lane] = dz;
-    tails[3 * kPacketSize + lane] = ox + along * dx;
-    tails[4 * kPacketSize + lane] = oy + along * dy;
-    tails[5 * kPacketSize + lane] = oz + along * dz;
-  }
-  return CameraRays::maskTails(alpha.data(), laneReach.data(), tails.data(), run, reach);
+    return blendTails(simd_, corners, px, py, nullptr, samples.count, run, reach);
+  alignas(32) Lanes alpha;
+  rays_.pixelAlpha(px, py, samples.count, alpha.data());
+  return blendTails(simd_, corners, px, py, alpha.data(), samples.count, run, reach);
 }
 
 }  // namespace confvis::embree

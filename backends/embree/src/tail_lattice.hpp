@@ -11,12 +11,12 @@
 //
 // What is interpolated is what decides the traced line: the unit direction D and the start's
 // offset across it, O = S - (S.D) D (about J_F(u) (e - c)_perp: smooth, where S itself spins
-// with the eye's offset across the ray). Each sample's start is rebuilt on its own line at the
-// blended distance of the corners' last vertices from c (|W(last)| = |last|, W keeps distances
-// to c), and every sample of the cell reports the cell's largest reach (from the centre's h
+// with the eye's offset across the ray). Each sample starts on its own line at O + along D, one
+// `along` a cell that keeps the start within the corners' nearest |S| of c (tail_blend.hpp),
+// and every sample of the cell reports the cell's largest reach (from the centre's h
 // plus the cell's angular radius times |e - c|; no closed form per sample): a packet is traced
 // as straight tails only where that bound lies inside the empty ball, and there the true start
-// and the rebuilt one lie on the same line inside the ball, which holds no hit. Cells that may
+// and the blended one lie on the same line inside the ball, which holds no hit. Cells that may
 // hold a sample on a line through c (infinite reach) are not interpolated. A line moved by dO
 // and turned by dD
 // moves a hit at distance r from c by about |dO| / r + |dD| in angle, and every hit a tail
@@ -30,6 +30,8 @@
 
 #include "camera_packet.hpp"
 #include "camera_rays.hpp"
+#include "surface_shading.hpp"
+#include "tail_blend.hpp"
 #include "tile_renderer.hpp"
 
 namespace confvis::embree {
@@ -55,10 +57,6 @@ class TailLattice {
   bool interpolated(int x, int y);
 
  private:
-  struct Point {  // the exact tail at one wall position, with what the check needs
-    glm::vec3 direction{0.0f}, offset{0.0f}, u{0.0f};
-    float h = 0.0f, lastDistance = 0.0f;
-  };
   void build();
   int cellIndex(int x, int y) const {
     return ((y - y0_) / kTailCellPixels) * cellsAcross_ + (x - x0_) / kTailCellPixels;
@@ -68,12 +66,14 @@ class TailLattice {
   glm::vec2 pixelToWall_{1.0f};
   int x0_ = 0, y0_ = 0, cellsAcross_ = 0, cellsDown_ = 0;
   float tolerancePixels_ = kTailTolerancePixels;
+  SimdLevel simd_ = SimdLevel::Sse2;  // which variant of the blend runs (tail_blend.hpp)
   bool usable_ = false;  // tiles aligned to whole cells only
   bool built_ = false;
-  std::vector<Point> nodes_;  // (cellsAcross + 1) x (cellsDown + 1) cell corners, row by row
   std::vector<char> pass_;    // per cell: interpolated
   std::vector<char> lit_;     // per cell: every sample lit (WallMapGrid::litThroughout)
-  std::vector<float> reach_;  // per cell: an upper bound of its samples' reach (exactTails')
+  // per cell: its corners, place, an upper bound of its samples' reach (exactTails') and how far
+  // along their lines they start, for the blend
+  std::vector<TailCell> cells_;
 };
 
 }  // namespace confvis::embree
