@@ -11,11 +11,12 @@
 
 #include <mpi.h>
 
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/runtime/cluster.hpp"
 
 using namespace confvis;
-using Clock = std::chrono::steady_clock;
+using Clock = SteadyClock;
 
 namespace {
 
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
         state.mapGeneration = generation;
         cluster.exchangeFrame(state);
         cluster.swapLock();
-        seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+        seconds.push_back(secondsSince(start));
       }
       if (cluster.isRoot())
         std::printf("ranks %d: map %4d texels/face (%.0f MB) to every rank: %.1f ms (best of 3)\n",

@@ -26,18 +26,17 @@
 #include <string>
 #include <vector>
 
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/distortion.hpp"
 #include "confvis/conformal/mesh_generators.hpp"
 
 using namespace confvis::conformal;
-using Clock = std::chrono::steady_clock;
+using confvis::SteadyClock;
+using confvis::secondsSince;
 
 namespace {
 
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // CPU time of the whole process (all threads): steadier than wall time on a shared machine,
 // where other jobs take the cores away at random.
@@ -89,7 +88,7 @@ Eigen::SparseMatrix<double> pinnedCotangentLaplacian(const TriMesh& mesh) {
 // One sparse Cholesky: Eigen's simplicial LDLᵀ, symbolic analysis (AMD ordering) + numeric
 // factorisation — the same factorisation the flow uses.
 void timeCholesky(const Eigen::SparseMatrix<double>& L, Timing& best) {
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   const double cpuStart = processCpuSeconds();
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> solver;
   solver.analyzePattern(L);
@@ -251,7 +250,7 @@ int main(int argc, char** argv) {
         if (!result.failure.empty()) continue;
         try {
           resetPeakMemory();
-          const auto start = Clock::now();
+          const auto start = SteadyClock::now();
           const double cpuStart = processCpuSeconds();
           DiskMap map = computeDiskMap(mesh, options);
           const double seconds = secondsSince(start);

@@ -1,21 +1,12 @@
 #include "image_based_retarget.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include <tbb/parallel_for.h>
 
+#include "confvis/base/stopwatch.hpp"
 
 namespace confvis::bench {
-
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-
-}  // namespace
 
 DisplayConfig cubeFaceDisplay(int faceSize, const glm::dvec3& reference) {
   DisplayConfig cube;
@@ -58,13 +49,13 @@ std::vector<WallImage> renderImageBased(RenderBackend& backend, const DisplayCon
   cubeSettings.mode = RenderMode::Plain;
   cubeSettings.head.position = config.reference;
   cubeSettings.camera.position = config.reference;
-  auto start = std::chrono::steady_clock::now();
+  auto start = SteadyClock::now();
   const RenderResult faces = backend.render(cubeDisplay, nullptr, cubeSettings);
   CubeMap cube(faceSize);
   for (std::size_t f = 0; f < 6; ++f) cube.faces[f] = faces.images[f].image;
   timings.cubeSeconds = secondsSince(start);
 
-  start = std::chrono::steady_clock::now();
+  start = SteadyClock::now();
   std::vector<WallImage> images;
   for (std::size_t w = 0; w < config.walls.size(); ++w) {
     const Wall& wall = config.walls[w];

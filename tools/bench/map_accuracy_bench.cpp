@@ -36,6 +36,7 @@
 
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/bake.hpp"
 #include "confvis/conformal/bake_preset.hpp"
 #include "confvis/conformal/display_map.hpp"
@@ -44,7 +45,6 @@
 #include "confvis/engine/display_config.hpp"
 
 using namespace confvis;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
@@ -135,7 +135,7 @@ DisplayMap referenceMap(const DisplayConfig& config, DisplayMapRoute route,
       // recompute below
     }
   }
-  const auto start = Clock::now();
+  const auto start = SteadyClock::now();
   DisplayMapOptions options;
   options.edgeLength = edge;
   options.route = route;
@@ -143,7 +143,7 @@ DisplayMap referenceMap(const DisplayConfig& config, DisplayMapRoute route,
   DisplayMap map = computeDisplayMap(config, options);
   std::fprintf(stderr, "  reference %s %.4f m: %zu + %zu vertices, %.1f s\n", routeName.c_str(),
                edge, map.source.sphere.size(), map.target.sphere.size(),
-               std::chrono::duration<double>(Clock::now() - start).count());
+               secondsSince(start));
   writeTextAtomically(path, serialize(map));
   return map;
 }
@@ -319,11 +319,11 @@ int main(int argc, char** argv) {
           bake.threads = threads;
           bake.interpolation = interpolation;
           for (int r = 0; r < std::max(1, repeat); ++r) {
-            const auto start = Clock::now();
+            const auto start = SteadyClock::now();
             const double cpuStart = processCpuSeconds();
             map = computeDisplayMap(config, options);
             bakeRetargetMapInto(map, config.cubeResolution, bake, baked);
-            times.push_back(std::chrono::duration<double>(Clock::now() - start).count() * 1e3);
+            times.push_back(secondsSince(start) * 1e3);
             cpu.push_back((processCpuSeconds() - cpuStart) * 1e3);
           }
           const std::string taken = map.stats["source"]["route"].get<std::string>() + "/" +

@@ -10,6 +10,7 @@
 
 #include "../../backends/embree/src/affine_directions.hpp"
 #include "../../backends/embree/src/camera_packet.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/backends/wall_map_grid.hpp"
 #include "confvis/engine/view.hpp"
 
@@ -80,7 +81,7 @@ template <typename TraceTile>
 RawLoopResult forEachTile(const DisplayConfig& config, double scale, TraceTile traceTile) {
   constexpr int kTile = 16;  // the renderer's default tile (EmbreeOptions::tileSize)
   std::atomic<std::uint64_t> rays{0}, hits{0};
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   for (std::size_t w = 0; w < config.walls.size(); ++w) {
     const WallRays wallRays = raysOfWall(config, w, scale);
     const int across = (wallRays.width + kTile - 1) / kTile;
@@ -100,7 +101,7 @@ RawLoopResult forEachTile(const DisplayConfig& config, double scale, TraceTile t
     });
   }
   return {rays.load(), hits.load(),
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+          secondsSince(start)};
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "confvis/backends/retarget_map_files.hpp"
 #include "confvis/base/atomic_file.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/display_template.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
 #include "confvis/engine/scene_loader.hpp"
@@ -32,10 +33,6 @@
 using namespace confvis;
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 double cpuSeconds() {
   timespec t{};
@@ -47,7 +44,7 @@ double cpuSeconds() {
 double bestSeconds(int repeats, const std::function<void()>& f) {
   double best = 1e30;
   for (int i = 0; i < repeats; ++i) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = SteadyClock::now();
     f();
     best = std::min(best, secondsSince(start));
   }
@@ -119,7 +116,7 @@ StereoSeconds stereoFigures(EmbreeBackend& backend, const DisplayConfig& config,
   backend.renderInto(config, nullptr, plainStereo, plainFrame);
   StereoSeconds best;
   const auto timed = [](double& seconds, const std::function<void()>& f) {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = SteadyClock::now();
     f();
     seconds = std::min(seconds, secondsSince(start));
   };
@@ -262,12 +259,12 @@ int main(int argc, char** argv) {
       double cpu = cpuSeconds();
       const RenderResult fresh = backend.render(config, nullptr, plain);
       freshPlainCpu = std::min(freshPlainCpu, cpuSeconds() - cpu);
-      auto start = std::chrono::steady_clock::now();
+      auto start = SteadyClock::now();
       cpu = cpuSeconds();
       backend.renderInto(config, nullptr, plain, plainResult);
       plainSeconds = std::min(plainSeconds, secondsSince(start));
       plainCpu = std::min(plainCpu, cpuSeconds() - cpu);
-      start = std::chrono::steady_clock::now();
+      start = SteadyClock::now();
       cpu = cpuSeconds();
       backend.renderInto(config, &map, conformal, conformalResult);
       conformalSeconds = std::min(conformalSeconds, secondsSince(start));
@@ -340,7 +337,7 @@ int main(int argc, char** argv) {
     // direction table built on the second (the warm-up render counts as the first).
     EmbreeBackend freshBackend;
     freshBackend.setScene(scene);
-    const auto firstStart = std::chrono::steady_clock::now();
+    const auto firstStart = SteadyClock::now();
     const RenderResult firstFrame = freshBackend.render(config, &map, conformal);
     const double firstFrameSeconds = secondsSince(firstStart);
     const RenderResult secondFrame = freshBackend.render(config, &map, conformal);
@@ -385,7 +382,7 @@ int main(int argc, char** argv) {
     // Sharpness against a 16-spp reference, at equal output resolution.
     RenderSettings reference = conformal;
     reference.samplesPerPixel = 16;
-    const auto referenceStart = std::chrono::steady_clock::now();
+    const auto referenceStart = SteadyClock::now();
     const RenderResult referenceResult = backend.render(config, &map, reference);
     const double referenceSeconds = secondsSince(referenceStart);
     const double directPsnr = psnr(conformalResult.images, referenceResult.images);

@@ -18,6 +18,7 @@
 #include "confvis/backends/embree/embree_scene.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "tile_renderer.hpp"
 
 namespace confvis {
@@ -91,7 +92,7 @@ struct EmbreeBackend::Impl {
       for (auto& [k, other] : tables) other.table.reset();
       tableBytes = 0;
     }
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = SteadyClock::now();
     if (centre) {
       entry.table = std::make_unique<embree::DirectionTable>(grid, job);
     } else if (withOrigins) {
@@ -105,7 +106,7 @@ struct EmbreeBackend::Impl {
           },
           false);
     }
-    buildSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    buildSeconds += secondsSince(start);
     tableBytes += entry.table->bytes();
     return entry.table.get();
   }
@@ -186,7 +187,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
   std::optional<ConformalWarp> warp;
   std::uint64_t mapFingerprint = 0;
   ++impl_->renders;
-  const auto setupStart = std::chrono::steady_clock::now();
+  const auto setupStart = SteadyClock::now();
   if (settings.mode == RenderMode::Conformal) {
     warp.emplace(*map);
     mapFingerprint = warp->fingerprint();
@@ -194,7 +195,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
       impl_->wallGrid(*warp, mapFingerprint, *image.view.wall, settings.resolutionScale);
   }
   double mapBuildSeconds =  // a plain frame builds no map tables
-      warp ? std::chrono::duration<double>(std::chrono::steady_clock::now() - setupStart).count()
+      warp ? secondsSince(setupStart)
            : 0.0;
   std::uint64_t tableSamples = 0;  // camera samples whose map direction came from a table
   double tableBuildSeconds = 0.0;  // inside the render loop, but not rendering
@@ -224,7 +225,7 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
 
   embree::RayCounters counters;
   EmbreeFrameStats stats;
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   for (std::size_t i = 0; i < plan.images.size(); ++i) {
     const PlannedImage& planned = plan.images[i];
     const Wall& wall = *planned.view.wall;
@@ -269,15 +270,15 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
     if (i < previous.size()) out.image = std::move(previous[i].image);
     out.wall = planned.view.wall->name;
     out.eye = planned.eye;
-    const auto imageStart = std::chrono::steady_clock::now();
+    const auto imageStart = SteadyClock::now();
     embree::renderTiles(scene, rays, job, out.image, progress, counters);
     const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - imageStart).count();
+        secondsSince(imageStart);
     stats.images.push_back({out.wall, out.eye, job.width, job.height, seconds});
     result.images.push_back(std::move(out));
   }
   const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() -
+      secondsSince(start) -
       tableBuildSeconds;
   mapBuildSeconds += tableBuildSeconds;
   impl_->dropIdleEntries();

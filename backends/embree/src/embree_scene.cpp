@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "confvis/base/error.hpp"
+#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 
@@ -39,7 +40,7 @@ void attachMesh(EmbreeDevice& device, RTCScene scene, const Mesh& mesh, unsigned
 EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(scene) {
   validateScene(source_);
   buildShadingRecords();
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = SteadyClock::now();
   nativeRay16_ = rtcGetDeviceProperty(device.handle(), RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED) != 0;
   scene_ = rtcNewScene(device.handle());
   try {
@@ -59,7 +60,7 @@ EmbreeScene::EmbreeScene(EmbreeDevice& device, const Scene& scene) : source_(sce
     throw;
   }
   buildSeconds_ =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      secondsSince(start);
   const Bounds box = source_.bounds();
   diagonal_ = box.empty() ? 0.0 : glm::length(glm::dvec3(box.max - box.min));
 }
