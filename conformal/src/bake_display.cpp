@@ -27,8 +27,8 @@ DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplay
   return parseDisplayConfig(json, source);
 }
 
-DisplayMapOptions bakeMapOptions(const BakeDisplayOptions& options) {
-  const BakePresetSettings preset = presetSettings(options.preset);
+DisplayMapOptions bakeMapOptions(const DisplayConfig& config, const BakeDisplayOptions& options) {
+  const BakePresetSettings preset = presetSettings(options.preset, config);
   DisplayMapOptions map;
   map.route = options.route.value_or(preset.route);
   map.grading = options.grading.value_or(preset.grading);
@@ -40,8 +40,8 @@ MapInterpolation bakeInterpolation(const BakeDisplayOptions& options) {
   return options.interpolation.value_or(presetSettings(options.preset).interpolation);
 }
 
-nlohmann::json bakeMapSettings(const BakeDisplayOptions& options) {
-  const DisplayMapOptions map = bakeMapOptions(options);
+nlohmann::json bakeMapSettings(const DisplayConfig& config, const BakeDisplayOptions& options) {
+  const DisplayMapOptions map = bakeMapOptions(config, options);
   return mapSettingsJson(map.route, map.grading, bakeInterpolation(options));
 }
 
@@ -69,7 +69,7 @@ BakedDisplay bakeDisplayWith(const DisplayConfig& config, const BakeDisplayOptio
                              const DisplayMapSource& computeMap) {
   BakedDisplay result;
   result.config = effectiveBakeConfig(config, options);
-  const nlohmann::json mapSettings = bakeMapSettings(options);
+  const nlohmann::json mapSettings = bakeMapSettings(result.config, options);
   if (options.useCache) {
     const std::filesystem::path directory =
         options.cacheDirectory.empty() ? defaultCacheDirectory() : options.cacheDirectory;

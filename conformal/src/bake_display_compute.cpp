@@ -90,7 +90,7 @@ SourcedDisplayMap computeCheckedDisplayMap(const DisplayConfig& effective,
     if (plan[k].hemisphere) config.source = SourceField::Hemisphere;
     DisplayMap map;
     try {
-      map = computeDisplayMap(config, bakeMapOptions(options));  // the preset's route, grading
+      map = computeDisplayMap(config, bakeMapOptions(effective, options));  // route, grading
     } catch (const Error& e) {
       // A flow that fails, a mesh too coarse to map or a repair the display does not allow is one
       // more failed attempt; bad input fails every attempt alike and keeps its own error (below).

@@ -25,7 +25,7 @@ BakePreset parseBakePreset(std::string_view name) {
 
 BakePresetSettings presetSettings(BakePreset preset) {
   BakePresetSettings settings;
-  if (preset == BakePreset::Fast) return settings;  // the config's edges, uniform, spherical
+  if (preset == BakePreset::Fast) return settings;  // the config's edges, uniform (route: below)
   // Measured on cave5 (conformal/README.md, "Presets" and "Smooth interpolation"): halving the
   // edges takes the bulk of the error (p50) down 4x; grading around the singular corners down to
   // 1/64 of the edge takes the tail (p99 15 -> 0.87 px, max 80 -> 1.3 px at 10 cm, 20 degrees);
@@ -90,8 +90,15 @@ double smallestBoundaryCornerAngle(const DisplayConfig& config) {
 
 BakePresetSettings presetSettings(BakePreset preset, const DisplayConfig& config) {
   BakePresetSettings settings = presetSettings(preset);
-  if (preset == BakePreset::Accurate && smallestBoundaryCornerAngle(config) < kPi - 0.2)
-    settings.edgeScale = 0.4;
+  const bool convexCorner = smallestBoundaryCornerAngle(config) < kPi - 0.2;
+  if (preset == BakePreset::Accurate && convexCorner) settings.edgeScale = 0.4;
+  // The Euclidean route's flow costs 2.5x less than the spherical one's (cave5 at 20 cm: 9 against
+  // 23 ms, the re-bake's budget is 33), but its removed face bends the map: measured mirror
+  // asymmetry of the fast bake (tools/bench/alignment_bench.cpp --route euclidean, p50 / max px):
+  // cave5 0.009 / 3.5 and cave6 0 (against fast's own p99 error of 54 px on cave5), where every
+  // display with a convex boundary corner goes far off: cave4 1.5 / 12, md230x6 61 / 1212,
+  // cave3 52 / 1106, flat-wall 93 / 541 (spherical: <= 0.02 on all). conformal/README.md, "Presets".
+  if (preset == BakePreset::Fast && !convexCorner) settings.route = DisplayMapRoute::Euclidean;
   return settings;
 }
 

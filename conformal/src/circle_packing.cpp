@@ -137,37 +137,53 @@ bool cornerAngles(Geometry g, const std::array<double, 3>& l, std::array<double,
     if (!(a < b + d)) return false;  // also rejects NaN
   }
   if (g == Geometry::Spherical && !(l[0] + l[1] + l[2] < 2 * std::numbers::pi)) return false;
-  for (int c = 0; c < 3; ++c) {
-    const double li = l[c], lj = l[(c + 1) % 3], lk = l[(c + 2) % 3];
-    if (g == Geometry::Euclidean) {
+  if (g == Geometry::Euclidean) {
+    for (int c = 0; c < 3; ++c) {
+      const double li = l[c], lj = l[(c + 1) % 3], lk = l[(c + 2) % 3];
       const double cosTheta = (lj * lj + lk * lk - li * li) / (2 * lj * lk);
       // Valid triangles give |cos| ≤ 1 up to rounding; clamp only that rounding.
       angles[c] = std::acos(std::clamp(cosTheta, -1.0, 1.0));
-      continue;
     }
-    // Half-angle formula, tan²(θ_i/2) = s(p - l_j) s(p - l_k) / (s(p) s(p - l_i)) with p the
-    // half perimeter and s = sin or sinh: the cosine law's acos loses half the digits for
-    // small angles (curvature stalled near 1e-8 on slivers of a lopsided disk, measured).
-    const double p = 0.5 * (li + lj + lk);
-    const double ratio = sineOf(g, 0.5 * (li + lk - lj)) * sineOf(g, 0.5 * (li + lj - lk)) /
-                         (sineOf(g, p) * sineOf(g, 0.5 * (lj + lk - li)));
+    return true;
+  }
+  // Half-angle formula, tan²(θ_i/2) = s(p - l_j) s(p - l_k) / (s(p) s(p - l_i)) with p the
+  // half perimeter and s = sin or sinh: the cosine law's acos loses half the digits for
+  // small angles (curvature stalled near 1e-8 on slivers of a lopsided disk, measured).
+  // s(p - l_c) = s(½(l_{c+1} + l_{c+2} - l_c)) is shared by the three corners (sums commute
+  // exactly), so 3 + 3 sines a triangle instead of 12 (the spherical route's flow spent a third
+  // of its time in sin); p keeps each corner's own order of additions, so the angles are
+  // bitwise those of the formula per corner.
+  std::array<double, 3> opposite;  // s(p - l_c)
+  for (int c = 0; c < 3; ++c)
+    opposite[c] = sineOf(g, 0.5 * (l[(c + 1) % 3] + l[(c + 2) % 3] - l[c]));
+  for (int c = 0; c < 3; ++c) {
+    const int j = (c + 1) % 3, k = (c + 2) % 3;
+    const double p = 0.5 * (l[c] + l[j] + l[k]);
+    const double ratio = opposite[j] * opposite[k] / (sineOf(g, p) * opposite[c]);
     angles[c] = 2 * std::atan(std::sqrt(ratio));
   }
   return true;
 }
 
 // Derivative cosine law: with A = sinθ_i s(l_j) s(l_k) (the same for every corner by the sine
-// law), ∂θ_i/∂l_i = s(l_i)/A and ∂θ_i/∂l_j = -s(l_i) cosθ_k / A.
+// law), ∂θ_i/∂l_i = s(l_i)/A and ∂θ_i/∂l_j = -s(l_i) cosθ_k / A. The sines and cosines are taken
+// once per triangle (9 calls, not 18).
 void angleLengthDerivatives(Geometry g, const std::array<double, 3>& l,
                             const std::array<double, 3>& angles,
                             std::array<std::array<double, 3>, 3>& d) {
+  std::array<double, 3> sinAngle, cosAngle, sinLength;
+  for (int i = 0; i < 3; ++i) {
+    sinAngle[i] = std::sin(angles[i]);
+    cosAngle[i] = std::cos(angles[i]);
+    sinLength[i] = sineOf(g, l[i]);
+  }
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
-    const double A = std::sin(angles[i]) * sineOf(g, l[j]) * sineOf(g, l[k]);
-    const double si = sineOf(g, l[i]);
+    const double A = sinAngle[i] * sinLength[j] * sinLength[k];
+    const double si = sinLength[i];
     d[i][i] = si / A;
-    d[i][j] = -si * std::cos(angles[k]) / A;
-    d[i][k] = -si * std::cos(angles[j]) / A;
+    d[i][j] = -si * cosAngle[k] / A;
+    d[i][k] = -si * cosAngle[j] / A;
   }
 }
 

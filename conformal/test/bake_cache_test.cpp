@@ -206,8 +206,8 @@ TEST(BakeCache, MapSettingsChangeTheKey) {
   graded.grading = TemplateGrading{.radiusDegrees = 20};
   BakeDisplayOptions graded30 = uniform;
   graded30.grading = TemplateGrading{.radiusDegrees = 30};
-  BakeDisplayOptions euclidean = uniform;
-  euclidean.route = DisplayMapRoute::Euclidean;
+  BakeDisplayOptions otherRoute = uniform;  // fast takes the Euclidean route on cave5
+  otherRoute.route = DisplayMapRoute::Spherical;
   BakeDisplayOptions mobius = uniform;
   mobius.interpolation = MapInterpolation::Mobius;
   BakeDisplayOptions accurate = uniform;
@@ -216,12 +216,12 @@ TEST(BakeCache, MapSettingsChangeTheKey) {
   accurateLinear.interpolation = MapInterpolation::Linear;
   std::set<fs::path> entries;
   for (const BakeDisplayOptions* o :
-       {&uniform, &graded, &graded30, &euclidean, &mobius, &accurate, &accurateLinear}) {
+       {&uniform, &graded, &graded30, &otherRoute, &mobius, &accurate, &accurateLinear}) {
     const BakedDisplay baked = bakeDisplayWith(cave5(), *o, std::ref(source));
     EXPECT_FALSE(baked.fromCache);
     EXPECT_EQ(baked.config.hash, effectiveBakeConfig(cave5(), uniform).hash);
     EXPECT_TRUE(entries.insert(baked.cacheEntry).second) << baked.cacheEntry;
-    const DisplayMapOptions map = bakeMapOptions(*o);
+    const DisplayMapOptions map = bakeMapOptions(baked.config, *o);
     EXPECT_EQ(baked.sidecar.at("map_settings"),
               mapSettingsJson(map.route, map.grading, bakeInterpolation(*o)));
   }
@@ -255,8 +255,8 @@ TEST(BakeCache, PresetsScaleTheConfigEdgeUnlessOneIsGiven) {
                    presetSettings(BakePreset::Accurate).edgeScale * config.edgeLength);
   accurate.edgeLength = 0.3;
   EXPECT_DOUBLE_EQ(effectiveBakeConfig(config, accurate).edgeLength, 0.3);
-  EXPECT_GT(bakeMapOptions(accurate).grading.radiusDegrees, 0);
-  EXPECT_EQ(bakeMapOptions(fast).grading.radiusDegrees, 0);
+  EXPECT_GT(bakeMapOptions(config, accurate).grading.radiusDegrees, 0);
+  EXPECT_EQ(bakeMapOptions(config, fast).grading.radiusDegrees, 0);
   EXPECT_EQ(bakeInterpolation(accurate), MapInterpolation::Mobius);
   EXPECT_EQ(bakeInterpolation(fast), MapInterpolation::Linear);
   accurate.interpolation = MapInterpolation::Linear;

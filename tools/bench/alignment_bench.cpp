@@ -4,7 +4,7 @@
 // y: top/bottom mirror, or any plane normal), as measured by map_alignment_quality.hpp.
 //
 //   build/confvis_bench_alignment CONFIG [--map DIR] [--edge-length M] [--resolution N]
-//                                 [--mirror x|y|X,Y,Z]...
+//                                 [--mirror x|y|X,Y,Z]... [--route spherical|euclidean]
 // Without --map the config is baked in memory (no cache); with it, a bake directory written by
 // `confvis bake` (of any version) is measured: how before/after figures are compared.
 #include <CLI/CLI.hpp>
@@ -48,6 +48,10 @@ int main(int argc, char** argv) {
   app.add_option("--edge-length", edgeLength, "Bake with this edge length (metres)");
   app.add_option("--resolution", resolution, "Bake at this cube face size");
   app.add_option("--mirror", mirrors, "Mirror planes: x, y, z or a normal X,Y,Z (default x, y)");
+  std::string route = "spherical";
+  app.add_option("--route", route, "Disk-map route when baking: spherical | euclidean")
+      ->check(CLI::IsMember({"spherical", "euclidean"}))
+      ->capture_default_str();
   CLI11_PARSE(app, argc, argv);
   try {
     DisplayConfig config = loadDisplayConfig(configPath);
@@ -57,6 +61,7 @@ int main(int argc, char** argv) {
     } else {
       DisplayMapOptions options;
       options.edgeLength = edgeLength;
+      if (route == "euclidean") options.route = DisplayMapRoute::Euclidean;
       const DisplayMap displayMap = computeDisplayMap(config, options);
       BakeOptions bake;
       bake.reference = {config.reference.x, config.reference.y, config.reference.z};

@@ -11,8 +11,8 @@
 //   build/confvis_bench_bake [--config configs/cave5.json] [--edges 0.2,0.1,0.05]
 //                            [--resolutions 256,512,1024] [--repeat 5] [--threads 0]
 //                            [--route spherical|euclidean] [--preset fast|accurate]
-// --preset takes the preset's route and grading (bake_preset.hpp) and, without --edges, its
-// edge length (the preset's scale of the config's edge_length).
+// --preset takes the preset's route (unless --route is given) and grading (bake_preset.hpp) and,
+// without --edges, its edge length (the preset's scale of the config's edge_length).
 #include <CLI/CLI.hpp>
 #include <sys/resource.h>
 
@@ -92,8 +92,12 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", repeat, "Runs per row (median wall times; CPU min/mean)")->capture_default_str();
   app.add_option("--threads", threads, "Bake threads (0: one per core)")->capture_default_str();
   std::string route = "spherical";
-  app.add_option("--route", route, "Disk-map route of the display map: spherical | euclidean")
-      ->capture_default_str();
+  auto* routeOption =
+      app.add_option("--route", route,
+                     "Disk-map route of the display map: spherical | euclidean (default: the "
+                     "preset's for the display, else spherical)")
+          ->check(CLI::IsMember({"spherical", "euclidean"}))
+          ->capture_default_str();
   std::string presetName;
   app.add_option("--preset", presetName, "Bake preset: fast | accurate (route, grading, edges)")
       ->check(CLI::IsMember({"fast", "accurate"}));
@@ -142,7 +146,10 @@ int main(int argc, char** argv) {
           DisplayMapOptions mapOptions;
           mapOptions.route =
               route == "euclidean" ? DisplayMapRoute::Euclidean : DisplayMapRoute::Spherical;
-          if (preset) mapOptions.route = preset->route, mapOptions.grading = preset->grading;
+          if (preset) {
+            mapOptions.grading = preset->grading;
+            if (routeOption->count() == 0) mapOptions.route = preset->route;
+          }
           last = computeDisplayMap(config, mapOptions);
           const double bakeCpuStart = processCpuSeconds();
           BakeOptions bake;

@@ -41,7 +41,7 @@ struct BakeDisplayOptions {
   // explicit edgeLength the preset scales the config's edge_length (accurate: half, 0.4 on a display
   // with convex boundary corners: presetSettings(preset, config)).
   BakePreset preset = kLiveBakePreset;
-  std::optional<DisplayMapRoute> route;    // default: the preset's
+  std::optional<DisplayMapRoute> route;    // default: the preset's for the display
   std::optional<TemplateGrading> grading;  // default: the preset's
   std::optional<MapInterpolation> interpolation;  // default: the preset's
   bool useCache = true;
@@ -72,8 +72,10 @@ std::filesystem::path defaultCacheDirectory();
 // Error(InvalidInput) naming the override.
 DisplayConfig effectiveBakeConfig(const DisplayConfig& config, const BakeDisplayOptions& options);
 
-// The route and grading a bake with these options uses (the preset's unless overridden).
-DisplayMapOptions bakeMapOptions(const BakeDisplayOptions& options);
+// The route and grading a bake of this (effective) config with these options uses (the preset's
+// for this display, presetSettings(preset, config), unless overridden).
+DisplayMapOptions bakeMapOptions(const DisplayConfig& effectiveConfig,
+                                 const BakeDisplayOptions& options);
 // How it interpolates between the mesh vertices (the preset's unless overridden).
 MapInterpolation bakeInterpolation(const BakeDisplayOptions& options);
 // The BakeOptions of a bake of the effective config with these options (its reference point,
@@ -81,7 +83,8 @@ MapInterpolation bakeInterpolation(const BakeDisplayOptions& options);
 BakeOptions displayBakeOptions(const DisplayConfig& effectiveConfig,
                                const BakeDisplayOptions& options);
 // mapSettingsJson of both.
-nlohmann::json bakeMapSettings(const BakeDisplayOptions& options);
+nlohmann::json bakeMapSettings(const DisplayConfig& effectiveConfig,
+                               const BakeDisplayOptions& options);
 
 // Where the cache keeps the bake of an effective config with these map settings
 // (bakeMapSettings).

@@ -2,10 +2,12 @@
 // Bake presets (issue 22, point 4): the accuracy / re-bake time trade of a display map as one
 // word. Measured on cave5 against its converged map (conformal/README.md, "Map accuracy",
 // "Presets" and "Smooth interpolation"):
-//   fast      the config's edge_length, uniform edges, spherical route, linear interpolation:
-//             the re-bake fits the 33 ms budget of a tracked head (cave5 at 20 cm: ~27 ms on the
-//             idle 2-core machine), but content lands up to ~54 px (p99) / 113 px (max) off near
-//             the singular corners, and straight lines kink by ~21 degrees (p99).
+//   fast      the config's edge_length, uniform edges, linear interpolation, the Euclidean
+//             route on a display without convex boundary corners (cave5, cave6), else the
+//             spherical one (presetSettings(preset, config)): the re-bake is meant to fit the 33 ms
+//             budget of a tracked head (cave5 at 20 cm: conformal/README.md, "Presets"), but
+//             content lands up to ~54 px (p99) / 113 px (max) off near the singular corners, and
+//             straight lines kink by ~21 degrees (p99).
 //   accurate  half the config's edge_length, graded toward the singular corners (30 degrees,
 //             edges down to 1/1024), spherical route, per-vertex Möbius blending
 //             (map_interpolation.hpp): cave5 at p99 0.47 px, max 0.6 px against an
@@ -59,7 +61,11 @@ double smallestBoundaryCornerAngle(const DisplayConfig& config);
 // 0.5 where the display has a convex boundary corner (smallestBoundaryCornerAngle < π - 0.2):
 // there the map to the disk goes like z^(π/β), its inverse has an unbounded derivative, and
 // cave3 (corners of 2π/3) measured p99 2.1 px at 0.5 against 0.90 px at 0.4, where cave5 (no
-// convex corner) meets its goal at 0.5 (conformal/README.md, "Map accuracy").
+// convex corner) meets its goal at 0.5 (conformal/README.md, "Map accuracy"). `fast` takes the
+// Euclidean route (2.5x cheaper flow) where the display has no convex boundary corner: there its
+// removed face leaves the map mirror-symmetric to a few px (cave5: max 3.5 px), where it bends
+// the maps of cave3, cave4, md230x6 and flat-wall by 12 to 1200 px (conformal/README.md,
+// "Presets").
 BakePresetSettings presetSettings(BakePreset preset, const DisplayConfig& config);
 
 // The settings of a display map that the config does not hold (route, grading, interpolation), as
