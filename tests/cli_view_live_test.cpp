@@ -213,6 +213,10 @@ TEST(CliViewLive, UdpPosesInBothProtocolsMoveTheViewsAndGarbageIsCounted) {
                                                         std::to_string(port));
     const auto front = confvis::testing::waitForWindow(display, "confvis view: front", 30.0);
     ASSERT_TRUE(front) << "no window appeared: " << confvis::readTextFile(run.log);
+    // Poses only once frames are being drawn: under load (CI's sanitizer builds) the start-up
+    // after the window appears can outlast the first pose, whose frames the test counts.
+    ASSERT_TRUE(confvis::testing::waitForDrawnPixels(display, *front, 60.0))
+        << "the front window never showed a frame: " << confvis::readTextFile(run.log);
     const std::vector<std::string> garbage = {"hello", "{\"pos\": [1, 2", "6d 1 [0 1.0][nan"};
     int frame = 0;
     for (const std::vector<double>& p : poses) {

@@ -118,6 +118,30 @@ inline std::optional<Window> waitForWindow(Display* display, const std::string& 
   return std::nullopt;
 }
 
+// Waits until `window` shows a pixel that is not black: the view has presented a frame there, so
+// its start-up (pipelines, first map) is over. False after `seconds` without one. X errors
+// (the window not viewable yet) are ignored meanwhile instead of ending the test process.
+inline bool waitForDrawnPixels(Display* display, Window window, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  XErrorHandler previous = XSetErrorHandler([](Display*, XErrorEvent*) { return 0; });
+  bool drawn = false;
+  while (!drawn && std::chrono::steady_clock::now() < end) {
+    XWindowAttributes attributes{};
+    if (XGetWindowAttributes(display, window, &attributes) && attributes.map_state == IsViewable) {
+      if (XImage* image = XGetImage(display, window, 0, 0, attributes.width, attributes.height,
+                                    AllPlanes, ZPixmap)) {
+        for (int y = 0; y < image->height && !drawn; ++y)
+          for (int x = 0; x < image->width && !drawn; ++x) drawn = XGetPixel(image, x, y) != 0;
+        XDestroyImage(image);
+      }
+    }
+    XSync(display, False);
+    if (!drawn) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  XSetErrorHandler(previous);
+  return drawn;
+}
+
 // What a window manager sends when the user clicks a window's close button.
 inline void requestClose(Display* display, Window window) {
   XEvent event{};
