@@ -42,6 +42,33 @@ layout(set = CONFVIS_WARP_SET, binding = CONFVIS_WARP_BINDING) uniform samplerCu
 // Angle between two non-zero vectors in radians (atan keeps tiny angles accurate).
 float confvisAngle(vec3 a, vec3 b) { return atan(length(cross(a, b)), dot(a, b)); }
 
+// Face coordinates (sc, tc), major axis ma and the directions in which s and t grow of a
+// non-zero direction, exactly as the Vulkan spec's cube-map face selection table.
+void confvisCubeFaceCoordinates(vec3 v, out float sc, out float tc, out float ma, out vec3 sAxis,
+                                out vec3 tAxis) {
+  vec3 a = abs(v);
+  if (a.x >= a.y && a.x >= a.z) {
+    ma = a.x; sc = v.x > 0.0 ? -v.z : v.z; tc = -v.y;
+    sAxis = vec3(0.0, 0.0, v.x > 0.0 ? -1.0 : 1.0); tAxis = vec3(0.0, -1.0, 0.0);
+  } else if (a.y >= a.z) {
+    ma = a.y; sc = v.x; tc = v.y > 0.0 ? v.z : -v.z;
+    sAxis = vec3(1.0, 0.0, 0.0); tAxis = vec3(0.0, 0.0, v.y > 0.0 ? 1.0 : -1.0);
+  } else {
+    ma = a.z; sc = v.z > 0.0 ? v.x : -v.x; tc = -v.y;
+    sAxis = vec3(v.z > 0.0 ? 1.0 : -1.0, 0.0, 0.0); tAxis = vec3(0.0, -1.0, 0.0);
+  }
+}
+
+// Where v falls within the 2x2 texel block of the geom map's bilinear footprint: the weights of
+// texels (i, j) are (i ? f.x : 1 - f.x) (j ? f.y : 1 - f.y).
+vec2 confvisGeomFootprintFraction(vec3 v) {
+  float sc, tc, ma;
+  vec3 sAxis, tAxis;
+  confvisCubeFaceCoordinates(v, sc, tc, ma, sAxis, tAxis);
+  float n = float(textureSize(confvisGeomMap, 0).x);
+  return fract((0.5 * vec2(sc, tc) / ma + 0.5) * n - 0.5);
+}
+
 // Cube-map lookup of T_geom for a non-zero virtual direction: xyz = unit physical direction,
 // w = validity (alpha, 1 inside the source field). Bilinear, except across the source's cut: the
 // map jumps there, and blending texels from both sides would land between them (in the middle of
@@ -61,14 +88,27 @@ vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint);
 
 // The hardware's bilinear blend alone, normalised, in `g`; false where the blend comes out too
 // short (the footprint may straddle the cut), where confvisSampleGeom fetches the four texels.
+// "Too short" is weighed by the footprint's weights w: unit vectors blend to a length of
+// 1 - sum_{k<l} w_k w_l |u_k - u_l|^2 / 2, so a jump J to texels of total weight W shortens it by
+// W (1 - W) J^2 / 2 and moves the blend W J off its side. A flat bound (the shortest blend of two
+// texels 16 / n apart at equal weights) let jumps of 16-40 / n through wherever the far side
+// weighs little, and those are the jumps next to the cut's ends, where both sides meet again:
+// a vertex there landed up to 8 / n off its side (up to 39 px at 960-px walls, 128 texels),
+// the black notches at cave5's top wall corners (issue 23). The bound 8 (1 - sum w^2) / n^2
+// (the spread the weights allow, times a smooth map's own texel spacing squared at a stretch of
+// two) sends those to the four texels; 0.57 % of all directions take that path on cave5's
+// 128-texel map, from 0.53 %.
 // Devices that run both sides of a branch for every SIMD lane (lavapipe) pay the costly path
 // for every lookup in confvisSampleGeom; a caller that can queue the few false ones for a
 // pass of their own (the conformal pre-pass does) saves that.
 bool confvisSampleGeomBilinear(vec3 v, out vec4 g) {
   vec4 blended = textureLod(confvisGeomMap, v, 0.0);
   float n = float(textureSize(confvisGeomMap, 0).x);
-  // |blend of unit vectors theta apart| >= cos(theta / 2) ~ 1 - theta^2 / 8, theta = 16 / n.
-  float shortest = 1.0 - 32.0 / (n * n);
+  vec2 f = confvisGeomFootprintFraction(v);
+  // sum of the bilinear weights squared: a product of the two axes' (1 - f)^2 + f^2.
+  vec2 axisSquares = (1.0 - f) * (1.0 - f) + f * f;
+  float spread = 1.0 - axisSquares.x * axisSquares.y;
+  float shortest = 1.0 - 8.0 * spread / (n * n);
   float len = length(blended.xyz);
   g = vec4(blended.xyz / len, blended.w);
   return len >= shortest;
@@ -96,21 +136,9 @@ void confvisGatherGeom(vec3 v, out vec4 corner[4]) {
 vec4 confvisSampleGeomAcrossCut(vec3 v) { return confvisSampleGeomAcrossCutToward(v, vec3(0.0)); }
 
 vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint) {
-  // Face, (s, t) and the directions in which s and t grow, exactly as the Vulkan spec's cube-map
-  // face selection table.
-  vec3 a = abs(v);
   float sc, tc, ma;
   vec3 sAxis, tAxis;
-  if (a.x >= a.y && a.x >= a.z) {
-    ma = a.x; sc = v.x > 0.0 ? -v.z : v.z; tc = -v.y;
-    sAxis = vec3(0.0, 0.0, v.x > 0.0 ? -1.0 : 1.0); tAxis = vec3(0.0, -1.0, 0.0);
-  } else if (a.y >= a.z) {
-    ma = a.y; sc = v.x; tc = v.y > 0.0 ? v.z : -v.z;
-    sAxis = vec3(1.0, 0.0, 0.0); tAxis = vec3(0.0, 0.0, v.y > 0.0 ? 1.0 : -1.0);
-  } else {
-    ma = a.z; sc = v.z > 0.0 ? v.x : -v.x; tc = -v.y;
-    sAxis = vec3(v.z > 0.0 ? 1.0 : -1.0, 0.0, 0.0); tAxis = vec3(0.0, -1.0, 0.0);
-  }
+  confvisCubeFaceCoordinates(v, sc, tc, ma, sAxis, tAxis);
   float n = float(textureSize(confvisGeomMap, 0).x);
   vec2 f = fract((0.5 * vec2(sc, tc) / ma + 0.5) * n - 0.5);
   vec4 corner[4];

@@ -90,9 +90,11 @@ double mean(const std::array<double, 4>& values) {
 // 5.6 %); with the pieces across the cut left to the geometry shader instead of split along it
 // in the pre-pass (splitAlongCut = false) 5.1 / 4.7 / 4.8 / 1.3 % (mean 4.0 %: warp.geom now
 // draws them up to the rim too; 6.8 / 7.6 / 7.9 / 4.6 % while it stopped at the extrapolated
-// limits). The budgets hold today's drawing and fail the unsnapped one; a fix of the corners
-// lowers them.
-constexpr double kWallBudget = 0.06, kMeanBudget = 0.042;
+// limits). With the geom lookup's quick bilinear test weighed by the footprint's weights (next to
+// the cut's ends it let small jumps through: BackendCrossCheckCutEnds) 5.6 / 4.8 / 4.1 / 1.1 %
+// (mean 3.9 %), unsplit 5.0 / 4.7 / 4.6 / 1.3 % (mean 3.9 %). The budgets hold today's drawing
+// with a little room for lavapipe's thread order and fail the unsnapped one.
+constexpr double kWallBudget = 0.059, kMeanBudget = 0.041;
 
 void expectWithinBudgets(const std::array<double, 4>& fractions) {
   for (std::size_t i = 0; i < fractions.size(); ++i)

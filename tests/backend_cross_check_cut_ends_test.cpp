@@ -1,0 +1,102 @@
+// Vulkan against Embree next to an end of cave5's cut (issue 23, point 5): the left wall's top
+// corner by the front wall, where the missing ceiling's star ends. There both sides of the cut
+// meet again, so the geom map jumps by only a few texels across it, and the shader's quick
+// bilinear test (confvisSampleGeomBilinear, confvis_warp.glsl) let such footprints through
+// wherever the far side weighed little: a vertex there landed up to 8 / n radians off its side,
+// up to 39 px at these 960-px walls through a 128-texel map (the notches at the rim's corners).
+// Measured: with the flat bound, dot 1 drawn 4.6 px off Embree's and dot 3 not at all (above the
+// rim); with the weighed bound all six within the budget.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "../backends/vulkan/test/vulkan_test_scenes.hpp"
+#include "../backends/vulkan/test/vulkan_test_support.hpp"
+#include "confvis/backends/embree/embree_backend.hpp"
+#include "confvis/conformal/bake_display.hpp"
+
+namespace confvis {
+namespace {
+
+constexpr int kWallPixels = 960;
+// Pixels (x, y) of the 960-px left wall, next to its top corner by the front wall, whose scene
+// points the plain blend put 11-30 px away (the four-texel lookup: within 2 px), each shown as a
+// small dot of its own colour.
+constexpr std::array<std::array<int, 2>, 6> kProbes = {
+    {{953, 5}, {955, 7}, {957, 8}, {944, 3}, {936, 2}, {927, 2}}};
+constexpr std::array<glm::vec3, 6> kColours = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1},
+                                               {1, 1, 0}, {1, 0, 1}, {0, 1, 1}}};
+constexpr float kDotRadians = 0.0008f;  // about 2 px there (the map magnifies next to the corner)
+constexpr double kAllowedPixels = 3.0;  // measured after the fix: 0.7-2.0 px
+
+bool channelOn(float value) { return value > 0.05f; }
+
+// Centroid of the pixels whose lit channels are exactly colour k's; nullopt where none are.
+std::optional<glm::dvec2> dotCentroid(const ImageRGBA& image, int k) {
+  glm::dvec2 sum{0.0};
+  int count = 0;
+  for (int y = 0; y < 64; ++y)
+    for (int x = image.width - 96; x < image.width; ++x) {
+      const float* p = image.at(x, y);
+      bool match = p[3] > 0.5f;
+      for (int c = 0; c < 3; ++c) match &= channelOn(p[c]) == (kColours[k][c] > 0.5f);
+      if (!match) continue;
+      sum += glm::dvec2(x + 0.5, y + 0.5);
+      ++count;
+    }
+  if (count == 0) return std::nullopt;
+  return sum / double(count);
+}
+
+TEST(BackendCrossCheckCutEnds, DotsNextToTheCutsEndLandWhereEmbreeShowsThem) {
+  const DisplayConfig config = test::loadConfig("cave5");
+  BakeDisplayOptions options;
+  options.useCache = false;
+  options.resolution = 128;
+  const RetargetMap map = bakeDisplay(config, options).map;
+  const Wall& left = config.walls[1];
+  ASSERT_EQ(left.name, "left");
+  Scene scene;
+  scene.name = "dots-at-the-cuts-end";
+  for (std::size_t k = 0; k < kProbes.size(); ++k) {
+    const glm::dvec3 right = left.lowerRight - left.lowerLeft, down = left.lowerLeft - left.upperLeft;
+    const glm::dvec3 d = glm::normalize(left.upperLeft + (kProbes[k][0] + 0.5) / kWallPixels * right +
+                                        (kProbes[k][1] + 0.5) / kWallPixels * down - map.reference);
+    const std::optional<glm::dvec3> v = map.toVirtual(d);
+    ASSERT_TRUE(v.has_value()) << "probe " << k;
+    const int material = test::addMaterial(scene, "dot" + std::to_string(k), glm::vec4(kColours[k], 1.0f));
+    scene.meshes.push_back(test::facingQuad("dot" + std::to_string(k), glm::vec3(map.reference),
+                                            glm::vec3(*v), 1.0f, kDotRadians, material));
+  }
+  RenderSettings settings;
+  settings.mode = RenderMode::Conformal;
+  settings.head.position = config.reference;
+  settings.camera.position = config.reference;
+  settings.resolutionScale = test::scaleFor(config, kWallPixels);
+  settings.walls = {"left"};
+  EmbreeBackend embree;
+  embree.setScene(scene);
+  const ImageRGBA reference = test::imageOf(embree.render(config, &map, settings), "left").image;
+  test::ValidatedBackend vulkan;
+  vulkan->setScene(scene);
+  const ImageRGBA drawn = test::imageOf(vulkan->render(config, &map, settings), "left").image;
+  test::expectNoValidationMessages(vulkan);
+  for (std::size_t k = 0; k < kProbes.size(); ++k) {
+    const std::optional<glm::dvec2> expected = dotCentroid(reference, int(k));
+    ASSERT_TRUE(expected.has_value()) << "Embree shows no dot " << k;
+    const std::optional<glm::dvec2> got = dotCentroid(drawn, int(k));
+    ASSERT_TRUE(got.has_value()) << "Vulkan draws no dot " << k << " (Embree at "
+                                 << expected->x << ", " << expected->y << ")";
+    ::testing::Test::RecordProperty("dot" + std::to_string(k) + "_pixels_off",
+                                    std::to_string(glm::distance(*got, *expected)));
+    EXPECT_LE(glm::distance(*got, *expected), kAllowedPixels)
+        << "dot " << k << ": Vulkan " << got->x << ", " << got->y << ", Embree " << expected->x
+        << ", " << expected->y;
+  }
+}
+
+}  // namespace
+}  // namespace confvis
