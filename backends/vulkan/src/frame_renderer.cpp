@@ -209,17 +209,17 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
   // The pieces index the edge midpoints and cut vertices after the scene's (GpuScene's layout).
   drawAll(pass.conformalFlat.get(), prepass_.pieceIndices(), PrepassList::Pieces);
   if (drawCaptured_) {
-    drawCaptured(cmd, pass, request, scene);
+    drawCaptured(cmd, request, scene);
     return;
   }
   drawAll(pass.conformalTessellated.get(), VK_NULL_HANDLE, PrepassList::Tessellated);
   drawAll(pass.conformalDropping.get(), VK_NULL_HANDLE, PrepassList::Dropping);
 }
 
-void FrameRenderer::drawCaptured(VkCommandBuffer cmd, const Pipelines::Pass& pass,
+void FrameRenderer::drawCaptured(VkCommandBuffer cmd,
                                  const PassRequest& request, const GpuScene& scene) {
   const VkPipelineLayout layout = pipelines_.layout();
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.conformalCaptured.get());
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.capturedDraw(request.views));
   const VkBuffer buffer = capture_->buffer();
   const VkDeviceSize offset = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);

@@ -88,7 +88,7 @@ class FrameRenderer {
                   const Targets& targets);
   void recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass, const PassRequest& request,
                    const GpuScene& scene);
-  void drawCaptured(VkCommandBuffer cmd, const Pipelines::Pass& pass, const PassRequest& request,
+  void drawCaptured(VkCommandBuffer cmd, const PassRequest& request,
                     const GpuScene& scene);
 
   VulkanContext& context_;

@@ -115,8 +115,6 @@ const Pipelines::Pass& Pipelines::pass(std::uint32_t viewCount) {
   pass.conformalFlat = createPipeline(pass.renderPass.get(), Kind::ConformalFlat);
   pass.conformalTessellated = createPipeline(pass.renderPass.get(), Kind::ConformalTessellated);
   pass.conformalDropping = createPipeline(pass.renderPass.get(), Kind::ConformalDropping);
-  if (context_.transformFeedback())
-    pass.conformalCaptured = createCapturedDrawPipeline(pass.renderPass.get());
   return passes_.emplace(viewCount, std::move(pass)).first->second;
 }
 

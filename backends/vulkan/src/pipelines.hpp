@@ -151,11 +151,14 @@ class Pipelines {
     UniquePipeline conformalFlat;
     UniquePipeline conformalTessellated;
     UniquePipeline conformalDropping;
-    // The tessellated lists as captured once a frame (warp_capture.hpp); null on a device
-    // without transform feedback.
+    // The tessellated lists as captured once a frame (warp_capture.hpp): made by
+    // capturedDraw() on first use.
     UniquePipeline conformalCaptured;
   };
   const Pass& pass(std::uint32_t viewCount);
+  // Pass(viewCount)'s conformalCaptured (pipelines_capture.cpp), made on first use: frames that
+  // capture nothing (plain ones, `confvis view --mode plain`) do not wait for its compilation.
+  VkPipeline capturedDraw(std::uint32_t viewCount);
 
   // The once-a-frame capture (pipelines_capture.cpp; the device must have transform feedback,
   // VulkanContext::transformFeedback): a render pass without attachments and the tessellated

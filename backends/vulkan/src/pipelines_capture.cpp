@@ -38,6 +38,14 @@ UniquePipeline Pipelines::createCapturedDrawPipeline(VkRenderPass renderPass) {
                                                                 renderPass, stages, input));
 }
 
+VkPipeline Pipelines::capturedDraw(std::uint32_t viewCount) {
+  pass(viewCount);
+  Pass& made = passes_.at(viewCount);
+  if (!made.conformalCaptured)
+    made.conformalCaptured = createCapturedDrawPipeline(made.renderPass.get());
+  return made.conformalCaptured.get();
+}
+
 const Pipelines::Capture& Pipelines::capture() {
   if (capture_) return *capture_;
   const VkDevice device = context_.device();
