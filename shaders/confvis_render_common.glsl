@@ -13,7 +13,8 @@
 //         z = smallest cut gap (radians), w = 0 to draw the warp unsubdivided, else 1 to
 //         tessellate, plus 1 to leave the ends of the pieces warp.geom splits at the cut at the
 //         extrapolated limits instead of moving them out to the rim (VulkanOptions::snapCutToRim
-//         off), plus 2 to drop those pieces (VulkanOptions::drawTornPiecesUpToTheCut off).
+//         off), plus 2 to drop those pieces (VulkanOptions::drawTornPiecesUpToTheCut off), plus
+//         4 in the once-a-frame capture's view (no culling by view; warp_capture.cpp).
 struct View {
   mat4 viewProj;     // physical frame -> Vulkan clip space of the wall for this eye
   vec4 eyeVirtual;   // xyz: where the headlight sits, in world coordinates

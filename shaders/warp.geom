@@ -8,6 +8,7 @@
 #include "confvis_render_common.glsl"
 #include "confvis_warp.glsl"
 #include "confvis_warp_rim.glsl"
+#include "confvis_warp_capture.glsl"
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 7) out;
@@ -18,9 +19,9 @@ layout(location = 2) in vec3 inWorld[];
 layout(location = 3) in vec3 inNormal[];
 layout(location = 4) in vec2 inUv[];
 
-layout(location = 0) out vec3 outWorld;
-layout(location = 1) out vec3 outNormal;
-layout(location = 2) out vec2 outUv;
+layout(location = 0 CONFVIS_XFB(16)) out vec3 outWorld;
+layout(location = 1 CONFVIS_XFB(28)) out vec3 outNormal;
+layout(location = 2 CONFVIS_XFB(40)) out vec2 outUv;
 
 // A point of the drawn triangle: virtual point relative to c, warp, attributes.
 struct Corner {

@@ -74,7 +74,10 @@ void main() {
     strongBend = strongBend ||
                  (outEdgeMidpoints[k].w > 0.0 && confvisAngle(m[k], chordMid) > bendLimit);
   }
-  if (!strongBend && (outside(inWarped[0].xyz) & outside(inWarped[1].xyz) &
+  // The once-a-frame capture (params.w above 4, confvis_warp_capture.glsl) draws for every wall:
+  // no view culls it.
+  bool capturing = wallView().params.w > 4.5;
+  if (!capturing && !strongBend && (outside(inWarped[0].xyz) & outside(inWarped[1].xyz) &
                       outside(inWarped[2].xyz) & outside(m0) & outside(m1) & outside(m2)) != 0u) {
     cull();
     return;

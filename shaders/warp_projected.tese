@@ -3,10 +3,11 @@
 // Conformal mode, patches that lose no pieces: tessellated vertices projected with the off-axis
 // matrix of the wall for this eye, straight to the fragment shader (as warp.geom does).
 #include "confvis_warp_tese.glsl"
+#include "confvis_warp_capture.glsl"
 
-layout(location = 0) out vec3 outWorld;
-layout(location = 1) out vec3 outNormal;
-layout(location = 2) out vec2 outUv;
+layout(location = 0 CONFVIS_XFB(16)) out vec3 outWorld;
+layout(location = 1 CONFVIS_XFB(28)) out vec3 outNormal;
+layout(location = 2 CONFVIS_XFB(40)) out vec2 outUv;
 
 void main() {
   TessellatedVertex v = tessellatedVertex();

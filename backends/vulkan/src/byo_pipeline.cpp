@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "confvis/backends/vulkan/byo_prepass.hpp"
+#include "graphics_pipeline.hpp"
 #include "vk_check.hpp"
 
 namespace confvis::vulkan {
@@ -15,10 +16,6 @@ namespace confvis::vulkan {
 VkPipeline makeWarpPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass,
                             std::span<const VkPipelineShaderStageCreateInfo> stages,
                             WarpVertexInput vertexInput) {
-  const bool tessellated =
-      std::any_of(stages.begin(), stages.end(), [](const VkPipelineShaderStageCreateInfo& s) {
-        return s.stage == VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
-      });
   const std::array<VkVertexInputBindingDescription, 2> bindings = {{
       {0, sizeof(ConformalVertex), VK_VERTEX_INPUT_RATE_VERTEX},
       {1, sizeof(glm::vec4), VK_VERTEX_INPUT_RATE_VERTEX},
@@ -38,6 +35,17 @@ VkPipeline makeWarpPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPa
     input.vertexAttributeDescriptionCount = warps ? 4 : 3;
     input.pVertexAttributeDescriptions = attributes.data();
   }
+  return makeGraphicsPipeline(device, layout, renderPass, stages, input);
+}
+
+VkPipeline makeGraphicsPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPass renderPass,
+                                std::span<const VkPipelineShaderStageCreateInfo> stages,
+                                const VkPipelineVertexInputStateCreateInfo& input,
+                                bool rasterizerDiscard) {
+  const bool tessellated =
+      std::any_of(stages.begin(), stages.end(), [](const VkPipelineShaderStageCreateInfo& s) {
+        return s.stage == VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
+      });
   VkPipelineInputAssemblyStateCreateInfo assembly{
       VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
   assembly.topology =
@@ -54,6 +62,7 @@ VkPipeline makeWarpPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPa
   raster.cullMode = VK_CULL_MODE_NONE;  // two-sided: scenes are seen from inside and outside
   raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
   raster.lineWidth = 1.0f;
+  raster.rasterizerDiscardEnable = rasterizerDiscard ? VK_TRUE : VK_FALSE;
   VkPipelineMultisampleStateCreateInfo multisample{
       VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
   multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
@@ -81,12 +90,14 @@ VkPipeline makeWarpPipeline(VkDevice device, VkPipelineLayout layout, VkRenderPa
   info.pVertexInputState = &input;
   info.pInputAssemblyState = &assembly;
   info.pTessellationState = tessellated ? &tessellation : nullptr;
-  info.pViewportState = &viewport;
   info.pRasterizationState = &raster;
-  info.pMultisampleState = &multisample;
-  info.pDepthStencilState = &depth;
-  info.pColorBlendState = &blend;
-  info.pDynamicState = &dynamic;
+  if (!rasterizerDiscard) {  // else ignored (and the capture's render pass has no attachments)
+    info.pViewportState = &viewport;
+    info.pMultisampleState = &multisample;
+    info.pDepthStencilState = &depth;
+    info.pColorBlendState = &blend;
+  }
+  info.pDynamicState = rasterizerDiscard ? nullptr : &dynamic;
   info.layout = layout;
   info.renderPass = renderPass;
   info.subpass = 0;

@@ -1,5 +1,6 @@
 #include "context.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -84,6 +85,32 @@ std::optional<std::uint32_t> graphicsQueueFamily(VkPhysicalDevice device) {
   for (std::uint32_t i = 0; i < families.size(); ++i)
     if (families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) return i;
   return std::nullopt;
+}
+
+// Whether `device` offers VK_EXT_transform_feedback with what the once-a-frame capture uses
+// (transform feedback and its queries, for the overflow check).
+bool hasTransformFeedback(VkPhysicalDevice device, std::uint32_t apiVersion) {
+  if (apiVersion < VK_API_VERSION_1_1) return false;
+  std::uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(device, nullptr, &count, extensions.data());
+  const bool listed = std::any_of(extensions.begin(), extensions.end(), [](const auto& e) {
+    return std::strcmp(e.extensionName, VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME) == 0;
+  });
+  if (!listed) return false;
+  VkPhysicalDeviceTransformFeedbackFeaturesEXT features{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT};
+  VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  features2.pNext = &features;
+  vkGetPhysicalDeviceFeatures2(device, &features2);
+  VkPhysicalDeviceTransformFeedbackPropertiesEXT properties{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_PROPERTIES_EXT};
+  VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2};
+  properties2.pNext = &properties;
+  vkGetPhysicalDeviceProperties2(device, &properties2);
+  return features.transformFeedback && properties.transformFeedbackQueries &&
+         properties.maxTransformFeedbackBuffers >= 1;
 }
 
 }  // namespace
@@ -259,13 +286,25 @@ void VulkanContext::createDevice(const ContextOptions& options) {
   required.multiview.multiview = caps.multiview;
   required.multiview.multiviewTessellationShader = caps.multiviewTessellationShader;
   required.multiview.multiviewGeometryShader = caps.multiviewGeometryShader;
+  // Optional: the once-a-frame warp capture (warp_capture.hpp); without it each wall's draw
+  // tessellates and warps the bent triangles itself.
+  std::vector<const char*> extensions = options.deviceExtensions;
+  VkPhysicalDeviceTransformFeedbackFeaturesEXT transformFeedback{
+      VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_TRANSFORM_FEEDBACK_FEATURES_EXT};
+  transformFeedback_ = options.requireRendering && hasTransformFeedback(physicalDevice_, caps.apiVersion);
+  if (transformFeedback_) {
+    extensions.push_back(VK_EXT_TRANSFORM_FEEDBACK_EXTENSION_NAME);
+    transformFeedback.transformFeedback = VK_TRUE;
+    transformFeedback.pNext = required.features.pNext;
+    required.features.pNext = &transformFeedback;
+  }
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
   // Vulkan 1.0 devices know no VkPhysicalDeviceFeatures2 chain; they never render (chooseDevice).
   if (caps.apiVersion >= VK_API_VERSION_1_1) info.pNext = &required.features;
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
-  info.enabledExtensionCount = static_cast<std::uint32_t>(options.deviceExtensions.size());
-  info.ppEnabledExtensionNames = options.deviceExtensions.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   check(vkCreateDevice(physicalDevice_, &info, nullptr, &device_), "vkCreateDevice");
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
   createCommandPool();

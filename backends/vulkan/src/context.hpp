@@ -72,6 +72,9 @@ class VulkanContext {
   VkQueue queue() const { return queue_; }
   const DeviceCapabilities& capabilities() const { return capabilities_; }
   const VkPhysicalDeviceLimits& limits() const { return properties_.limits; }
+  // VK_EXT_transform_feedback with its queries is enabled on the device (only on a device this
+  // context created, where the device has it): the once-a-frame warp capture (warp_capture.hpp).
+  bool transformFeedback() const { return transformFeedback_; }
   // Valid bits of the queue's timestamps (0: it writes none).
   std::uint32_t timestampValidBits() const { return timestampValidBits_; }
 
@@ -109,6 +112,7 @@ class VulkanContext {
   VkQueue queue_ = VK_NULL_HANDLE;
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  bool transformFeedback_ = false;
   bool ownsDevice_ = true;  // false on an application's device: instance and device are its
 };
 

@@ -70,6 +70,8 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   plan.snapCutToRim = tessellation.snapCutToRim;
   plan.reusePrepass = tessellation.reusePrepass;
   plan.dropOutsideSourceField = tessellation.dropOutsideSourceField;
+  plan.warpOncePerFrame = tessellation.warpOncePerFrame;
+  plan.capturedViewShiftForTests = tessellation.capturedViewShiftForTests;
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;
   const bool conformal = settings.mode == RenderMode::Conformal;

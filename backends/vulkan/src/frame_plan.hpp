@@ -19,6 +19,8 @@ struct TessellationOptions {
   bool snapCutToRim = true;   // VulkanOptions::snapCutToRim
   bool dropOutsideSourceField = false;  // VulkanOptions::dropOutsideSourceField
   bool drawTornPiecesUpToTheCut = true;  // VulkanOptions::drawTornPiecesUpToTheCut
+  bool warpOncePerFrame = true;          // VulkanOptions::warpOncePerFrame
+  std::uint32_t capturedViewShiftForTests = 0;  // VulkanOptions::capturedViewShiftForTests
 };
 
 struct FramePlan {
@@ -33,6 +35,8 @@ struct FramePlan {
   bool snapCutToRim = true;   // TessellationOptions::snapCutToRim
   bool reusePrepass = true;   // TessellationOptions::reusePrepass
   bool dropOutsideSourceField = false;  // TessellationOptions::dropOutsideSourceField
+  bool warpOncePerFrame = true;          // TessellationOptions::warpOncePerFrame
+  std::uint32_t capturedViewShiftForTests = 0;  // TessellationOptions::capturedViewShiftForTests
 };
 
 // `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.

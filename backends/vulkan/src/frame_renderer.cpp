@@ -15,6 +15,29 @@
 namespace confvis::vulkan {
 namespace {
 
+// The view the once-a-frame capture draws through (warp_capture.hpp): an identity projection, so
+// that the captured positions are the warped physical points; the walls' strictest cut gap (the
+// geometry shader's minGap; the pre-pass takes the same) and bend bound; params.w + 4: warp.tesc
+// culls by no view. None where the frame is not tessellated (params.w = 0).
+std::optional<ViewData> captureViewOf(const FramePlan& plan) {
+  if (!plan.warpOncePerFrame || plan.views.empty() || plan.views.front().params.w == 0.0f)
+    return std::nullopt;
+  ViewData capture;
+  capture.viewProj = glm::mat4(1.0f);
+  capture.eyeVirtual = glm::vec4(0.0f);
+  capture.params = plan.views.front().params;
+  for (const ViewData& view : plan.views) {
+    capture.params.x = std::min(capture.params.x, view.params.x);
+    capture.params.z = std::min(capture.params.z, view.params.z);
+  }
+  capture.params.w += 4.0f;
+  return capture;
+}
+
+bool operator==(const ViewData& a, const ViewData& b) {
+  return a.viewProj == b.viewProj && a.eyeVirtual == b.eyeVirtual && a.params == b.params;
+}
+
 }  // namespace
 
 FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines,
@@ -31,6 +54,7 @@ FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines,
   VkSampler sampler = VK_NULL_HANDLE;
   check(vkCreateSampler(device, &samplerInfo, nullptr, &sampler), "vkCreateSampler");
   warpSampler_ = UniqueSampler(device, sampler);
+  if (context.transformFeedback()) capture_ = std::make_unique<WarpCapture>(context, pipelines);
 }
 
 FrameRenderer::Targets& FrameRenderer::targets(std::uint32_t width, std::uint32_t height,
@@ -68,15 +92,19 @@ FrameRenderer::Targets& FrameRenderer::targets(std::uint32_t width, std::uint32_
   return targets_.emplace(key, std::move(t)).first->second;
 }
 
-void FrameRenderer::uploadFrame(const FramePlan& plan) {
+void FrameRenderer::uploadFrame(const FramePlan& plan, const std::optional<ViewData>& captureView) {
   std::memcpy(frameBuffer_.mapped(), &plan.frame, sizeof(FrameUniforms));
-  const std::size_t bytes = plan.views.size() * sizeof(ViewData);
+  // The capture's view after the walls' (FrameRenderer::captureWarp).
+  const std::size_t bytes = (plan.views.size() + 1) * sizeof(ViewData);
   if (viewBuffer_.size() < bytes) {
     viewBuffer_ = Buffer(context_, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, BufferMemory::Shared);
     writeBufferDescriptor(context_.device(), frameSet_, 1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                           viewBuffer_.get());
   }
-  std::memcpy(viewBuffer_.mapped(), plan.views.data(), bytes);
+  std::memcpy(viewBuffer_.mapped(), plan.views.data(), plan.views.size() * sizeof(ViewData));
+  const ViewData unused{};
+  std::memcpy(static_cast<char*>(viewBuffer_.mapped()) + plan.views.size() * sizeof(ViewData),
+              captureView ? &*captureView : &unused, sizeof(ViewData));
 }
 
 void FrameRenderer::uploadMap(const RetargetMap& map) {
@@ -180,8 +208,36 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
   drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), PrepassList::Flat);
   // The pieces index the edge midpoints and cut vertices after the scene's (GpuScene's layout).
   drawAll(pass.conformalFlat.get(), prepass_.pieceIndices(), PrepassList::Pieces);
+  if (drawCaptured_) {
+    drawCaptured(cmd, request, scene);
+    return;
+  }
   drawAll(pass.conformalTessellated.get(), VK_NULL_HANDLE, PrepassList::Tessellated);
   drawAll(pass.conformalDropping.get(), VK_NULL_HANDLE, PrepassList::Dropping);
+}
+
+void FrameRenderer::drawCaptured(VkCommandBuffer cmd,
+                                 const PassRequest& request, const GpuScene& scene) {
+  const VkPipelineLayout layout = pipelines_.layout();
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines_.capturedDraw(request.views));
+  const VkBuffer buffer = capture_->buffer();
+  const VkDeviceSize offset = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &buffer, &offset);
+  // The lists in the per-wall path's order: the tessellated ones, then those through the
+  // geometry shader.
+  for (PrepassList list : {PrepassList::Tessellated, PrepassList::Dropping})
+    for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+      const WarpCapture::Range range = capture_->range(d, list);
+      if (range.vertexCount == 0) continue;
+      const GpuScene::Draw& draw = scene.draws()[d];
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
+                              0, nullptr);
+      const PushConstants push{draw.baseColorFactor,
+                               (request.viewBase + capturedViewShift_) % viewCount_,
+                               draw.hasNormals ? 1u : 0u, 0};
+      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+      vkCmdDraw(cmd, range.vertexCount, 1, range.firstVertex, 0);
+    }
 }
 
 std::vector<ImageRGBA> FrameRenderer::renderPass(const PassRequest& request,
@@ -247,7 +303,10 @@ void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
   const bool conformal = map != nullptr;
   gpuSeconds_ = stopwatch_.available() ? std::optional<double>(0.0) : std::nullopt;
   if (conformal) uploadMap(*map);
-  uploadFrame(plan);
+  const std::optional<ViewData> captureView =
+      conformal && capture_ ? captureViewOf(plan) : std::nullopt;
+  uploadFrame(plan, captureView);
+  drawCaptured_ = false;
   if (conformal) {
     std::vector<glm::vec4> viewParams;
     for (const ViewData& view : plan.views) viewParams.push_back(view.params);
@@ -287,7 +346,23 @@ void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
         writeBufferDescriptor(context_.device(), frameSet_, 2 + i,
                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers[i]);
     }
+    if (captureView) captureWarp(plan, scene, captureView);
   }
+}
+
+void FrameRenderer::captureWarp(const FramePlan& plan, const GpuScene& scene,
+                                const std::optional<ViewData>& captureView) {
+  viewCount_ = static_cast<std::uint32_t>(plan.views.size());
+  capturedViewShift_ = static_cast<std::uint32_t>(
+      (std::uint64_t{plan.capturedViewShiftForTests} * plan.eyes.size()) % viewCount_);
+  // Reused with the pre-pass: the capture depends on nothing else but its view.
+  if (!(prepassReused_ && captureCurrent_ && capturedThrough_ == *captureView)) {
+    captureCurrent_ = false;  // until the capture below has completed
+    addGpuSeconds(capture_->capture(scene, prepass_, frameSet_, warpSet_, viewCount_, stopwatch_));
+    capturedThrough_ = *captureView;
+    captureCurrent_ = true;
+  }
+  drawCaptured_ = true;
 }
 
 }  // namespace confvis::vulkan

@@ -4,6 +4,7 @@
 // multiview pass), submission and readback into images.
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <vector>
@@ -17,6 +18,7 @@
 #include "gpu_scene.hpp"
 #include "memory.hpp"
 #include "pipelines.hpp"
+#include "warp_capture.hpp"
 
 namespace confvis::vulkan {
 
@@ -63,7 +65,12 @@ class FrameRenderer {
   };
   Targets& targets(std::uint32_t width, std::uint32_t height, std::uint32_t views,
                    VkRenderPass renderPass);
-  void uploadFrame(const FramePlan& plan);
+  void uploadFrame(const FramePlan& plan, const std::optional<ViewData>& captureView);
+  // The once-a-frame capture of the tessellated lists (warp_capture.hpp), where the device and
+  // the plan have it; else the walls' draws tessellate themselves.
+  void captureWarp(const FramePlan& plan, const GpuScene& scene,
+                   const std::optional<ViewData>& captureView);
+
   // The map and frame uploads and the conformal pre-pass, before any wall's pass.
   void prepareFrame(const FramePlan& plan, const GpuScene& scene, const RetargetMap* map);
   void addGpuSeconds(std::optional<double> seconds);
@@ -81,6 +88,8 @@ class FrameRenderer {
                   const Targets& targets);
   void recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass, const PassRequest& request,
                    const GpuScene& scene);
+  void drawCaptured(VkCommandBuffer cmd, const PassRequest& request,
+                    const GpuScene& scene);
 
   VulkanContext& context_;
   Pipelines& pipelines_;
@@ -110,6 +119,11 @@ class FrameRenderer {
   bool timePrepassPasses_ = false;
   std::vector<double> prepassPassSeconds_;  // empty unless timed and run this frame
   bool prepassReused_ = false;
+  std::unique_ptr<WarpCapture> capture_;  // null without transform feedback
+  bool drawCaptured_ = false;   // this frame's walls draw the capture's buffer
+  bool captureCurrent_ = false;  // the buffer holds the current pre-pass's lists...
+  ViewData capturedThrough_{};   // ...as drawn through this view
+  std::uint32_t viewCount_ = 0, capturedViewShift_ = 0;  // plan.views.size(), in views
 };
 
 }  // namespace confvis::vulkan

@@ -58,15 +58,16 @@ constexpr VkShaderStageFlags kGeometryStages =
     VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT | VK_SHADER_STAGE_GEOMETRY_BIT;
 constexpr VkShaderStageFlags kAllStages = kGeometryStages | VK_SHADER_STAGE_FRAGMENT_BIT;
 
-VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits bit, const UniqueShaderModule& module) {
+}  // namespace
+
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits bit,
+                                            const UniqueShaderModule& module) {
   VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   info.stage = bit;
   info.module = module.get();
   info.pName = "main";
   return info;
 }
-
-}  // namespace
 
 Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   const VkDevice device = context.device();
@@ -189,24 +190,24 @@ UniquePipeline Pipelines::createPipeline(VkRenderPass renderPass, Kind kind) con
   std::vector<VkPipelineShaderStageCreateInfo> stages;
   switch (kind) {
     case Kind::Plain:
-      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, sceneVert_)};
+      stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, sceneVert_)};
       break;
     case Kind::ConformalFlat:
-      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpSimpleVert_)};
+      stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, warpSimpleVert_)};
       break;
     case Kind::ConformalTessellated:
-      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
-                stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
-                stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpProjectedTese_)};
+      stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
+                shaderStage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
+                shaderStage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpProjectedTese_)};
       break;
     case Kind::ConformalDropping:
-      stages = {stage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
-                stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
-                stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpTese_),
-                stage(VK_SHADER_STAGE_GEOMETRY_BIT, warpGeom_)};
+      stages = {shaderStage(VK_SHADER_STAGE_VERTEX_BIT, warpVert_),
+                shaderStage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, warpTesc_),
+                shaderStage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, warpTese_),
+                shaderStage(VK_SHADER_STAGE_GEOMETRY_BIT, warpGeom_)};
       break;
   }
-  stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_));
+  stages.push_back(shaderStage(VK_SHADER_STAGE_FRAGMENT_BIT, sceneFrag_));
   // The scene's vertices at binding 0; the flat list's warps from the pre-pass at binding 1. The
   // other conformal vertex shaders read theirs from storage buffers.
   const WarpVertexInput input = kind == Kind::Plain           ? WarpVertexInput::Vertices

@@ -5,6 +5,7 @@
 // set 2: a material's base-colour texture (graphics) or the pre-pass buffers (compute).
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -111,6 +112,8 @@ template <std::size_t N>
 UniqueShaderModule shaderModule(VkDevice device, const std::uint32_t (&spirv)[N]) {
   return shaderModule(device, spirv, sizeof(spirv));
 }
+VkPipelineShaderStageCreateInfo shaderStage(VkShaderStageFlagBits bit,
+                                            const UniqueShaderModule& module);
 UniqueDescriptorSetLayout setLayout(VkDevice device,
                                     const std::vector<VkDescriptorSetLayoutBinding>& bindings);
 UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,
@@ -148,18 +151,36 @@ class Pipelines {
     UniquePipeline conformalFlat;
     UniquePipeline conformalTessellated;
     UniquePipeline conformalDropping;
+    // The tessellated lists as captured once a frame (warp_capture.hpp): made by
+    // capturedDraw() on first use.
+    UniquePipeline conformalCaptured;
   };
   const Pass& pass(std::uint32_t viewCount);
+  // Pass(viewCount)'s conformalCaptured (pipelines_capture.cpp), made on first use: frames that
+  // capture nothing (plain ones, `confvis view --mode plain`) do not wait for its compilation.
+  VkPipeline capturedDraw(std::uint32_t viewCount);
+
+  // The once-a-frame capture (pipelines_capture.cpp; the device must have transform feedback,
+  // VulkanContext::transformFeedback): a render pass without attachments and the tessellated
+  // lists' pipelines writing their triangles by transform feedback, nothing rasterized.
+  struct Capture {
+    UniqueRenderPass renderPass;
+    UniqueFramebuffer framebuffer;  // 1 x 1, no attachments
+    UniquePipeline tessellated, dropping;
+  };
+  const Capture& capture();
 
  private:
   enum class Kind { Plain, ConformalFlat, ConformalTessellated, ConformalDropping };
+  UniquePipeline createCapturedDrawPipeline(VkRenderPass renderPass);  // pipelines_capture.cpp
   UniqueRenderPass createRenderPass(std::uint32_t viewCount) const;
   UniquePipeline createPipeline(VkRenderPass renderPass, Kind kind) const;
   void createComputePipelines();  // pipelines_compute.cpp
 
   VulkanContext& context_;
   UniqueShaderModule sceneVert_, sceneFrag_, warpSimpleVert_, warpVert_, warpTesc_, warpTese_,
-      warpProjectedTese_, warpGeom_;
+      warpProjectedTese_, warpGeom_, warpCapturedVert_, warpProjectedTeseCapture_,
+      warpGeomCapture_;
   UniqueDescriptorSetLayout frameSetLayout_, warpSetLayout_, materialSetLayout_,
       prepassSetLayout_;
   UniquePipelineLayout layout_, computeLayout_;
@@ -167,6 +188,7 @@ class Pipelines {
       classifyEdgesAtCut_, classifyTriangles_, classifyStraightTriangles_, classifyBentTriangles_,
       splitTrianglesAtCut_;
   std::map<std::uint32_t, Pass> passes_;
+  std::optional<Capture> capture_;
 };
 
 // The two sets every warped draw and the pre-pass bind (the frame's uniforms, storage buffers and

@@ -169,7 +169,9 @@ class VulkanBackend final : public VulkanRenderer {
                                                    options_.splitAlongCut, options_.reusePrepass,
                                                    options_.snapCutToRim,
                                                    options_.dropOutsideSourceField,
-                                                   options_.drawTornPiecesUpToTheCut};
+                                                   options_.drawTornPiecesUpToTheCut,
+                                                   options_.warpOncePerFrame,
+                                                   options_.capturedViewShiftForTests};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
                           context_->capabilities().maxMultiviewViewCount);

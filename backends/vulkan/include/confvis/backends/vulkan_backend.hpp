@@ -81,6 +81,16 @@ struct VulkanOptions {
   // `prepass_pass_gpu_seconds` gives each pass's GPU time (benchmarks; on lavapipe each
   // timestamp waits for the work before it).
   bool timePrepassPasses = false;
+  // Conformal mode: the bent triangles' tessellation, warp and split at the cut (the pre-pass's
+  // tessellated lists) run once a frame, captured by transform feedback into a buffer that every
+  // wall and eye draws with its own projection, where the device has VK_EXT_transform_feedback
+  // (lavapipe has; a device the application made, external_device.hpp, is not asked to).
+  // False, or a device without it: every wall's and eye's draw redoes them.
+  bool warpOncePerFrame = true;
+  // Conformal mode, once a frame: the captured triangles are drawn with the projection and
+  // headlight of the wall this many walls further on (cyclically): a deliberately wrong render
+  // for tests.
+  std::uint32_t capturedViewShiftForTests = 0;
 };
 
 struct VulkanDeviceInfo {
