@@ -128,8 +128,10 @@ std::vector<int> codomainTriangleOfVertices(const SphereDiskMesh& domain,
   return triangles;
 }
 
-// One direction map: rasterise `domain` on the sphere, carry each texel through the disks into
-// `codomain`. alpha from the domain triangle's lit flag; `covered` marks every rasterised texel.
+// One direction map's pass: rasterise `domain` on the sphere, carry each texel through the disks
+// into `codomain`. alpha from the domain triangle's lit flag; `covered` marks every rasterised
+// texel. Set up once (on the thread that built the codomain's locator), then its raster tasks run
+// on any thread, in one loop with the other direction's.
 //
 // Along a span of texels in one domain triangle the homogeneous disk point h = (sum w_i z_i,
 // sum w_i) is linear in x. In a codomain triangle its homogeneous barycentric coordinates L and
@@ -139,17 +141,39 @@ std::vector<int> codomainTriangleOfVertices(const SphereDiskMesh& domain,
 // codomain disk: clamped). At 256 texels a face (cave5, 20 cm) texels stay ~2 to a codomain
 // triangle, so a texel evaluates its frame afresh; only where at least kLinearRun texels of the
 // span are left is the rest of the run inside one triangle stepped linearly.
-void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codomain,
-                      const detail::DiskLocator& codomainDisk, int threads, CubeMap& out,
-                      std::vector<std::uint8_t>& covered, Progress* progress) {
-  const int n = out.faceSize;
-  covered.assign(6 * static_cast<std::size_t>(n) * n, 0);
-  const std::vector<CodomainFrame> frames = codomainFrames(codomain, codomainDisk);
-  const std::vector<int> vertexHints = codomainTriangleOfVertices(domain, codomainDisk);
-  const std::function<void()> onTaskDone = [progress] {
-    if (progress) progress->advance();
-  };
-  auto shadeSpan = [&](const detail::RasterSpan& span, ShadeState& state) {
+class DirectionPass {
+ public:
+  // `covered` is sized and cleared here; `out` must have the bake's face size.
+  DirectionPass(const SphereDiskMesh& domain, const SphereDiskMesh& codomain,
+                const detail::DiskLocator& codomainDisk, CubeMap& out,
+                std::vector<std::uint8_t>& covered)
+      : domain_(domain),
+        codomain_(codomain),
+        codomainDisk_(codomainDisk),
+        out_(out),
+        covered_(covered),
+        frames_(codomainFrames(codomain, codomainDisk)),
+        vertexHints_(codomainTriangleOfVertices(domain, codomainDisk)),
+        raster_(domain.sphere, domain.triangles, out.faceSize) {
+    covered.assign(6 * static_cast<std::size_t>(out.faceSize) * out.faceSize, 0);
+  }
+
+  std::size_t taskCount() const { return raster_.taskCount(); }
+  void runTask(std::size_t task) {
+    raster_.runTask<ShadeState>(task, [this](const detail::RasterSpan& span, ShadeState& state) {
+      shadeSpan(span, state);
+    });
+  }
+
+ private:
+  void shadeSpan(const detail::RasterSpan& span, ShadeState& state) const {
+    const SphereDiskMesh& domain = domain_;
+    const SphereDiskMesh& codomain = codomain_;
+    const detail::DiskLocator& codomainDisk = codomainDisk_;
+    const std::vector<CodomainFrame>& frames = frames_;
+    const std::vector<int>& vertexHints = vertexHints_;
+    CubeMap& out = out_;
+    const int n = out.faceSize;
     const auto& tri = domain.triangles[span.triangle];
     if (state.triangle != span.triangle) {
       state.triangle = span.triangle;
@@ -227,11 +251,18 @@ void bakeDirectionMap(const SphereDiskMesh& domain, const SphereDiskMesh& codoma
       if (inside && count - k >= kLinearRun) k = shadeWhileInside(k, frames[current]);
     }
     if (current >= 0) state.hint = current;
-    std::fill_n(&covered[detail::texelIndex(span.face, span.xBegin, span.y, n)], count, 1);
-  };
-  detail::rasterizeSphereMesh<ShadeState>(domain.sphere, domain.triangles, n, threads, onTaskDone,
-                                          shadeSpan);
-}
+    std::fill_n(&covered_[detail::texelIndex(span.face, span.xBegin, span.y, n)], count, 1);
+  }
+
+  const SphereDiskMesh& domain_;
+  const SphereDiskMesh& codomain_;
+  const detail::DiskLocator& codomainDisk_;
+  CubeMap& out_;
+  std::vector<std::uint8_t>& covered_;
+  const std::vector<CodomainFrame> frames_;
+  const std::vector<int> vertexHints_;
+  const detail::SphereRaster raster_;
+};
 
 }  // namespace
 
@@ -262,49 +293,72 @@ void bakeRetargetMapInto(const DisplayMap& map, int resolution, const BakeOption
   BakeTimings t;
   const auto start = SteadyClock::now();
   auto stage = SteadyClock::now();
-  // Both point-location structures at once (a tracked head re-bakes: wall time counts).
-  std::optional<detail::DiskLocator> sourceLocator, targetLocator;
-  std::optional<detail::MobiusBlend> sourceBlend, targetBlend;
   const bool smooth = options.interpolation == MapInterpolation::Mobius;
-  detail::parallelFor(2, options.threads, [&](std::size_t which) {
-    if (which == 0) {
-      sourceLocator.emplace(map.source.disk, map.source.triangles);
-      if (smooth) sourceBlend.emplace(map.source);
-    } else {
-      targetLocator.emplace(map.target.disk, map.target.triangles);
-      if (smooth) targetBlend.emplace(map.target);
-    }
-  });
-  const detail::DiskLocator& sourceDisk = *sourceLocator;
-  const detail::DiskLocator& targetDisk = *targetLocator;
-  t.locators = secondsSince(stage);
-
   const int bands = (resolution + detail::kRasterBandRows - 1) / detail::kRasterBandRows;
   std::unique_ptr<Progress> progress;
   if (options.showProgress) progress = std::make_unique<Progress>("bake", 12 * bands, true);
-
   result.reference = options.reference;
   for (CubeMap* cube : {&result.ray, &result.geom})
     if (cube->faceSize != resolution) *cube = CubeMap(resolution);
-  std::vector<std::uint8_t> rayCovered, geomCovered;
   // ray: from the target (physical directions) to the source; geom: the other way round.
-  // Returns the seconds it took.
-  auto bakeDirection = [&](bool ray, CubeMap& out, std::vector<std::uint8_t>& covered) {
-    const SphereDiskMesh& domain = ray ? map.target : map.source;
-    const SphereDiskMesh& codomain = ray ? map.source : map.target;
-    const detail::DiskLocator& codomainDisk = ray ? sourceDisk : targetDisk;
-    const auto directionStart = SteadyClock::now();
-    if (smooth)
-      detail::bakeDirectionMapSmooth(domain, codomain, ray ? *targetBlend : *sourceBlend,
-                                     ray ? *sourceBlend : *targetBlend, codomainDisk,
-                                     options.threads, out, covered, progress.get());
-    else
-      bakeDirectionMap(domain, codomain, codomainDisk, options.threads, out, covered,
-                       progress.get());
-    return secondsSince(directionStart);
-  };
-  t.ray = bakeDirection(true, result.ray, rayCovered);
-  t.geom = bakeDirection(false, result.geom, geomCovered);
+  std::vector<std::uint8_t> rayCovered, geomCovered;
+  std::optional<detail::DiskLocator> sourceLocator, targetLocator;
+  if (smooth) {
+    // Both point-location structures at once (a tracked head re-bakes: wall time counts).
+    std::optional<detail::MobiusBlend> sourceBlend, targetBlend;
+    detail::parallelFor(2, options.threads, [&](std::size_t which) {
+      if (which == 0) {
+        sourceLocator.emplace(map.source.disk, map.source.triangles);
+        sourceBlend.emplace(map.source);
+      } else {
+        targetLocator.emplace(map.target.disk, map.target.triangles);
+        targetBlend.emplace(map.target);
+      }
+    });
+    t.locators = secondsSince(stage);
+    auto bakeDirection = [&](bool ray, CubeMap& out, std::vector<std::uint8_t>& covered) {
+      const auto directionStart = SteadyClock::now();
+      detail::bakeDirectionMapSmooth(ray ? map.target : map.source, ray ? map.source : map.target,
+                                     ray ? *targetBlend : *sourceBlend,
+                                     ray ? *sourceBlend : *targetBlend,
+                                     ray ? *sourceLocator : *targetLocator, options.threads, out,
+                                     covered, progress.get());
+      return secondsSince(directionStart);
+    };
+    t.ray = bakeDirection(true, result.ray, rayCovered);
+    t.geom = bakeDirection(false, result.geom, geomCovered);
+  } else {
+    // Each of two threads builds one disk's locator and the pass that reads it (its codomain
+    // frames, vertex hints and raster bins); then the raster tasks of both passes share one
+    // parallel loop, so that no thread waits at a barrier between the passes.
+    std::optional<DirectionPass> rayPass, geomPass;
+    detail::parallelFor(2, options.threads, [&](std::size_t which) {
+      if (which == 0) {
+        sourceLocator.emplace(map.source.disk, map.source.triangles);
+        rayPass.emplace(map.target, map.source, *sourceLocator, result.ray, rayCovered);
+      } else {
+        targetLocator.emplace(map.target.disk, map.target.triangles);
+        geomPass.emplace(map.source, map.target, *targetLocator, result.geom, geomCovered);
+      }
+    });
+    t.locators = secondsSince(stage);
+    stage = SteadyClock::now();
+    const std::size_t rayTasks = rayPass->taskCount();
+    std::atomic<double> raySeconds{0.0}, geomSeconds{0.0};
+    detail::parallelFor(rayTasks + geomPass->taskCount(), options.threads, [&](std::size_t task) {
+      const auto taskStart = SteadyClock::now();
+      const bool ray = task < rayTasks;
+      if (ray) rayPass->runTask(task);
+      else geomPass->runTask(task - rayTasks);
+      std::atomic<double>& seconds = ray ? raySeconds : geomSeconds;
+      seconds.fetch_add(secondsSince(taskStart), std::memory_order_relaxed);
+      if (progress) progress->advance();
+    });
+    // The joint loop's wall time, shared out in proportion to each pass's task time.
+    const double joint = secondsSince(stage), busy = raySeconds + geomSeconds;
+    t.ray = busy > 0 ? joint * raySeconds / busy : 0.5 * joint;
+    t.geom = joint - t.ray;
+  }
   stage = SteadyClock::now();
   detail::parallelFor(2, options.threads, [&](std::size_t which) {
     CubeMap& cube = which == 0 ? result.ray : result.geom;

@@ -50,33 +50,38 @@ struct RasterBinEntry {
 std::vector<std::vector<RasterBinEntry>> binSphereTriangles(
     const std::vector<Vec3d>& sphere, const std::vector<std::array<int, 3>>& triangles, int n);
 
-template <class TaskState, class ShadeSpan>
-void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
-                         const std::vector<std::array<int, 3>>& triangles, int n, int threads,
-                         const std::function<void()>& onTaskDone, ShadeSpan&& shadeSpan) {
-  struct Edges {
-    std::array<Vec3d, 3> e;  // e[i] . d = det(d, corner i+1, corner i+2)
-    double sign;             // sign of det(a, b, c); 0 for a degenerate triangle
-  };
-  std::vector<Edges> edges(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    const Vec3d& a = sphere[triangles[t][0]];
-    const Vec3d& b = sphere[triangles[t][1]];
-    const Vec3d& c = sphere[triangles[t][2]];
-    edges[t].e = {cross(b, c), cross(c, a), cross(a, b)};
-    const double det = dot(a, edges[t].e[0]);
-    edges[t].sign = det > 0 ? 1.0 : det < 0 ? -1.0 : 0.0;
+// A mesh set up for rasterising: its triangles' edge functions and its (face, band) bins. Made
+// once, then its tasks run in any order on any thread (rasterizeSphereMesh runs them all; the
+// bake runs two meshes' tasks in one parallel loop, so that neither pass waits for the other).
+class SphereRaster {
+ public:
+  SphereRaster(const std::vector<Vec3d>& sphere, const std::vector<std::array<int, 3>>& triangles,
+               int n)
+      : n_(n), bands_((n + kRasterBandRows - 1) / kRasterBandRows), edges_(triangles.size()) {
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const Vec3d& a = sphere[triangles[t][0]];
+      const Vec3d& b = sphere[triangles[t][1]];
+      const Vec3d& c = sphere[triangles[t][2]];
+      edges_[t].e = {cross(b, c), cross(c, a), cross(a, b)};
+      const double det = dot(a, edges_[t].e[0]);
+      edges_[t].sign = det > 0 ? 1.0 : det < 0 ? -1.0 : 0.0;
+    }
+    bins_ = binSphereTriangles(sphere, triangles, n);
   }
-  const auto bins = binSphereTriangles(sphere, triangles, n);
-  const int bands = (n + kRasterBandRows - 1) / kRasterBandRows;
-  parallelFor(bins.size(), threads, [&](std::size_t task) {
-    const CubeFace face = kCubeFaces[task / bands];
-    const int band = static_cast<int>(task % bands);
+
+  std::size_t taskCount() const { return bins_.size(); }
+
+  // Calls shadeSpan(span, state) for every span of task `task`, with a fresh TaskState.
+  template <class TaskState, class ShadeSpan>
+  void runTask(std::size_t task, ShadeSpan&& shadeSpan) const {
+    const int n = n_;
+    const CubeFace face = kCubeFaces[task / bands_];
+    const int band = static_cast<int>(task % bands_);
     const int bandY0 = band * kRasterBandRows, bandY1 = std::min(n, bandY0 + kRasterBandRows) - 1;
     const CubeFaceFrame frame = cubeFaceFrame(face);
     TaskState state{};
-    for (const RasterBinEntry& entry : bins[task]) {
-      const Edges& tri = edges[entry.triangle];
+    for (const RasterBinEntry& entry : bins_[task]) {
+      const Edges& tri = edges_[entry.triangle];
       if (tri.sign == 0) continue;
       const int yBegin = std::max(entry.y0, bandY0), yEnd = std::min(entry.y1, bandY1);
       RasterSpan span{face, 0, 0, 0, entry.triangle, {}, {}};
@@ -132,6 +137,25 @@ void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
         shadeSpan(span, state);
       }
     }
+  }
+
+ private:
+  struct Edges {
+    std::array<Vec3d, 3> e;  // e[i] . d = det(d, corner i+1, corner i+2)
+    double sign;             // sign of det(a, b, c); 0 for a degenerate triangle
+  };
+  int n_, bands_;
+  std::vector<Edges> edges_;
+  std::vector<std::vector<RasterBinEntry>> bins_;
+};
+
+template <class TaskState, class ShadeSpan>
+void rasterizeSphereMesh(const std::vector<Vec3d>& sphere,
+                         const std::vector<std::array<int, 3>>& triangles, int n, int threads,
+                         const std::function<void()>& onTaskDone, ShadeSpan&& shadeSpan) {
+  const SphereRaster raster(sphere, triangles, n);
+  parallelFor(raster.taskCount(), threads, [&](std::size_t task) {
+    raster.runTask<TaskState>(task, shadeSpan);
     if (onTaskDone) onTaskDone();
   });
 }
