@@ -24,6 +24,7 @@
 #include "confvis/base/image.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/base/progress.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/base/vec3.hpp"
 #include "confvis/base/checksum.hpp"
 #include "confvis/base/input_limits.hpp"
