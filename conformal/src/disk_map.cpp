@@ -194,9 +194,10 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
 }
 
 // The hole the Euclidean route cuts: the annulus, the hole's corners (its inner boundary) and
-// its centre (for the flattening guess), on `points`.
+// its centre (for the flattening guess), on `*points` (the input's), or where null `ownPoints`.
 struct Hole {
-  std::vector<Vec3d> points;
+  const std::vector<Vec3d>* points = nullptr;
+  std::vector<Vec3d> ownPoints;
   IntrinsicTriangulation annulus;
   std::vector<int> inner;
   Vec3d centre{0.0};
@@ -206,7 +207,7 @@ struct Hole {
 Hole faceHole(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& triangles,
               const IntrinsicTriangulation& whole, int face) {
   const auto& t = triangles[face];
-  return {points, withoutFace(whole, face), {t[0], t[1], t[2]},
+  return {&points, {}, withoutFace(whole, face), {t[0], t[1], t[2]},
           (1.0 / 3) * (points[t[0]] + points[t[1]] + points[t[2]])};
 }
 
@@ -224,9 +225,9 @@ Hole vertexStarHole(const std::vector<Vec3d>& points,
   };
   if (whole.vertexOnBoundary[removed]) fail("is on the boundary");
   Hole hole;
-  hole.points.reserve(points.size() - 1);
+  hole.ownPoints.reserve(points.size() - 1);
   for (int v = 0; v < whole.vertexCount; ++v)
-    if (v != removed) hole.points.push_back(points[v]);
+    if (v != removed) hole.ownPoints.push_back(points[v]);
   hole.centre = points[removed];
   auto renumbered = [&](int v) { return v < removed ? v : v - 1; };
   std::vector<std::array<int, 3>> kept;
@@ -245,13 +246,13 @@ Hole vertexStarHole(const std::vector<Vec3d>& points,
     }
   }
   hole.annulus = buildTriangulation(whole.vertexCount - 1, kept);
-  return hole;
+  return hole;  // points: null, ownPoints are its points
 }
 
 DiskMap mapAnnulus(const Hole& hole, const DiskMapOptions& options) {
   DiskMap result;
   IntrinsicTriangulation tri = hole.annulus;
-  const std::vector<Vec3d>& points = hole.points;
+  const std::vector<Vec3d>& points = hole.points ? *hole.points : hole.ownPoints;
   const std::vector<double> embedded = embeddedEdgeLengths(tri, points);
   CirclePackingMetric metric = initialMetric(tri, embedded, options.scheme, Geometry::Euclidean);
   if (options.flatteningGuess)

@@ -164,11 +164,11 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
   // Newton converges in under 10 iterations here; one that needs more is stuck on a mesh only
   // Delaunay flips can flatten (thin bezel strips), so give up early and retry with flips.
   options.maxIterations = 30;
-  // The spherical route first: it removes no face, so a symmetric mesh gets an exactly symmetric
-  // map, and it is far closer to the true Riemann map. The Euclidean route's removed face (one
-  // triangle near the display's centre, made a round hole) bends the map around it: on
-  // flat-wall at 20 cm, mirrored points then differ by 59 px (median) against 0.0000 px
-  // (tools/bench/alignment_bench.cpp), for about 1.5 x the flow time (conformal/README.md).
+  // The spherical route first: it removes nothing, so a symmetric mesh gets an exactly symmetric
+  // map, and it is far closer to the true Riemann map. The Euclidean route's hole (a vertex's
+  // star, chooseRemovedVertex, made round) bends the map around it; it keeps a mirror symmetry
+  // only where the vertex lies on the mirror plane (cave5, flat-wall: 0.0000 px; cave3 9 px,
+  // tools/bench/alignment_bench.cpp), for about 1.5 x the flow time (conformal/README.md).
   options.geometry = route == DisplayMapRoute::Spherical    ? conformal::Geometry::Spherical
                      : route == DisplayMapRoute::Hyperbolic ? conformal::Geometry::Hyperbolic
                                                             : conformal::Geometry::Euclidean;

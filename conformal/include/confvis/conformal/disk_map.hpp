@@ -1,10 +1,10 @@
 #pragma once
 // The Riemann map of a topological disk onto the unit disk, by one of three routes (the map is
 // unique up to a Möbius map of the disk, so the routes can be compared after alignment):
-// - Euclidean (dissertation §8.2, the default): remove a face (nearly) farthest from the boundary,
-//   flatten the annulus by Euclidean Ricci flow with zero target curvature everywhere (a flat
-//   cylinder with straight boundaries), cut it along a shortest edge path, lay it out, scale
-//   the period to 2πi, apply exp, normalise the outer circle to 1.
+// - Euclidean (dissertation §8.2, the default): remove a face (nearly) farthest from the boundary
+//   (or a given vertex's star), flatten the annulus by Euclidean Ricci flow with zero target
+//   curvature everywhere (a flat cylinder with straight boundaries), cut it along a shortest edge
+//   path, lay it out, scale the period to 2πi, apply exp, normalise the outer circle to 1.
 // - Spherical: spherical flow with zero target curvature everywhere, boundary included; by
 //   Gauss-Bonnet the area is 2π and the boundary a geodesic: a hemisphere. Laid out on the unit
 //   sphere, the boundary's pole turned to +z, stereographic projection onto the unit disk.
