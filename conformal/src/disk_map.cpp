@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <string>
 #include <algorithm>
 
 #include "confvis/base/error.hpp"
@@ -192,18 +193,70 @@ std::vector<std::array<Complex, 3>> layOut(const IntrinsicTriangulation& tri,
   return detail::developFaces<Complex>(tri, edgeCut, placeFirstEdge, placeThird);
 }
 
-// `whole`: the unflipped triangulation of `triangles`.
-DiskMap mapAnnulus(const std::vector<Vec3d>& points,
-                   const std::vector<std::array<int, 3>>& triangles,
-                   const IntrinsicTriangulation& whole, int removedFace,
-                   const DiskMapOptions& options) {
+// The hole the Euclidean route cuts: the annulus, the hole's corners (its inner boundary) and
+// its centre (for the flattening guess), on `*points` (the input's), or where null `ownPoints`.
+struct Hole {
+  const std::vector<Vec3d>* points = nullptr;
+  std::vector<Vec3d> ownPoints;
+  IntrinsicTriangulation annulus;
+  std::vector<int> inner;
+  Vec3d centre{0.0};
+};
+
+// One face removed: the annulus keeps the whole disk's numbering.
+Hole faceHole(const std::vector<Vec3d>& points, const std::vector<std::array<int, 3>>& triangles,
+              const IntrinsicTriangulation& whole, int face) {
+  const auto& t = triangles[face];
+  return {&points, {}, withoutFace(whole, face), {t[0], t[1], t[2]},
+          (1.0 / 3) * (points[t[0]] + points[t[1]] + points[t[2]])};
+}
+
+// The star of vertex `removed` removed: the annulus numbers the other vertices in order (those
+// after `removed` one lower), as the flow needs no isolated vertex.
+Hole vertexStarHole(const std::vector<Vec3d>& points,
+                    const std::vector<std::array<int, 3>>& triangles,
+                    const IntrinsicTriangulation& whole, int removed) {
+  if (removed < 0 || removed >= whole.vertexCount)
+    throw Error(ErrorCode::InvalidInput, "removed vertex " + std::to_string(removed) +
+                                             " out of range");
+  auto fail = [&](const std::string& why) {
+    throw Error(ErrorCode::InvalidInput,
+                "removed vertex " + std::to_string(removed) + " " + why + " (choose one farther in)");
+  };
+  if (whole.vertexOnBoundary[removed]) fail("is on the boundary");
+  Hole hole;
+  hole.ownPoints.reserve(points.size() - 1);
+  for (int v = 0; v < whole.vertexCount; ++v)
+    if (v != removed) hole.ownPoints.push_back(points[v]);
+  hole.centre = points[removed];
+  auto renumbered = [&](int v) { return v < removed ? v : v - 1; };
+  std::vector<std::array<int, 3>> kept;
+  kept.reserve(triangles.size());
+  std::vector<char> isInner(whole.vertexCount, 0);
+  for (const auto& t : triangles) {
+    if (t[0] != removed && t[1] != removed && t[2] != removed) {
+      kept.push_back({renumbered(t[0]), renumbered(t[1]), renumbered(t[2])});
+      continue;
+    }
+    for (int v : t) {
+      if (v == removed || isInner[v]) continue;
+      if (whole.vertexOnBoundary[v]) fail("has a neighbour on the boundary");
+      isInner[v] = 1;
+      hole.inner.push_back(renumbered(v));
+    }
+  }
+  hole.annulus = buildTriangulation(whole.vertexCount - 1, kept);
+  return hole;  // points: null, ownPoints are its points
+}
+
+DiskMap mapAnnulus(const Hole& hole, const DiskMapOptions& options) {
   DiskMap result;
-  result.removedFace = removedFace;
-  IntrinsicTriangulation tri = withoutFace(whole, removedFace);
+  IntrinsicTriangulation tri = hole.annulus;
+  const std::vector<Vec3d>& points = hole.points ? *hole.points : hole.ownPoints;
   const std::vector<double> embedded = embeddedEdgeLengths(tri, points);
   CirclePackingMetric metric = initialMetric(tri, embedded, options.scheme, Geometry::Euclidean);
   if (options.flatteningGuess)
-    detail::addFlatteningGuess(tri, points, embedded, triangles[removedFace], metric);
+    detail::addFlatteningGuess(tri, points, embedded, hole.inner, hole.centre, metric);
   const RicciFlowOptions flowOptions = detail::diskMapFlowOptions(options);
   result.flow = runRicciFlow(tri, metric, std::vector<double>(tri.vertexCount, 0.0), flowOptions);
   result.usedFlips = result.flow.flipsStartedAt >= 0;
@@ -211,13 +264,10 @@ DiskMap mapAnnulus(const std::vector<Vec3d>& points,
   if (!detail::euclideanEdgeLengths(tri, metric, lengths))
     throw Error(ErrorCode::Internal, "flat metric has an edge without a length");
 
-  // Inner boundary = the removed face's corners.
+  // Inner boundary = the hole's corners.
   std::vector<char> inner(tri.vertexCount, 0);
-  std::vector<int> innerVertices;
-  for (int v : triangles[removedFace]) {
-    inner[v] = 1;
-    innerVertices.push_back(v);
-  }
+  const std::vector<int>& innerVertices = hole.inner;
+  for (int v : innerVertices) inner[v] = 1;
   // Shortest interior edge path from the inner to the outer boundary: the first outer vertex
   // Dijkstra settles.
   std::vector<int> parent;
@@ -293,11 +343,23 @@ DiskMap withFlipRetry(const DiskMapOptions& options, Route route) {
 DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
                          const std::vector<std::array<int, 3>>& triangles,
                          const IntrinsicTriangulation& whole, const DiskMapOptions& options) {
-  const int removed = options.removedFace >= 0
-                          ? options.removedFace
-                          : faceToRemove(whole, embeddedEdgeLengths(whole, points));
+  const int removedVertex = options.removedVertex;
+  const int removed = removedVertex >= 0        ? -1
+                      : options.removedFace >= 0 ? options.removedFace
+                                                 : faceToRemove(whole, embeddedEdgeLengths(whole, points));
   if (removed >= static_cast<int>(triangles.size()))
     throw Error(ErrorCode::InvalidInput, "removed face index out of range");
+  const Hole hole = removedVertex >= 0 ? vertexStarHole(points, triangles, whole, removedVertex)
+                                       : faceHole(points, triangles, whole, removed);
+  // The removed vertex maps to the hole's centre, 0 (the circle the inner boundary maps to
+  // is centred there).
+  auto annulusMap = [&](const DiskMapOptions& o) {
+    DiskMap map = mapAnnulus(hole, o);
+    map.removedFace = removed;
+    map.removedVertex = removedVertex;
+    if (removedVertex >= 0) map.uv.insert(map.uv.begin() + removedVertex, 0.0);
+    return map;
+  };
   // The guess corrects the embedded metric, which tangential and Thurston packings do not start
   // from: over the 720 maps of tools/bench/flow_sweep.sh it cost them Newton steps (mean 4.94 ->
   // 5.16 and 5.01 -> 5.59) while the other four gained (e.g. virtual 5.55 -> 5.15).
@@ -305,14 +367,14 @@ DiskMap euclideanDiskMap(const std::vector<Vec3d>& points,
   if (options.scheme == Scheme::Tangential || options.scheme == Scheme::Thurston)
     routeOptions.flatteningGuess = false;
   return withFlipRetry(routeOptions, [&](const DiskMapOptions& o) {
-    if (!o.flatteningGuess) return mapAnnulus(points, triangles, whole, removed, o);
+    if (!o.flatteningGuess) return annulusMap(o);
     try {
-      return mapAnnulus(points, triangles, whole, removed, o);
+      return annulusMap(o);
     } catch (const Error& e) {
       if (e.code() != ErrorCode::Unreachable) throw;
       DiskMapOptions unguessed = o;
       unguessed.flatteningGuess = false;
-      return mapAnnulus(points, triangles, whole, removed, unguessed);
+      return annulusMap(unguessed);
     }
   });
 }

@@ -16,16 +16,16 @@ struct Cone {
   int copies;
 };
 
-// Boundary corners (not of the removed face) whose angle α differs from π by more than ~17°.
+// Boundary corners (not of the hole) whose angle α differs from π by more than ~17°.
 // Copies of one point (a cut's centre on a cut-open sphere) make one cone with their mean
 // exponent: each copy's sector opens alike, so the factor is counted once around the point.
 std::vector<Cone> boundaryCones(const IntrinsicTriangulation& tri, const std::vector<Vec3d>& points,
                                 const std::vector<double>& lengths,
-                                const std::array<int, 3>& removed) {
+                                const std::vector<int>& inner) {
   std::vector<double> angle(tri.vertexCount, 0.0), sideSum(tri.vertexCount, 0.0);
   std::vector<int> sides(tri.vertexCount, 0);
   auto isOuterBoundary = [&](int v) {
-    return tri.vertexOnBoundary[v] && std::find(removed.begin(), removed.end(), v) == removed.end();
+    return tri.vertexOnBoundary[v] && std::find(inner.begin(), inner.end(), v) == inner.end();
   };
   for (int f = 0; f < tri.faceCount(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -97,10 +97,9 @@ bool euclideanEdgeLengths(const IntrinsicTriangulation& tri, const CirclePacking
 }
 
 void addFlatteningGuess(const IntrinsicTriangulation& annulus, const std::vector<Vec3d>& points,
-                        const std::vector<double>& lengths, const std::array<int, 3>& removed,
-                        CirclePackingMetric& metric) {
-  const Vec3d centre = (1.0 / 3) * (points[removed[0]] + points[removed[1]] + points[removed[2]]);
-  const std::vector<Cone> cones = boundaryCones(annulus, points, lengths, removed);
+                        const std::vector<double>& lengths, const std::vector<int>& inner,
+                        const Vec3d& centre, CirclePackingMetric& metric) {
+  const std::vector<Cone> cones = boundaryCones(annulus, points, lengths, inner);
   const int n = annulus.vertexCount, coneCount = static_cast<int>(cones.size());
   // The log term and each cone's term apart: a cone can be weakened alone.
   std::vector<double> logTerm(n), coneTerm(static_cast<std::size_t>(n) * coneCount);

@@ -65,6 +65,57 @@ int chooseRemovedFace(const SphereDiskMesh& mesh, const conformal::IntrinsicTria
   return best;  // -1: computeDiskMap picks (and reports a mesh too coarse)
 }
 
+// The vertex whose star the Euclidean route removes instead of one face, so that the hole is as
+// symmetric as the display (one triangle never is: cave5's fast map was 3.5 px off its mirror
+// image, conformal/README.md "Presets"): among the vertices nearly as far from the boundary as
+// the farthest (within 5 %, arc lengths as chooseRemovedFace) whose neighbours are all off the
+// boundary and whose triangles are all of at least a quarter of the median area, the one
+// nearest to those candidates' mean direction. A mirror symmetry of the mesh maps the
+// candidates onto themselves, so their mean lies on the mirror plane, and so does the vertex
+// picked where the mesh has one there (cave5: the floor's centre). -1 if there is none.
+int chooseRemovedVertex(const SphereDiskMesh& mesh, const conformal::IntrinsicTriangulation& tri) {
+  std::vector<double> arc(tri.edgeCount());
+  for (int e = 0; e < tri.edgeCount(); ++e)
+    arc[e] = angleBetween(mesh.sphere[tri.edgeVertices[e][0]], mesh.sphere[tri.edgeVertices[e][1]]);
+  const std::vector<double> distance = conformal::distanceToBoundary(tri, arc);
+  std::vector<double> area(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    area[f] =
+        norm(cross(mesh.sphere[t[1]] - mesh.sphere[t[0]], mesh.sphere[t[2]] - mesh.sphere[t[0]]));
+  }
+  std::vector<double> sorted = area;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double minArea = 0.25 * sorted[sorted.size() / 2];
+  // Vertices with a small triangle or a boundary neighbour are out.
+  std::vector<char> eligible(tri.vertexCount, 1);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    bool touchesBoundary = false;
+    for (int v : t) touchesBoundary = touchesBoundary || tri.vertexOnBoundary[v];
+    for (int v : t)
+      if (touchesBoundary || area[f] < minArea) eligible[v] = 0;
+  }
+  double farthest = 0;
+  for (int v = 0; v < tri.vertexCount; ++v)
+    if (eligible[v]) farthest = std::max(farthest, distance[v]);
+  if (!(farthest > 0)) return -1;
+  std::vector<int> candidates;
+  glm::dvec3 mean(0.0);
+  for (int v = 0; v < tri.vertexCount; ++v)
+    if (eligible[v] && distance[v] >= 0.95 * farthest) {
+      candidates.push_back(v);
+      mean += mesh.sphere[v];
+    }
+  int best = -1;
+  double bestDistance2 = std::numeric_limits<double>::infinity();
+  for (int v : candidates) {
+    const glm::dvec3 d = mesh.sphere[v] - mean / static_cast<double>(candidates.size());
+    if (dot(d, d) < bestDistance2) bestDistance2 = dot(d, d), best = v;
+  }
+  return best;
+}
+
 // `uv` moved by a disk automorphism so that the boundary's points, weighted by their share of
 // the boundary on the sphere, have mean 0 (a conformal barycentre, fixed-point iteration).
 std::vector<std::complex<double>> centredOnBoundary(const SphereDiskMesh& mesh,
@@ -113,11 +164,11 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
   // Newton converges in under 10 iterations here; one that needs more is stuck on a mesh only
   // Delaunay flips can flatten (thin bezel strips), so give up early and retry with flips.
   options.maxIterations = 30;
-  // The spherical route first: it removes no face, so a symmetric mesh gets an exactly symmetric
-  // map, and it is far closer to the true Riemann map. The Euclidean route's removed face (one
-  // triangle near the display's centre, made a round hole) bends the map around it: on
-  // flat-wall at 20 cm, mirrored points then differ by 59 px (median) against 0.0000 px
-  // (tools/bench/alignment_bench.cpp), for about 1.5 x the flow time (conformal/README.md).
+  // The spherical route first: it removes nothing, so a symmetric mesh gets an exactly symmetric
+  // map, and it is far closer to the true Riemann map. The Euclidean route's hole (a vertex's
+  // star, chooseRemovedVertex, made round) bends the map around it; it keeps a mirror symmetry
+  // only where the vertex lies on the mirror plane (cave5, flat-wall: 0.0000 px; cave3 9 px,
+  // tools/bench/alignment_bench.cpp), for about 1.5 x the flow time (conformal/README.md).
   options.geometry = route == DisplayMapRoute::Spherical    ? conformal::Geometry::Spherical
                      : route == DisplayMapRoute::Hyperbolic ? conformal::Geometry::Hyperbolic
                                                             : conformal::Geometry::Euclidean;
@@ -165,7 +216,8 @@ FlowResult runDiskMap(const SphereDiskMesh& mesh, DisplayMapRoute route, bool gr
     // The spherical energy is not convex; the Euclidean route's always is.
     conformal::DiskMapOptions euclidean = options;
     euclidean.geometry = conformal::Geometry::Euclidean;
-    euclidean.removedFace = chooseRemovedFace(mesh, whole);
+    euclidean.removedVertex = chooseRemovedVertex(mesh, whole);
+    if (euclidean.removedVertex < 0) euclidean.removedFace = chooseRemovedFace(mesh, whole);
     // Start near the flat metric: 6 + 5 -> 4 + 5 Newton steps for cave5 at 20 cm (README).
     euclidean.flatteningGuess = true;
     euclidean.maxIterations = 30;

@@ -1,10 +1,10 @@
 #pragma once
 // The Riemann map of a topological disk onto the unit disk, by one of three routes (the map is
 // unique up to a Möbius map of the disk, so the routes can be compared after alignment):
-// - Euclidean (dissertation §8.2, the default): remove a face (nearly) farthest from the boundary,
-//   flatten the annulus by Euclidean Ricci flow with zero target curvature everywhere (a flat
-//   cylinder with straight boundaries), cut it along a shortest edge path, lay it out, scale
-//   the period to 2πi, apply exp, normalise the outer circle to 1.
+// - Euclidean (dissertation §8.2, the default): remove a face (nearly) farthest from the boundary
+//   (or a given vertex's star), flatten the annulus by Euclidean Ricci flow with zero target
+//   curvature everywhere (a flat cylinder with straight boundaries), cut it along a shortest edge
+//   path, lay it out, scale the period to 2πi, apply exp, normalise the outer circle to 1.
 // - Spherical: spherical flow with zero target curvature everywhere, boundary included; by
 //   Gauss-Bonnet the area is 2π and the boundary a geodesic: a hemisphere. Laid out on the unit
 //   sphere, the boundary's pole turned to +z, stereographic projection onto the unit disk.
@@ -41,6 +41,12 @@ struct DiskMapOptions {
   // Euclidean route: face to remove; -1 = the roundest of those (nearly) farthest from the
   // boundary.
   int removedFace = -1;
+  // Euclidean route: an interior vertex whose star (the fan of its triangles) to remove instead
+  // of one face; -1 = none (removedFace decides). The hole then has the star's symmetry: a
+  // vertex on a mirror plane whose star is mirror-symmetric keeps the map mirror-symmetric,
+  // where one triangle cannot. None of its neighbours may be on the boundary. The vertex maps
+  // to the hole's centre, 0 (the star's triangles are then the hole's fill).
+  int removedVertex = -1;
   // Euclidean route: start the flow from an estimate of the flattening factor (log map around
   // the removed face, corners opened to π) instead of the embedded metric. Fewer Newton steps on
   // refined display templates (cave5 20 cm: 6 + 5 -> 4 + 5) and on the lopsided benchmark disks
@@ -69,7 +75,8 @@ struct DiskMapOptions {
 struct DiskMap {
   std::vector<std::complex<double>> uv;  // per input vertex, in the closed unit disk
   Geometry geometry = Geometry::Euclidean;  // the route taken
-  int removedFace = -1;                     // Euclidean route only
+  int removedFace = -1;                     // Euclidean route only (-1 with a removed vertex)
+  int removedVertex = -1;                   // Euclidean route with options.removedVertex
   int boundaryUpdates = 0;  // hyperbolic route: flows run, one per boundary target update
   bool usedFlips = false;
   RicciFlowReport flow;     // the hyperbolic route's counts and times summed over its flows
