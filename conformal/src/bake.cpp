@@ -8,18 +8,17 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "bake_count.hpp"
 #include "cube_texels.hpp"
 #include "disk_locator.hpp"
 #include "parallel_for.hpp"
 #include "smooth_interpolation.hpp"
 #include "sphere_raster.hpp"
-#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 
 namespace {
-
 
 constexpr int kMaxResolution = 8192;
 

@@ -12,12 +12,11 @@
 #include <vector>
 
 #include "confvis/base/error.hpp"
-#include "confvis/conformal/bake_verdict.hpp"
 #include "confvis/base/stopwatch.hpp"
+#include "confvis/conformal/bake_verdict.hpp"
 
 namespace confvis {
 namespace {
-
 
 struct Attempt {
   double edgeLength;

@@ -13,12 +13,12 @@
 #include "confvis/base/json_text.hpp"
 #include "confvis/base/png_io.hpp"
 #include "confvis/base/progress.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/baked_map_quality.hpp"
 #include "confvis/conformal/obj_output.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "confvis/engine/version.hpp"
 #include "parallel_for.hpp"
-#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 
@@ -26,7 +26,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
-
 
 constexpr int kDiskPreviewSize = 512;
 

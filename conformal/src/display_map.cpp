@@ -12,17 +12,16 @@
 
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/disk_map.hpp"
 #include "confvis/conformal/display_template.hpp"
 #include "confvis/conformal/mobius.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "display_alignment.hpp"
 #include "flow_progress.hpp"
-#include "confvis/base/stopwatch.hpp"
 
 namespace confvis {
 namespace {
-
 
 SphereDiskMesh projectToSphere(const TemplateMesh& mesh, const glm::dvec3& reference) {
   SphereDiskMesh out;
