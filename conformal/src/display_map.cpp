@@ -36,24 +36,38 @@ SphereDiskMesh projectToSphere(const TemplateMesh& mesh, const glm::dvec3& refer
   return out;
 }
 
-// The face the Riemann map removes (dissertation 8.3.3: "at the center of the mesh, or farthest
-// from the original boundary"), among faces of at least a quarter of the median area: a tiny
-// bezel-corner face at the centre of a tiled wall would make the annulus extremely thin inside
-// and the flow crawl. Distances are arc lengths on the sphere along edges.
-int chooseRemovedFace(const SphereDiskMesh& mesh, const conformal::IntrinsicTriangulation& tri) {
+// What both choices of the Euclidean route's hole weigh: each vertex's distance from the
+// boundary (arc lengths on the sphere along edges) and each face's area, with the smallest area
+// a hole may touch (a quarter of the median: a tiny bezel-corner face at the centre of a tiled
+// wall would make the annulus extremely thin inside and the flow crawl).
+struct HoleCandidates {
+  std::vector<double> distance, area;
+  double minArea = 0;
+};
+
+HoleCandidates measureHoleCandidates(const SphereDiskMesh& mesh,
+                                     const conformal::IntrinsicTriangulation& tri) {
+  HoleCandidates out;
   std::vector<double> arc(tri.edgeCount());
   for (int e = 0; e < tri.edgeCount(); ++e)
     arc[e] = angleBetween(mesh.sphere[tri.edgeVertices[e][0]], mesh.sphere[tri.edgeVertices[e][1]]);
-  const std::vector<double> distance = conformal::distanceToBoundary(tri, arc);
-  std::vector<double> area(mesh.triangles.size());
+  out.distance = conformal::distanceToBoundary(tri, arc);
+  out.area.resize(mesh.triangles.size());
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto& t = mesh.triangles[f];
-    area[f] =
+    out.area[f] =
         norm(cross(mesh.sphere[t[1]] - mesh.sphere[t[0]], mesh.sphere[t[2]] - mesh.sphere[t[0]]));
   }
-  std::vector<double> sorted = area;
+  std::vector<double> sorted = out.area;
   std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double minArea = 0.25 * sorted[sorted.size() / 2];
+  out.minArea = 0.25 * sorted[sorted.size() / 2];
+  return out;
+}
+
+// The face the Riemann map removes (dissertation 8.3.3: "at the center of the mesh, or farthest
+// from the original boundary"), among faces of at least a quarter of the median area.
+int chooseRemovedFace(const SphereDiskMesh& mesh, const conformal::IntrinsicTriangulation& tri) {
+  const auto [distance, area, minArea] = measureHoleCandidates(mesh, tri);
   int best = -1;
   double bestScore = 0;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -73,19 +87,7 @@ int chooseRemovedFace(const SphereDiskMesh& mesh, const conformal::IntrinsicTria
 // candidates onto themselves, so their mean lies on the mirror plane, and so does the vertex
 // picked where the mesh has one there (cave5: the floor's centre). -1 if there is none.
 int chooseRemovedVertex(const SphereDiskMesh& mesh, const conformal::IntrinsicTriangulation& tri) {
-  std::vector<double> arc(tri.edgeCount());
-  for (int e = 0; e < tri.edgeCount(); ++e)
-    arc[e] = angleBetween(mesh.sphere[tri.edgeVertices[e][0]], mesh.sphere[tri.edgeVertices[e][1]]);
-  const std::vector<double> distance = conformal::distanceToBoundary(tri, arc);
-  std::vector<double> area(mesh.triangles.size());
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
-    area[f] =
-        norm(cross(mesh.sphere[t[1]] - mesh.sphere[t[0]], mesh.sphere[t[2]] - mesh.sphere[t[0]]));
-  }
-  std::vector<double> sorted = area;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const double minArea = 0.25 * sorted[sorted.size() / 2];
+  const auto [distance, area, minArea] = measureHoleCandidates(mesh, tri);
   // Vertices with a small triangle or a boundary neighbour are out.
   std::vector<char> eligible(tri.vertexCount, 1);
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
