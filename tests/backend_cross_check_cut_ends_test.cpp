@@ -53,10 +53,7 @@ std::optional<glm::dvec2> dotCentroid(const ImageRGBA& image, int k) {
 
 TEST(BackendCrossCheckCutEnds, DotsNextToTheCutsEndLandWhereEmbreeShowsThem) {
   const DisplayConfig config = test::loadConfig("cave5");
-  BakeDisplayOptions options;
-  options.useCache = false;
-  options.resolution = 128;
-  const RetargetMap map = bakeDisplay(config, options).map;
+  const RetargetMap map = test::bakeUncached(config, 128);
   const Wall& left = config.walls[1];
   ASSERT_EQ(left.name, "left");
   Scene scene;

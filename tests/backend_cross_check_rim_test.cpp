@@ -38,10 +38,7 @@ struct RimCase {
   RenderResult embree;
 
   RimCase() {
-    BakeDisplayOptions options;
-    options.useCache = false;
-    options.resolution = 128;
-    map = bakeDisplay(config, options).map;
+    map = test::bakeUncached(config, 128);
     settings.mode = RenderMode::Conformal;
     settings.head.position = config.reference;
     settings.camera.position = config.reference;

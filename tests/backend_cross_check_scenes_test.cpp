@@ -39,10 +39,7 @@ double worstAgainstEmbree(const RenderResult& vulkan, const RenderResult& embree
 
 TEST(BackendCrossCheckScenes, TheTunnelThroughTheBakedCave5MapMatchesEmbreeForEveryEye) {
   const DisplayConfig config = test::loadConfig("cave5");
-  BakeDisplayOptions options;
-  options.useCache = false;
-  options.resolution = 128;
-  const RetargetMap map = bakeDisplay(config, options).map;
+  const RetargetMap map = test::bakeUncached(config, 128);
   const Scene tunnel = builtinScene("checker-tunnel");
   const RenderSettings settings = conformal(config, {Eye::Center, Eye::Left, Eye::Right});
   EmbreeBackend embree;

@@ -37,10 +37,7 @@ struct CrossCheck {
       : config(test::loadConfig(configName)),
         scene(builtinScene("checker-sphere", sceneOptions)),
         pixels(wallPixels) {
-    BakeDisplayOptions options;
-    options.useCache = false;
-    options.resolution = 128;
-    map = bakeDisplay(config, options).map;
+    map = test::bakeUncached(config, 128);
     EmbreeBackend backend;
     backend.setScene(scene);
     embree = backend.render(config, &map, centreEye(config, pixels));

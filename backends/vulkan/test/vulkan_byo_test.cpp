@@ -45,10 +45,7 @@ struct Fixture {
   RetargetMap map;
   RenderResult backend;
   explicit Fixture(const std::string& configName) : config(test::loadConfig(configName)) {
-    BakeDisplayOptions bake;
-    bake.useCache = false;
-    bake.resolution = kBakeResolution;
-    map = bakeDisplay(config, bake).map;
+    map = test::bakeUncached(config, kBakeResolution);
     test::ValidatedBackend vulkan;
     vulkan->setScene(scene);
     RenderSettings settings;

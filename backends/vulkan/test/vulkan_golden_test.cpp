@@ -82,10 +82,7 @@ fs::path goldenPath(const GoldenCase& c, Eye eye) {
 }
 
 RetargetMap bakedMap(const DisplayConfig& config) {
-  BakeDisplayOptions options;
-  options.useCache = false;
-  options.resolution = kBakeResolution;
-  return bakeDisplay(config, options).map;
+  return test::bakeUncached(config, kBakeResolution);
 }
 
 std::optional<RetargetMap> mapFor(MapKind kind, const DisplayConfig& config) {

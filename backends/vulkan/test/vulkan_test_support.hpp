@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "confvis/backends/vulkan_backend.hpp"
+#include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/display_config.hpp"
 #include "vulkan_image_checks.hpp"
 
@@ -22,6 +23,15 @@ namespace confvis::test {
 
 inline DisplayConfig loadConfig(const std::string& name) {
   return loadDisplayConfig(std::filesystem::path(CONFVIS_SOURCE_DIR) / "configs" / (name + ".json"));
+}
+
+// `config`'s map baked afresh (not from a cache another test or run may have left) at cube face
+// size `resolution`, with the defaults otherwise.
+inline RetargetMap bakeUncached(const DisplayConfig& config, int resolution) {
+  BakeDisplayOptions options;
+  options.useCache = false;
+  options.resolution = resolution;
+  return bakeDisplay(config, options).map;
 }
 
 // The tests always render on lavapipe (Mesa's CPU Vulkan driver, package mesa-vulkan-drivers), so

@@ -27,10 +27,7 @@ TEST(VulkanWarpOncePerFrame, DrawsWhatEachWallsOwnTessellationDraws) {
   // cave5's baked map: bent triangles, and torn pieces at its cut that the geometry shader
   // splits, on several walls; two eyes in one multiview pass.
   const DisplayConfig config = test::loadConfig("cave5");
-  BakeDisplayOptions bake;
-  bake.useCache = false;
-  bake.resolution = 64;
-  const RetargetMap map = bakeDisplay(config, bake).map;
+  const RetargetMap map = test::bakeUncached(config, 64);
   BuiltinSceneOptions sceneOptions;
   sceneOptions.subdivision = 40;  // 19k triangles
   const Scene scene = builtinScene("checker-sphere", sceneOptions);
