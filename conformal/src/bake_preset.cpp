@@ -93,11 +93,11 @@ BakePresetSettings presetSettings(BakePreset preset, const DisplayConfig& config
   const bool convexCorner = smallestBoundaryCornerAngle(config) < kPi - 0.2;
   if (preset == BakePreset::Accurate && convexCorner) settings.edgeScale = 0.4;
   // The Euclidean route's flow costs 2.5x less than the spherical one's (cave5 at 20 cm: 9 against
-  // 23 ms, the re-bake's budget is 33), but its removed face bends the map: measured mirror
-  // asymmetry of the fast bake (tools/bench/alignment_bench.cpp --route euclidean, p50 / max px):
-  // cave5 0.009 / 3.5 and cave6 0 (against fast's own p99 error of 54 px on cave5), where every
-  // display with a convex boundary corner goes far off: cave4 1.5 / 12, md230x6 61 / 1212,
-  // cave3 52 / 1106, flat-wall 93 / 541 (spherical: <= 0.02 on all). conformal/README.md, "Presets".
+  // 23 ms, the re-bake's budget is 33), but its hole can bend the map: mirror asymmetry of the
+  // fast bake (tools/bench/alignment_bench.cpp --route euclidean, max px) with the vertex-star
+  // hole: cave5 and cave6 0.0000, where displays with convex boundary corners go off (cave3
+  // left/right 9.1, md230x6 top/bottom 2941; with the earlier one-face hole cave4 12, flat-wall
+  // 541; spherical: <= 0.02 on all). conformal/README.md, "Presets".
   if (preset == BakePreset::Fast && !convexCorner) settings.route = DisplayMapRoute::Euclidean;
   return settings;
 }

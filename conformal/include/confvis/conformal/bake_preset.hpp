@@ -63,9 +63,8 @@ double smallestBoundaryCornerAngle(const DisplayConfig& config);
 // cave3 (corners of 2π/3) measured p99 2.1 px at 0.5 against 0.90 px at 0.4, where cave5 (no
 // convex corner) meets its goal at 0.5 (conformal/README.md, "Map accuracy"). `fast` takes the
 // Euclidean route (2.5x cheaper flow) where the display has no convex boundary corner: there its
-// removed face leaves the map mirror-symmetric to a few px (cave5: max 3.5 px), where it bends
-// the maps of cave3, cave4, md230x6 and flat-wall by 12 to 1200 px (conformal/README.md,
-// "Presets").
+// hole (a vertex's star on the mirror plane) keeps the map mirror-symmetric (cave5: 0.0000 px),
+// where cave3's and md230x6's go px to 1000s of px off (conformal/README.md, "Presets").
 BakePresetSettings presetSettings(BakePreset preset, const DisplayConfig& config);
 
 // The settings of a display map that the config does not hold (route, grading, interpolation), as
