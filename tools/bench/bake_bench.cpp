@@ -17,7 +17,6 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <chrono>
 #include <optional>
 #include <cstdio>
 #include <sstream>
@@ -25,6 +24,7 @@
 #include <thread>
 #include <vector>
 
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/bake.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/conformal/bake_preset.hpp"
@@ -33,13 +33,8 @@
 #include "confvis/engine/display_config.hpp"
 
 using namespace confvis;
-using Clock = std::chrono::steady_clock;
 
 namespace {
-
-double secondsSince(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
 
 // CPU seconds of the whole process (all threads): on a shared machine wall times inflate with
 // the load, CPU time much less.
@@ -141,7 +136,7 @@ int main(int argc, char** argv) {
         map.ray = CubeMap(n);
         map.geom = CubeMap(n);
         for (int r = 0; r < repeat; ++r) {
-          const auto start = Clock::now();
+          const auto start = SteadyClock::now();
           const double cpuStart = processCpuSeconds();
           DisplayMapOptions mapOptions;
           mapOptions.route =
@@ -177,7 +172,7 @@ int main(int argc, char** argv) {
         }
         std::vector<double> baseline;
         for (int r = 0; r < std::max(3, repeat); ++r) {
-          const auto start = Clock::now();
+          const auto start = SteadyClock::now();
           const RetargetMap identity = RetargetMap::identity(n);
           baseline.push_back(secondsSince(start));
         }

@@ -16,7 +16,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -28,13 +27,13 @@
 #include "confvis/backends/vulkan_backend.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/png_io.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "confvis/conformal/bake_display.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_image_checks.hpp"  // closed-form image comparison shared with the tests
 #include "vulkan_test_maps.hpp"     // analytic maps shared with the tests
 
 using namespace confvis;
-using Clock = std::chrono::steady_clock;
 
 namespace {
 
@@ -96,11 +95,11 @@ std::vector<Timing> timeInterleaved(const std::vector<TimedRun>& runs, const Dis
   for (int i = 0; i < repeats; ++i)
     for (std::size_t r = 0; r < runs.size(); ++r) {
       const RenderSettings frameSettings = settingsFor(runs[r]);
-      const auto start = Clock::now();
+      const auto start = SteadyClock::now();
       const double cpuStart = cpuSeconds();
       timings[r].last = runs[r].backend->render(config, runs[r].map, frameSettings);
       cpu[r].push_back(cpuSeconds() - cpuStart);
-      wall[r].push_back(std::chrono::duration<double>(Clock::now() - start).count());
+      wall[r].push_back(secondsSince(start));
       // The device's own time (timestamps around the pre-pass and the render passes): on a GPU
       // the host's submissions, waits and readback dominate the wall clock.
       const std::optional<VulkanFrameStats>& vulkan = timings[r].last.stats.vulkan;

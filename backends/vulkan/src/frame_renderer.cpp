@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstring>
 #include <functional>
 #include <string_view>
 
 #include "confvis/backends/conformal_warp.hpp"
 #include "confvis/backends/vulkan/warp_interface.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "map_images.hpp"
 #include "vk_check.hpp"
 
@@ -320,15 +320,14 @@ void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
     prepassPassSeconds_.clear();
     if (!prepassReused_) {
       prepassCurrent_ = false;  // until the submission below has completed
-      const auto start = std::chrono::steady_clock::now();
+      const auto start = SteadyClock::now();
       context_.submitAndWait([&](VkCommandBuffer cmd) {
         stopwatch_.start(cmd);
         prepass_.record(cmd, scene, frameSet_, warpSet_, thresholds,
                         timePrepassPasses_ ? &stopwatch_ : nullptr);
         stopwatch_.stop(cmd);
       });
-      prepassSeconds_ =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      prepassSeconds_ = secondsSince(start);
       prepassGpuSeconds_ = stopwatch_.seconds(&prepassPassSeconds_);
       addGpuSeconds(prepassGpuSeconds_);
       prepassInputs_ = inputs;

@@ -1,7 +1,6 @@
 #include "confvis/backends/vulkan_backend.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -11,6 +10,7 @@
 #include "confvis/backends/vulkan/external_device.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/progress.hpp"
+#include "confvis/base/stopwatch.hpp"
 #include "context.hpp"
 #include "frame_plan.hpp"
 #include "frame_renderer.hpp"
@@ -163,7 +163,7 @@ class VulkanBackend final : public VulkanRenderer {
                          const RenderSettings& settings,
                          const std::function<void(const Frame&)>& draw) {
     if (!scene_) throw Error(ErrorCode::InvalidInput, "Vulkan backend: render before setScene");
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = SteadyClock::now();
     const vulkan::TessellationOptions tessellation{options_.tessellationErrorPixels,
                                                    options_.maxSegmentDegrees, options_.tessellate,
                                                    options_.splitAlongCut, options_.reusePrepass,
@@ -182,8 +182,7 @@ class VulkanBackend final : public VulkanRenderer {
     const vulkan::GpuScene& drawn = conformal ? sceneForWarp(config, *map, settings) : *scene_;
     draw(Frame{plan, drawn, conformal ? map : nullptr, progress});
     progress.finish();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = secondsSince(start);
     FrameStats stats;
     stats.backend = "vulkan";
     stats.seconds = seconds;
