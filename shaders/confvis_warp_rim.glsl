@@ -59,4 +59,66 @@ vec3 confvisSnapToRim(vec3 g, vec3 wOwn) {
   return hidden > 0.0 ? length(g) * (cos(shown) * u + sin(shown) * tangent) : g;
 }
 
+// The ray map's virtual direction at physical direction p (unit): T_ray, as Embree's rays see it.
+vec3 confvisRayDirection(vec3 p) { return normalize(textureLod(confvisCoverageMap, p, 0.0).xyz); }
+
+// One Gauss-Newton step on the ray map from physical direction p toward the physical direction
+// that shows virtual direction v (both unit): the tangent step at p, by central differences an
+// eighth of a ray-map texel wide (next to a leaf T_ray is flat, and wider differences, secants
+// over a texel, stalled the steps a texel short of the rim). Zero where they are degenerate.
+vec3 confvisRayNewtonStep(vec3 v, vec3 p) {
+  float h = 0.25 / float(textureSize(confvisCoverageMap, 0).x);
+  vec3 t1 = normalize(cross(p, abs(p.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
+  vec3 t2 = cross(p, t1);
+  vec3 a = (confvisRayDirection(normalize(p + h * t1)) - confvisRayDirection(normalize(p - h * t1))) /
+           (2.0 * h);
+  vec3 b = (confvisRayDirection(normalize(p + h * t2)) - confvisRayDirection(normalize(p - h * t2))) /
+           (2.0 * h);
+  vec3 f = v - confvisRayDirection(p);
+  float aa = dot(a, a), ab = dot(a, b), bb = dot(b, b), af = dot(a, f), bf = dot(b, f);
+  float det = aa * bb - ab * ab;
+  if (!(det > 1e-8 * aa * bb)) return vec3(0.0);
+  return ((bb * af - ab * bf) * t1 + (aa * bf - ab * af) * t2) / det;
+}
+
+// The geom map's bilinear footprint at v lies inside the source field (all four texels valid).
+bool confvisGeomFootprintValid(vec3 v) {
+  vec4 alpha = textureGather(confvisGeomMap, v, 3);
+  return min(min(alpha.x, alpha.y), min(alpha.z, alpha.w)) >= 0.5;
+}
+
+// The cut's ends (issue 23, point 5). Where the source's cut ends (a leaf of the cut: cave5's
+// ceiling-corner directions), T_geom grows like a square root (T_ray like a square), and every
+// lookup of the geom map, the four-texel one included, puts a point on or right next to the leaf
+// up to a few texels short of the rim where the ray map (Embree's rays) shows it. g: the geom
+// lookup's physical direction for virtual direction v (both unit). Where the first Gauss-Newton
+// step on the ray map moves g by more than half a ray texel and the geom footprint lies inside
+// the source field (not next to the source field's rim, where the ray map's extension past the
+// display is no inverse of anything: md230x6's corners under a hemisphere), up to ten steps move
+// g to where the ray map shows v, each kept only where the display shows it and the ray map's
+// residual shrinks. Elsewhere the maps agree within the interpolation's error and g is returned.
+vec3 confvisRefineOnRayMap(vec3 v, vec3 g) {
+  float texel = 2.0 / float(textureSize(confvisCoverageMap, 0).x);
+  vec3 first = confvisRayNewtonStep(v, g);
+  bool refine = length(first) > 0.5 * texel && confvisGeomFootprintValid(v) &&
+                confvisDisplayShows(g);
+  vec3 p = g;
+  float residual = distance(confvisRayDirection(g), v);
+  for (int k = 0; k < (refine ? 10 : 0); ++k) {
+    vec3 s = k == 0 ? first : confvisRayNewtonStep(v, p);
+    s *= min(1.0, 4.0 * texel / max(length(s), 1e-20));  // at most four texels a step
+    // Halved while it leaves the display: the ray map's extension past the rim (extrapolated)
+    // pulls the steps of a point on the leaf, which the display shows on the rim, beyond it.
+    bool taken = false;
+    for (int halving = 0; halving < 6 && !taken; ++halving, s *= 0.5) {
+      vec3 q = normalize(p + s);
+      float r = distance(confvisRayDirection(q), v);
+      taken = r < residual && confvisDisplayShows(q);
+      p = taken ? q : p;
+      residual = taken ? r : residual;
+    }
+  }
+  return p;
+}
+
 #endif  // CONFVIS_WARP_RIM_GLSL
