@@ -64,8 +64,8 @@ vec3 confvisRayDirection(vec3 p) { return normalize(textureLod(confvisCoverageMa
 
 // One Gauss-Newton step on the ray map from physical direction p toward the physical direction
 // that shows virtual direction v (both unit): the tangent step at p, by central differences an
-// eighth of a ray-map texel wide (next to a leaf T_ray is flat, and wider differences, secants
-// over a texel, stalled the steps a texel short of the rim). Zero where they are degenerate.
+// eighth of a ray-map texel wide (the bilinear map's own slope there, not a secant over its
+// texels: next to a leaf T_ray is flat to first order). Zero where they are degenerate.
 vec3 confvisRayNewtonStep(vec3 v, vec3 p) {
   float h = 0.25 / float(textureSize(confvisCoverageMap, 0).x);
   vec3 t1 = normalize(cross(p, abs(p.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
@@ -107,8 +107,8 @@ vec3 confvisRefineOnRayMap(vec3 v, vec3 g) {
   for (int k = 0; k < (refine ? 10 : 0); ++k) {
     vec3 s = k == 0 ? first : confvisRayNewtonStep(v, p);
     s *= min(1.0, 4.0 * texel / max(length(s), 1e-20));  // at most four texels a step
-    // Halved while it leaves the display: the ray map's extension past the rim (extrapolated)
-    // pulls the steps of a point on the leaf, which the display shows on the rim, beyond it.
+    // Halved while it leaves the display (the ray map's extension past the rim is extrapolated)
+    // or does not shrink the residual.
     bool taken = false;
     for (int halving = 0; halving < 6 && !taken; ++halving, s *= 0.5) {
       vec3 q = normalize(p + s);
