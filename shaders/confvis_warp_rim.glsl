@@ -36,11 +36,17 @@ bool confvisDisplayShows(vec3 d) { return textureLod(confvisCoverageMap, d, 0.0)
 // 32 steps, then 10 bisection steps on the coverage (within a tenth of a ray-map texel). g as it
 // was where the display does not show it or no rim lies within the search (16 geom texels, at
 // most 0.3 radians). Loops rather than ifs: lavapipe runs both sides of an if for all SIMD lanes.
+vec3 confvisSnapToRimWithin(vec3 g, vec3 wOwn, float reach);
+
 vec3 confvisSnapToRim(vec3 g, vec3 wOwn) {
+  return confvisSnapToRimWithin(g, wOwn, min(16.0 * 2.0 / float(textureSize(confvisGeomMap, 0).x), 0.3));
+}
+
+// confvisSnapToRim searching within `reach` radians.
+vec3 confvisSnapToRimWithin(vec3 g, vec3 wOwn, float reach) {
   vec3 u = normalize(g), own = normalize(wOwn);
   vec3 away = u * dot(u, own) - own;  // tangent at u, pointing away from own
   float awayLength = length(away);
-  float reach = min(16.0 * 2.0 / float(textureSize(confvisGeomMap, 0).x), 0.3);
   float step = max(1.0 / float(textureSize(confvisCoverageMap, 0).x), reach / 32.0);
   bool search = confvisDisplayShows(u) && awayLength > 1e-6;
   vec3 tangent = away / max(awayLength, 1e-6);
@@ -66,7 +72,7 @@ vec3 confvisRayDirection(vec3 p) { return normalize(textureLod(confvisCoverageMa
 // that shows virtual direction v (both unit): the tangent step at p, by central differences an
 // eighth of a ray-map texel wide (the bilinear map's own slope there, not a secant over its
 // texels: next to a leaf T_ray is flat to first order). Zero where they are degenerate.
-vec3 confvisRayNewtonStep(vec3 v, vec3 p) {
+vec3 confvisRayNewtonStep(vec3 v, vec3 p, out float stretch) {
   float h = 0.25 / float(textureSize(confvisCoverageMap, 0).x);
   vec3 t1 = normalize(cross(p, abs(p.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0)));
   vec3 t2 = cross(p, t1);
@@ -77,6 +83,7 @@ vec3 confvisRayNewtonStep(vec3 v, vec3 p) {
   vec3 f = v - confvisRayDirection(p);
   float aa = dot(a, a), ab = dot(a, b), bb = dot(b, b), af = dot(a, f), bf = dot(b, f);
   float det = aa * bb - ab * ab;
+  stretch = sqrt(sqrt(max(det, 0.0)));  // the geometric mean of T_ray's two stretches at p
   if (!(det > 1e-8 * aa * bb)) return vec3(0.0);
   return ((bb * af - ab * bf) * t1 + (aa * bf - ab * af) * t2) / det;
 }
@@ -99,13 +106,14 @@ bool confvisGeomFootprintValid(vec3 v) {
 // residual shrinks. Elsewhere the maps agree within the interpolation's error and g is returned.
 vec3 confvisRefineOnRayMap(vec3 v, vec3 g) {
   float texel = 2.0 / float(textureSize(confvisCoverageMap, 0).x);
-  vec3 first = confvisRayNewtonStep(v, g);
+  float stretch;
+  vec3 first = confvisRayNewtonStep(v, g, stretch);
   bool refine = length(first) > 0.5 * texel && confvisGeomFootprintValid(v) &&
                 confvisDisplayShows(g);
   vec3 p = g;
   float residual = distance(confvisRayDirection(g), v);
   for (int k = 0; k < (refine ? 10 : 0); ++k) {
-    vec3 s = k == 0 ? first : confvisRayNewtonStep(v, p);
+    vec3 s = k == 0 ? first : confvisRayNewtonStep(v, p, stretch);
     s *= min(1.0, 4.0 * texel / max(length(s), 1e-20));  // at most four texels a step
     // Halved while it leaves the display (the ray map's extension past the rim is extrapolated)
     // or does not shrink the residual.
@@ -118,6 +126,14 @@ vec3 confvisRefineOnRayMap(vec3 v, vec3 g) {
       residual = taken ? r : residual;
     }
   }
+  // On the leaf itself T_ray is flat (its stretch vanishes like the distance to the leaf's image,
+  // a point of the rim), and the bilinear ray map's preimage of the leaf stays up to a texel
+  // below the rim, while Embree's pixels up to the rim see directions next to the leaf: where the
+  // refined point's stretch is below a quarter, it goes on, in the direction it came, to a rim
+  // within two ray texels.
+  if (refine) confvisRayNewtonStep(v, p, stretch);
+  for (int once = 0; once < (refine && stretch < 0.25 ? 1 : 0); ++once)
+    p = normalize(confvisSnapToRimWithin(p, g, 2.0 * texel));
   return p;
 }
 
