@@ -119,11 +119,14 @@ TEST(CliViewLive, MinimisedWindowPausesAndResumesWithoutValidationMessages) {
         startView("iconify-" + backend, "--backend " + backend + " --scale 0.05 --validate");
     const auto front = confvis::testing::waitForWindow(display, "confvis view: front", 30.0);
     ASSERT_TRUE(front) << "no window appeared: " << confvis::readTextFile(run.log);
-    sleepSeconds(0.7);
+    // Minimised only once frames are being drawn: under load the start-up after the window
+    // appears can outlast a fixed wait, and then no frame is ever seen paused.
+    ASSERT_TRUE(confvis::testing::waitForDrawnPixels(display, *front, 60.0))
+        << "the front window never showed a frame: " << confvis::readTextFile(run.log);
     setWmState(display, *front, kIconicState);
-    sleepSeconds(1.0);
+    sleepSeconds(1.5);
     setWmState(display, *front, kNormalState);
-    sleepSeconds(1.0);
+    sleepSeconds(1.5);
     const nlohmann::json report = closeAndReport(display, *front, run);
     XCloseDisplay(display);
 
