@@ -49,8 +49,10 @@ struct EmbreeBackend::Impl {
     GridEntry& entry = grids.at(gridKey(warp, mapFingerprint, wall, scale));
     if (!entry.tails) {
       const auto start = SteadyClock::now();
-      entry.tails = std::make_unique<embree::TailGrid>(warp, wall, spacingFor(warp, wall, scale),
-                                                       kTailGridMargin);
+      entry.tails = std::make_unique<embree::TailGrid>(
+          warp, wall,
+          embree::TailGrid::spacingFor(wall, warp.reference(), warp.map().resolution(), scale),
+          kTailGridMargin);
       buildSeconds += secondsSince(start);
     }
     return *entry.tails;

@@ -109,6 +109,11 @@ TailGrid::TailGrid(const ConformalWarp& warp, const Wall& wall, double spacing, 
   });
 }
 
+double TailGrid::spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,
+                            double outputScale) {
+  return kFCoarsening * WallMapGrid::spacingFor(wall, reference, mapResolution, outputScale);
+}
+
 bool TailGrid::at(const float* qx, const float* qy, int count, float* out) const {
   alignas(32) std::array<float, kPacketSize> gx, gy, mx, my;
   const float lastX = static_cast<float>(across_ - 1), lastY = static_cast<float>(down_ - 1);

@@ -21,6 +21,7 @@
 #include <glm/glm.hpp>
 
 #include "confvis/backends/conformal_warp.hpp"
+#include "confvis/backends/wall_map_grid.hpp"
 #include "confvis/engine/display_config.hpp"
 
 namespace confvis::embree {
@@ -30,7 +31,14 @@ class TailGrid {
   // Every how many F nodes an A, B node lies.
   static constexpr int kMomentStride = 4;
 
-  // `spacing`: F nodes about that many wall pixels apart (WallMapGrid::spacingFor); `margin`:
+  // F nodes kFCoarsening times as far apart as the WallMapGrid's (spacingFor): the tails are
+  // read at the lattice's nodes, 4 output pixels apart (tail_lattice.hpp), and a grid that
+  // fits in the caches costs less than its interpolation error (EmbreeTailGrid.*).
+  static constexpr double kFCoarsening = 2.0;
+  static double spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,
+                           double outputScale);
+
+  // `spacing`: F nodes about that many wall pixels apart (spacingFor); `margin`:
   // metres past each edge of the lit rectangle that the grid covers.
   TailGrid(const ConformalWarp& warp, const Wall& wall, double spacing, double margin);
 

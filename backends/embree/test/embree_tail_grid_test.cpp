@@ -102,7 +102,9 @@ TailErrors tailErrors(const std::string& wallName, Eye eye, const glm::dvec3& he
                                                  dilationMap().resolution(),
                                                  own.settings.resolutionScale);
   const WallMapGrid grid(warp, wall, spacing);
-  const TailGrid tailGrid(warp, wall, spacing, kMargin);
+  const TailGrid tailGrid(warp, wall,
+                          TailGrid::spacingFor(wall, warp.reference(), dilationMap().resolution(),
+                                               own.settings.resolutionScale), kMargin);
   CameraRays rays(own.planned.view, own.settings.camera, warp, grid, StereoRays::Exact, 12);
   rays.setTailGrid(&tailGrid);
   const CameraRays lastVertex(own.planned.view, own.settings.camera, warp, grid,

@@ -73,7 +73,9 @@ LatticeErrors latticeErrors(const std::string& wallName, Eye eye, const glm::dve
                                                  dilationMap().resolution(),
                                                  settings.resolutionScale);
   const WallMapGrid grid(warp, wall, spacing);
-  const TailGrid tailGrid(warp, wall, spacing, 0.3);
+  const TailGrid tailGrid(warp, wall,
+                          TailGrid::spacingFor(wall, warp.reference(), dilationMap().resolution(),
+                                               settings.resolutionScale), 0.3);
   CameraRays rays(planned.view, settings.camera, warp, grid, StereoRays::Exact, 12);
   if (asymptotes) rays.setTailGrid(&tailGrid);
   TileJob job;
