@@ -171,7 +171,9 @@ void TailLattice::build() {
       // every sample lies within the diameter of each corner, so its h lies within `spread` of
       // every corner's: at least the largest less it, at most the smallest plus it.
       const float spread = eyeDistance * 2.0f * asinAbove(0.5f * std::sqrt(chordSquared));
-      const float hLow = hMax - spread, hHigh = hMin + spread;
+      // (h is at most |e - c|: a bound past it would report a reach beyond every curve's,
+      // outside the ball the clearance query reaches, and march the cell's packets as curves.)
+      const float hLow = hMax - spread, hHigh = std::min(hMin + spread, eyeDistance);
       // The smallest reach in the cell (what the check weighs the offsets' error by) and the
       // largest (what the cell's samples report: CameraRays::exactTails' reach bounded above,
       // 1.0001 |e - c| at least as there, so that a packet is straight only where every curve

@@ -122,6 +122,10 @@ LatticeErrors latticeErrors(const std::string& wallName, Eye eye, const glm::dve
               // (two cell diagonals' angle times |e - c|, from the corners' h) allows; the
               // rebuilt start lies within.
               EXPECT_GE(reach[lane], exactReach[lane]);
+              // No farther than any curve bends (CameraRays::curvedReach, which the clearance
+              // query reaches 1 % beyond): else a scene beyond every curve would still have the
+              // cell's packets marched as curves.
+              EXPECT_LE(reach[lane], 1.001 * rays.curvedReach());
               const double spread = 2.0 * glm::length(glm::dvec3(rays.eyeFromCentre())) * 1.5 *
                                     kTailCellPixels * pixelAngle / std::sin(kAsymptoteAngle);
               EXPECT_LE(reach[lane], exactReach[lane] + spread);
