@@ -89,9 +89,9 @@ class CameraRays {
   // ray is from the eye towards W(p); packets turn it with targetShift()).
   void fastTargets(const float* px, const float* py, int count, float* run) const;
   // Exact stereo rays: the straight tail of the bent ray, its direction F(u) at [0, 3 kPacketSize)
-  // and its start W(last vertex) relative to the warp's centre at [3, 6 kPacketSize), both from
-  // the wall's grid (where the ray from c along u, or the last vertex, misses the wall: the cube
-  // map), and per lane `reach`, the farthest from c the curve bends (the eye's distance
+  // and its start relative to the warp's centre at [3, 6 kPacketSize): the asymptote from the
+  // tail grid where one is set (tailsAt), else W(last vertex) from the wall's grid (where the
+  // ray from c along u, or the last vertex, misses the wall: the cube map), and per lane `reach`, the farthest from c the curve bends (the eye's distance
   // included; 0 where unlit, infinite where the ray lies on a line through c and needs
   // curvedPath). Where the scene keeps beyond a lane's reach (setEmptyRadius), the tail alone is
   // traced. Returns the largest reach of the lit lanes.

@@ -13,7 +13,7 @@
 // with x = q - c, M(v) = |x| dF(x/|x|)/dx and M x = 0, so A = |x| dG/dr, B = |x| dG/du for
 // G(q) = F(dir(q - c)) (central differences of the cube map, one F-node spacing each side), and
 // M(v) w = a A + b B where w = a r + b u + gamma x (gamma = w.n / x.n is the same all over the
-// plane, a and b are affine in q). F is sampled as densely as the WallMapGrid (half a map texel);
+// plane, a and b are affine in q). F is sampled a map texel apart (kFCoarsening);
 // A and B, which move a hit r from c by |dA a + dB b| / r <= |dM| sin(4e-3) (hits lie beyond
 // h / sin(4e-3), h = |w| sin(angle(v, w))), on a grid kMomentStride times coarser.
 #include <vector>
