@@ -171,9 +171,10 @@ int main(int argc, char** argv) {
                "against plain stereo)");
   std::string profileMode;
   app.add_option("--profile", profileMode,
-                 "Only render `repeats` frames of one kind (plain, conformal or raw) after the "
+                 "Only render `repeats` frames of one kind after the "
                  "warm-up, for a profiler (perf, callgrind); prints nothing else")
-      ->check(CLI::IsMember({"plain", "conformal", "raw", "plain-stereo", "exact-stereo", "exact-moving"}));
+      ->check(CLI::IsMember({"plain", "conformal", "raw", "plain-stereo", "exact-stereo", "exact-moving",
+                        "fast-stereo", "fast-moving"}));
   EmbreeOptions embreeOptions;
   app.add_flag("--baseline-shading", embreeOptions.baselineShading,
                "The baseline (SSE2) shading code even where the CPU has AVX2");
@@ -221,8 +222,12 @@ int main(int argc, char** argv) {
       if (profileMode == "conformal") backend.render(config, &map, conformal);  // builds tables
       RenderSettings plainStereo = plain, exactStereo = conformal;
       plainStereo.eyes = exactStereo.eyes = {Eye::Left, Eye::Right};
+      RenderSettings fastStereo = exactStereo;
+      fastStereo.stereoRays = StereoRays::Fast;
       if (profileMode == "exact-stereo")
         for (int i = 0; i < 2; ++i) backend.render(config, &map, exactStereo);  // builds tables
+      if (profileMode == "fast-stereo" || profileMode == "fast-moving")
+        for (int i = 0; i < 2; ++i) backend.render(config, &map, fastStereo);  // builds tables
       for (int i = 0; i < repeats; ++i) {
         if (profileMode == "plain") backend.renderInto(config, nullptr, plain, frame);
         if (profileMode == "conformal") backend.renderInto(config, &map, conformal, frame);
@@ -232,6 +237,11 @@ int main(int argc, char** argv) {
         if (profileMode == "exact-moving") {  // a new head place every frame: no table
           exactStereo.head.position.x += 1e-4;
           backend.renderInto(config, &map, exactStereo, frame);
+        }
+        if (profileMode == "fast-stereo") backend.renderInto(config, &map, fastStereo, frame);
+        if (profileMode == "fast-moving") {
+          fastStereo.head.position.x += 1e-4;
+          backend.renderInto(config, &map, fastStereo, frame);
         }
       }
       return 0;

@@ -143,6 +143,29 @@ CameraRays::CameraRays(const WallView& view, const VirtualCamera& camera,
   if (!eyeAtReference_ && stereoRays == StereoRays::Fast) targetShift_ = packet_.eye;
 }
 
+void CameraRays::setTailGrid(const TailGrid* grid) {
+  // Stereo eyes of a wall's own rays only: an override's pixel is not the wall's pixel.
+  tailGrid_ = warp_ && !eyeAtReference_ && !custom_ && view_.wall ? grid : nullptr;
+  if (!tailGrid_) return;
+  // The ray from c parallel to p - e meets the wall's plane (n.(x - e) = -near) at
+  // q = c + k (p - e), k = (near + cNormal) / near: in wall pixels q = k p + offset.
+  const double near = view_.nearDistance, k = (near + cNormal_) / near;
+  const double offsetX = (cRight_ + (k - 1.0) * view_.left) * pixelsPerMetreX_;
+  const double offsetY = ((1.0 - k) * view_.top - cUp_) * pixelsPerMetreY_;
+  // w = e - c = a right + b up + gamma x, x = q - c: gamma = w.n / x.n, the same for every q;
+  // a = w.right - gamma x.right, b = w.up - gamma x.up, affine in q (tail_grid.hpp).
+  const double gamma = cNormal_ / (near + cNormal_);
+  AsymptoteFrame& f = asymptote_;
+  f.scale = static_cast<float>(k);
+  f.offsetX = static_cast<float>(offsetX);
+  f.offsetY = static_cast<float>(offsetY);
+  f.aBase = static_cast<float>(-cRight_ - gamma * (view_.left - cRight_) -
+                               gamma * offsetX / pixelsPerMetreX_);
+  f.aPerPx = static_cast<float>(-gamma * k / pixelsPerMetreX_);
+  f.bBase = static_cast<float>(-cUp_ - gamma * (view_.top - cUp_) + gamma * offsetY / pixelsPerMetreY_);
+  f.bPerPy = static_cast<float>(gamma * k / pixelsPerMetreY_);
+}
+
 glm::vec3 CameraRays::place(const glm::dvec3& p) const {
   return glm::vec3(cameraPosition_ + rotation_ * (p - reference_));
 }

@@ -18,6 +18,8 @@
 
 namespace confvis::embree {
 
+class TailGrid;
+
 inline constexpr int kMaxCurvedSegments = 32;
 // Camera samples traced together (one rtcIntersect8 packet).
 inline constexpr int kPacketSize = 8;
@@ -71,6 +73,12 @@ class CameraRays {
 
   double emptyRadius() const { return emptyRadius_; }
 
+  // Exact stereo rays: exactTails takes each tail as the curve's asymptote from `grid`
+  // (tail_grid.hpp; built for this view's wall, must outlive this object) wherever the packet's
+  // rays from c meet the grid; elsewhere, and for an override's rays, from the last vertex.
+  void setTailGrid(const TailGrid* grid);
+  const TailGrid* tailGrid() const { return tailGrid_; }
+
   // Per packet, in float, structure of arrays in a DirectionTable packet's layout, for `count`
   // (1..kPacketSize) samples at wall-pixel positions (px, py) (lanes from `count` on repeat a
   // valid position and are written as unlit). The per-sample rays and the tables both come from
@@ -81,9 +89,9 @@ class CameraRays {
   // ray is from the eye towards W(p); packets turn it with targetShift()).
   void fastTargets(const float* px, const float* py, int count, float* run) const;
   // Exact stereo rays: the straight tail of the bent ray, its direction F(u) at [0, 3 kPacketSize)
-  // and its start W(last vertex) relative to the warp's centre at [3, 6 kPacketSize), both from
-  // the wall's grid (where the ray from c along u, or the last vertex, misses the wall: the cube
-  // map), and per lane `reach`, the farthest from c the curve bends (the eye's distance
+  // and its start relative to the warp's centre at [3, 6 kPacketSize): the asymptote from the
+  // tail grid where one is set (tailsAt), else W(last vertex) from the wall's grid (where the
+  // ray from c along u, or the last vertex, misses the wall: the cube map), and per lane `reach`, the farthest from c the curve bends (the eye's distance
   // included; 0 where unlit, infinite where the ray lies on a line through c and needs
   // curvedPath). Where the scene keeps beyond a lane's reach (setEmptyRadius), the tail alone is
   // traced. Returns the largest reach of the lit lanes.
@@ -98,8 +106,15 @@ class CameraRays {
   void tailGeometry(const float* px, const float* py, TailGeometry& geometry) const;
   // tailGeometry and the unmasked tails (exactTails' run layout, unlit lanes included) of 8
   // positions, `count` of them meaningful (the cube map is asked only for those).
+  // With a tail grid (setTailGrid), the tails are the curves' asymptotes from it where every
+  // lane's ray from c meets it (asymptoteTails).
   void tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
                float* tails) const;
+  // tailsAt's tails from the tail grid: the asymptote c + M(v) w + s F(v), started on its line
+  // as far from c as the curve reaches (`geometry`: tailGeometry's); false where a lane's ray
+  // from c misses the grid (nothing written).
+  bool asymptoteTails(const float* px, const float* py, int count, const TailGeometry& geometry,
+                      float* tails) const;
   // The map's alpha at the samples' wall points (lanes from `count` on: 0).
   void pixelAlpha(const float* px, const float* py, int count, float* alpha) const;
   // exactTails' last step: `tails` into `run` where lit (alpha >= 0.5), zeros elsewhere; per
@@ -196,6 +211,12 @@ class CameraRays {
     glm::vec3 corner{0.0f}, across{0.0f}, down{0.0f};
   } packet_;
   glm::vec3 targetShift_{0.0f};
+  // The tail grid and this eye's constants for it (setTailGrid): q = scale p + offset in wall
+  // pixels; M w = a A + b B with a = aBase + aPerPx px, b = bBase + bPerPy py.
+  const TailGrid* tailGrid_ = nullptr;
+  struct AsymptoteFrame {
+    float scale = 1, offsetX = 0, offsetY = 0, aBase = 0, aPerPx = 0, bBase = 0, bPerPy = 0;
+  } asymptote_;
   const ConformalWarp* warp_ = nullptr;
   const WallMapGrid* grid_ = nullptr;
   StereoRays stereoRays_ = StereoRays::Exact;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "camera_rays.hpp"
+#include "tail_grid.hpp"
 
 namespace confvis::embree {
 
@@ -164,6 +165,7 @@ void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& ou
 void CameraRays::tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
                          float* tails) const {
   tailGeometry(px, py, geometry);
+  if (tailGrid_ && asymptoteTails(px, py, count, geometry, tails)) return;
   alignas(32) Lanes tailX, tailY, tailZ, fx, fy, fz;
   mapDirections(geometry.ux.data(), geometry.uy.data(), geometry.uz.data(), count, tailX.data(),
                 tailY.data(), tailZ.data());
@@ -200,6 +202,44 @@ float CameraRays::maskTails(const float* alpha, const float* laneReach, const fl
 void CameraRays::pixelAlpha(const float* px, const float* py, int count, float* alpha) const {
   alignas(32) Lanes fx, fy, fz;
   pixelSamples(px, py, count, fx.data(), fy.data(), fz.data(), alpha);
+}
+
+bool CameraRays::asymptoteTails(const float* px, const float* py, int count,
+                                const TailGeometry& geometry, float* tails) const {
+  const AsymptoteFrame& f = asymptote_;
+  alignas(32) Lanes positionX, positionY, qx, qy;
+  std::memcpy(positionX.data(), px, sizeof positionX);
+  std::memcpy(positionY.data(), py, sizeof positionY);
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    qx[lane] = f.scale * positionX[lane] + f.offsetX;
+    qy[lane] = f.scale * positionY[lane] + f.offsetY;
+  }
+  alignas(32) std::array<float, 9 * kPacketSize> grid;  // F, A, B
+  if (!tailGrid_->at(qx.data(), qy.data(), count, grid.data())) return false;
+  const float eyeDistance = glm::length(packet_.eye);
+  alignas(32) Lanes out[6];
+  for (int lane = 0; lane < kPacketSize; ++lane) {
+    const float fx = grid[lane], fy = grid[kPacketSize + lane], fz = grid[2 * kPacketSize + lane];
+    const float inverseLength = 1.0f / std::sqrt(fx * fx + fy * fy + fz * fz);
+    const float dx = fx * inverseLength, dy = fy * inverseLength, dz = fz * inverseLength;
+    const float a = f.aBase + f.aPerPx * positionX[lane];
+    const float b = f.bBase + f.bPerPy * positionY[lane];
+    const float mx = a * grid[3 * kPacketSize + lane] + b * grid[6 * kPacketSize + lane];
+    const float my = a * grid[4 * kPacketSize + lane] + b * grid[7 * kPacketSize + lane];
+    const float mz = a * grid[5 * kPacketSize + lane] + b * grid[8 * kPacketSize + lane];
+    const float onD = mx * dx + my * dy + mz * dz;  // M w is across F; the blend nearly so
+    const float ox = mx - onD * dx, oy = my - onD * dy, oz = mz - onD * dz;
+    // The start on the line, as far out as the lane's curve reaches (every vertex lies within
+    // max(|e - c|, |last|) of c, a line through c's too): where that lies inside the empty ball,
+    // a tail alone is traced, and Embree does not start among the scene's boxes.
+    const float inside = 0.9999f * std::max(eyeDistance, geometry.lastDistance[lane]);
+    const float along = std::sqrt(std::max(0.0f, inside * inside - (ox * ox + oy * oy + oz * oz)));
+    out[0][lane] = dx, out[1][lane] = dy, out[2][lane] = dz;
+    out[3][lane] = ox + along * dx, out[4][lane] = oy + along * dy, out[5][lane] = oz + along * dz;
+  }
+  for (int component = 0; component < 6; ++component)
+    std::memcpy(tails + component * kPacketSize, out[component].data(), sizeof(Lanes));
+  return true;
 }
 
 float CameraRays::exactTails(const float* px, const float* py, int count, float* run,

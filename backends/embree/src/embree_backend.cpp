@@ -19,6 +19,7 @@
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/base/error.hpp"
 #include "confvis/base/stopwatch.hpp"
+#include "tail_grid.hpp"
 #include "tile_renderer.hpp"
 
 namespace confvis {
@@ -37,7 +38,24 @@ struct EmbreeBackend::Impl {
     }
     if (grids.size() >= 64) grids.clear();  // a bounded cache: displays have few walls
     auto grid = std::make_unique<WallMapGrid>(warp, wall, spacingFor(warp, wall, scale));
-    return *grids.emplace(key, GridEntry{std::move(grid), renders}).first->second.grid;
+    return *grids.emplace(key, GridEntry{std::move(grid), renders, nullptr}).first->second.grid;
+  }
+
+  // The exact stereo tails' grid of `wall` (tail_grid.hpp), built with the first exact stereo
+  // frame of a map and kept with its WallMapGrid; `buildSeconds` accumulates the build time.
+  const embree::TailGrid& tailGrid(const ConformalWarp& warp, std::uint64_t mapFingerprint,
+                                   const Wall& wall, double scale, double& buildSeconds) {
+    wallGrid(warp, mapFingerprint, wall, scale);
+    GridEntry& entry = grids.at(gridKey(warp, mapFingerprint, wall, scale));
+    if (!entry.tails) {
+      const auto start = SteadyClock::now();
+      entry.tails = std::make_unique<embree::TailGrid>(
+          warp, wall,
+          embree::TailGrid::spacingFor(wall, warp.reference(), warp.map().resolution(), scale),
+          kTailGridMargin);
+      buildSeconds += secondsSince(start);
+    }
+    return *entry.tails;
   }
 
   // Gives back the grids and tables of images not rendered in the last kIdleRenders renders:
@@ -137,9 +155,14 @@ struct EmbreeBackend::Impl {
     std::uint64_t lastUsed = 0;  // `renders` of Impl when last looked up
     std::unique_ptr<embree::DirectionTable> table;
   };
+  // How far past a wall's edges (metres) its tail grid reaches: the rays from c parallel to an
+  // eye's rays meet the wall's plane about |e - c| beyond the wall (more where the eye is nearer
+  // the wall than c); the tails of eyes farther out look their last vertex up instead.
+  static constexpr double kTailGridMargin = 0.3;
   struct GridEntry {
     std::unique_ptr<WallMapGrid> grid;
     std::uint64_t lastUsed = 0;
+    std::unique_ptr<embree::TailGrid> tails;  // exact stereo only
   };
 
   EmbreeOptions options;
@@ -245,6 +268,9 @@ void EmbreeBackend::renderInto(const DisplayConfig& config, const RetargetMap* m
       const double empty = embree::clearance(scene, glm::vec3(settings.camera.position),
                                              static_cast<float>(1.01 * reach));
       rays.setEmptyRadius((1.0 - 1e-4) * empty - 1e-6 * reach);
+      if (!rays.overridden())
+        rays.setTailGrid(&impl_->tailGrid(*warp, mapFingerprint, wall, settings.resolutionScale,
+                                          tableBuildSeconds));
     }
     job.width = planned.width;
     job.height = planned.height;

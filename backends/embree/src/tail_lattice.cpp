@@ -41,22 +41,14 @@ void TailLattice::build() {
   built_ = true;
   const int across = cellsAcross_ + 1, down = cellsDown_ + 1;
   const int nodeCount = across * down, cellCount = cellsAcross_ * cellsDown_;
-  const int total = nodeCount + cellCount;
+  const int total = nodeCount;
   const int padded = (total + kPacketSize - 1) / kPacketSize * kPacketSize;
-  // The positions: every cell corner, then every cell centre, in wall pixels (the last repeated
-  // up to a whole packet).
+  // The positions: every cell corner, in wall pixels (the last repeated up to a whole packet).
   std::vector<float> wallX(static_cast<std::size_t>(padded)), wallY(static_cast<std::size_t>(padded));
   for (int j = 0; j < down; ++j)
     for (int i = 0; i < across; ++i) {
       wallX[static_cast<std::size_t>(j * across + i)] = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
       wallY[static_cast<std::size_t>(j * across + i)] = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
-    }
-  constexpr float kHalfCell = 0.5f * kTailCellPixels;
-  for (int j = 0; j < cellsDown_; ++j)
-    for (int i = 0; i < cellsAcross_; ++i) {
-      const auto at = static_cast<std::size_t>(nodeCount + j * cellsAcross_ + i);
-      wallX[at] = (static_cast<float>(x0_ + kTailCellPixels * i) + kHalfCell) * pixelToWall_.x;
-      wallY[at] = (static_cast<float>(y0_ + kTailCellPixels * j) + kHalfCell) * pixelToWall_.y;
     }
   for (int at = total; at < padded; ++at)
     wallX[static_cast<std::size_t>(at)] = wallX[static_cast<std::size_t>(total - 1)],
@@ -154,30 +146,41 @@ void TailLattice::build() {
     const int firstCell = j * cellsAcross_;
     for (int i = 0; i < cellsAcross_; ++i) {
       const int corners[4] = {row + i, row + i + 1, row + across + i, row + across + i + 1};
-      const int centre = nodeCount + firstCell + i;
       float directionX = 0.0f, directionY = 0.0f, directionZ = 0.0f;
       float offsetX = 0.0f, offsetY = 0.0f, offsetZ = 0.0f;
       float nearestStart = kInfinity, widestOffset = 0.0f;
-      float chordSquared = 0.0f;  // the cell's angular radius from the eye, squared (farthest corner)
+      float hMax = 0.0f, hMin = kInfinity;
       for (int n : corners) {
         directionX += 0.25f * dX[n], directionY += 0.25f * dY[n], directionZ += 0.25f * dZ[n];
         offsetX += 0.25f * oX[n], offsetY += 0.25f * oY[n], offsetZ += 0.25f * oZ[n];
         nearestStart = std::min(nearestStart, starts[n]);
         widestOffset = std::max(widestOffset, offsets[n]);
-        const float cx = uX[n] - uX[centre], cy = uY[n] - uY[centre], cz = uZ[n] - uZ[centre];
-        chordSquared = std::max(chordSquared, cx * cx + cy * cy + cz * cz);
+        hMax = std::max(hMax, hs[n]);
+        hMin = std::min(hMin, hs[n]);
       }
+      // The cell's angular diameter seen from the eye (its rays' directions span a convex
+      // quadrilateral, whose widest chord joins two corners), squared.
+      float chordSquared = 0.0f;
+      for (int a = 0; a < 4; ++a)
+        for (int b = a + 1; b < 4; ++b) {
+          const int na = corners[a], nb = corners[b];
+          const float cx = uX[na] - uX[nb], cy = uY[na] - uY[nb], cz = uZ[na] - uZ[nb];
+          chordSquared = std::max(chordSquared, cx * cx + cy * cy + cz * cz);
+        }
       // h = |e - c| sin(angle(u, e - c)) is 1-Lipschitz in the angle between rays times |e - c|:
-      // within the cell it lies within `spread` of the centre's (the angle from the chord).
+      // every sample lies within the diameter of each corner, so its h lies within `spread` of
+      // every corner's: at least the largest less it, at most the smallest plus it.
       const float spread = eyeDistance * 2.0f * asinAbove(0.5f * std::sqrt(chordSquared));
-      const float h = hs[centre];
+      // (h is at most |e - c|: a bound past it would report a reach beyond every curve's,
+      // outside the ball the clearance query reaches, and march the cell's packets as curves.)
+      const float hLow = hMax - spread, hHigh = std::min(hMin + spread, eyeDistance);
       // The smallest reach in the cell (what the check weighs the offsets' error by) and the
       // largest (what the cell's samples report: CameraRays::exactTails' reach bounded above,
       // 1.0001 |e - c| at least as there, so that a packet is straight only where every curve
       // of it bends inside the empty ball).
-      const float reach = std::max(eyeDistance, (h - spread) / sinAsymptote);
+      const float reach = std::max(eyeDistance, hLow / sinAsymptote);
       cellReach[static_cast<std::size_t>(firstCell + i)] =
-          1.0001f * std::max(eyeDistance, 1.00001f * (h + spread) / sinAsymptote);
+          1.0001f * std::max(eyeDistance, 1.00001f * hHigh / sinAsymptote);
       // How far along its blended line each sample starts from the blended offset O: by the
       // triangle inequality the start lies within |O| + along <= the corners' largest |O| +
       // along = their nearest start of c, inside the cell's reach (no nearer the scene than
@@ -188,29 +191,19 @@ void TailLattice::build() {
           0.999f * std::max(0.0f, nearestStart - widestOffset);
       // A sample on a line through c (h <= along tan(asymptote), along <= |e - c|) needs its
       // whole curve traced (infinite reach): a cell that may hold one is not interpolated.
-      const bool offLine = h - spread > 1.01f * eyeDistance * tanAsymptote;
-      // The line's angular error: the turn plus the offset's shift over the nearest hit, at the
-      // centre; and from the lattice's second differences along each axis (the bilinear
-      // blend's error is at most (|f_xx| + |f_yy|) / 8 in cell units, which the centre alone
-      // misses where the two cancel, a saddle): at the cell's corners' nodes that have both
+      const bool offLine = hLow > 1.01f * eyeDistance * tanAsymptote;
+      // The line's angular error, the turn plus the offset's shift over the nearest hit, from
+      // the lattice's second differences along each axis (the bilinear blend's error is at most
+      // (|f_xx| + |f_yy|) / 8 in cell units): at the cell's corners' nodes that have both
       // neighbours in the tile. A cell with none along an axis (a tile one cell wide) is not
-      // interpolated.
-      const float inverseLength = 1.0f / std::sqrt(directionX * directionX +
-                                                   directionY * directionY + directionZ * directionZ);
-      const float turnX0 = directionX * inverseLength - dX[centre];
-      const float turnY0 = directionY * inverseLength - dY[centre];
-      const float turnZ0 = directionZ * inverseLength - dZ[centre];
-      const float shiftX0 = offsetX - oX[centre], shiftY0 = offsetY - oY[centre];
-      const float shiftZ0 = offsetZ - oZ[centre];
-      const float atCentre = std::sqrt(turnX0 * turnX0 + turnY0 * turnY0 + turnZ0 * turnZ0) +
-                             std::sqrt(shiftX0 * shiftX0 + shiftY0 * shiftY0 + shiftZ0 * shiftZ0) / reach;
+      // interpolated. (The exact centre the blend was also checked against until stereo24
+      // changed no cell at 24-480 px walls: EmbreeTailLattice.*.)
       float alongX = -1.0f, alongY = -1.0f;  // negative: no node with both neighbours
       for (int n : corners) {
         alongX = std::max(alongX, turnX[n] < 0.0f ? -1.0f : turnX[n] + shiftX[n] / reach);
         alongY = std::max(alongY, turnY[n] < 0.0f ? -1.0f : turnY[n] + shiftY[n] / reach);
       }
-      const float error =
-          std::max(atCentre, alongX >= 0.0f && alongY >= 0.0f ? 0.125f * (alongX + alongY) : kInfinity);
+      const float error = alongX >= 0.0f && alongY >= 0.0f ? 0.125f * (alongX + alongY) : kInfinity;
       pass_[static_cast<std::size_t>(firstCell + i)] =
           everyCell || (offLine && error <= bound) ? 1 : 0;
     }

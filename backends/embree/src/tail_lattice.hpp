@@ -3,26 +3,25 @@
 // its start W(last vertex)) costs two map lookups a sample; across a few pixels it is smooth
 // except for the start's spin around the ray near the eye's axis (where the curve is short).
 // The tile is cut into cells of kTailCellPixels x kTailCellPixels output pixels; the tails are
-// evaluated exactly (CameraRays::tailsAt) at the cells' corners and centres, and a cell's
-// samples are interpolated bilinearly from its corners only where the interpolated centre lies
-// within the stated bound of the exact centre and the lattice's second differences along x and
-// y bound the blend's error within it too (the centre alone misses a saddle); elsewhere each
+// evaluated exactly (CameraRays::tailsAt) at the cells' corners, and a cell's samples are
+// interpolated bilinearly from its corners only where the lattice's second differences along x
+// and y bound the blend's error within the stated bound; elsewhere each
 // sample gets its own tails (CameraRays::exactTails).
 //
 // What is interpolated is what decides the traced line: the unit direction D and the start's
 // offset across it, O = S - (S.D) D (about J_F(u) (e - c)_perp: smooth, where S itself spins
 // with the eye's offset across the ray). Each sample starts on its own line at O + along D, one
 // `along` a cell that keeps the start within the corners' nearest |S| of c (tail_blend.hpp),
-// and every sample of the cell reports the cell's largest reach (from the centre's h
-// plus the cell's angular radius times |e - c|; no closed form per sample): a packet is traced
+// and every sample of the cell reports the cell's largest reach (from the corners' least h
+// plus the cell's angular diameter times |e - c|; no closed form per sample): a packet is traced
 // as straight tails only where that bound lies inside the empty ball, and there the true start
 // and the blended one lie on the same line inside the ball, which holds no hit. Cells that may
 // hold a sample on a line through c (infinite reach) are not interpolated. A line moved by dO
 // and turned by dD
 // moves a hit at distance r from c by about |dO| / r + |dD| in angle, and every hit a tail
 // traces lies beyond the sample's reach (else the curve is marched): the check bounds
-// |dD| + |dO| / R, with R the smallest reach in the cell (from the centre's h less the cell's
-// angular radius), by kTailTolerancePixels of the cell's pixel angle.
+// |dD| + |dO| / R, with R the smallest reach in the cell (from the corners' largest h less the
+// cell's angular diameter times |e - c|), by kTailTolerancePixels of the cell's pixel angle.
 //
 // A renderer's tile and a DirectionTable's tile build the same lattice, so a table draws the
 // pixels a frame without one draws.
