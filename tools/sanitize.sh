@@ -62,6 +62,14 @@ cmake --build build-asan -j"$(nproc)" --target "${targets[@]}"
 # them. Everything else runs with LeakSanitizer.
 unattributable_leaks='vulkan_or_window|mpi'
 
+# A clean build-asan has no test costs yet: the normal build's (build/, the same tests, all
+# passed) let ctest start the longest first, so that none is left running alone at the end.
+costs=Testing/Temporary/CTestCostData.txt
+if [ -f "build/${costs}" ] && [ ! -f "build-asan/${costs}" ]; then
+  mkdir -p build-asan/Testing/Temporary
+  cp "build/${costs}" "build-asan/${costs}"
+fi
+
 source tools/sanitizers/env.sh
 stage "the test suite under ASan + UBSan + LSan"
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -LE "${unattributable_leaks}" \
