@@ -2,10 +2,11 @@
 # The sanitizer stage of CI (run by tools/test.sh after the normal build and tests; opt out with
 # CONFVIS_SANITIZE=0):
 #   1. build-asan/: clang-14, AddressSanitizer + UndefinedBehaviorSanitizer (+ LeakSanitizer),
-#      every object also with -fsanitize=fuzzer-no-link so the same build links the libFuzzer
-#      harnesses of tests/fuzz; only what the stage runs is built (the test binaries, the CLI
-#      they start, the harnesses; no benchmarks or example applications), and the whole test
-#      suite runs there (but for the packaging tests in $excluded);
+#      the libraries also with -fsanitize=fuzzer-no-link so the same build links the libFuzzer
+#      harnesses of tests/fuzz (the test files -O0 without it); only what the stage runs is built
+#      (the test binaries, the CLI they start, the harnesses; no benchmarks or example
+#      applications), and the whole test suite runs there (but for the packaging tests in
+#      $excluded), the Vulkan, window and MPI tests two at a time but for the live-view ones;
 #   2. every fuzz harness for CONFVIS_FUZZ_SECONDS (default 10) from its seed corpus, one per
 #      core side by side (tests/fuzz/run.sh; 0 skips it);
 #   3. ThreadSanitizer over the library-level threaded suites (tools/sanitizers/tsan.sh, in
@@ -42,8 +43,11 @@ stage "building build-asan"
 # Build type "Sanitize": no preset flags of its own (so assertions stay on), all in $flags.
 shared=OFF
 if [ "${CONFVIS_SANITIZE_SHARED:-0}" != 0 ]; then shared=ON; fi
+# The test binaries' own files (half the build's compile time): -O0, and no coverage
+# instrumentation, which only the fuzz harnesses' libraries need; still under ASan and UBSan.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_COMPILER=clang++-14 \
   "-DCMAKE_CXX_FLAGS=${flags}" -DCONFVIS_WERROR=OFF -DCONFVIS_FUZZ=ON \
+  "-DCONFVIS_TEST_COMPILE_OPTIONS=-O0;-fno-sanitize=fuzzer-no-link" \
   -DCONFVIS_SHARED_LIBS=${shared} "${launcher[@]}" >/dev/null
 targets=(confvis_tests confvis)
 if ninja -C build-asan -t query confvis_cluster_tests >/dev/null 2>&1; then
@@ -58,17 +62,30 @@ cmake --build build-asan -j"$(nproc)" --target "${targets[@]}"
 # them. Everything else runs with LeakSanitizer.
 unattributable_leaks='vulkan_or_window|mpi'
 
+# A clean build-asan has no test costs yet: the normal build's (build/, the same tests, all
+# passed) let ctest start the longest first, so that none is left running alone at the end.
+costs=Testing/Temporary/CTestCostData.txt
+if [ -f "build/${costs}" ] && [ ! -f "build-asan/${costs}" ]; then
+  mkdir -p build-asan/Testing/Temporary
+  cp "build/${costs}" "build-asan/${costs}"
+fi
+
 source tools/sanitizers/env.sh
 stage "the test suite under ASan + UBSan + LSan"
 ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -LE "${unattributable_leaks}" \
   -E "^(${excluded})\$"
-# One at a time: lavapipe already renders on every core, and the live-view tests count frames
-# in a time window (CliViewLive, CliView.Resize*: too few frames when two ran side by side under
-# ASan on a loaded machine; they pass alone).
+# Two at a time but for the live-view suites, which count frames in a time window (CliViewLive,
+# CliView: too few frames when two ran side by side under ASan on a loaded machine; they pass
+# alone) and run one at a time afterwards; the MPI tests are RUN_SERIAL (tests/CMakeLists.txt).
+frame_timed='CliView|CliViewLive'
 stage "the Vulkan, window and MPI tests under ASan + UBSan"
 ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" \
+  ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -L "${unattributable_leaks}" \
+  -E "^(${excluded})\$|^(${frame_timed})\."
+stage "the live-view tests under ASan + UBSan, one at a time"
+ASAN_OPTIONS="${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0}" \
   ctest --test-dir build-asan --output-on-failure -j1 -L "${unattributable_leaks}" \
-  -E "^(${excluded})\$"
+  -R "^(${frame_timed})\."
 
 if [ "${fuzz_seconds}" != 0 ]; then
   stage "fuzzing, ${fuzz_seconds} s per harness"
