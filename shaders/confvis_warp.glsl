@@ -135,14 +135,39 @@ void confvisGatherGeom(vec3 v, out vec4 corner[4]) {
 
 vec4 confvisSampleGeomAcrossCut(vec3 v) { return confvisSampleGeomAcrossCutToward(v, vec3(0.0)); }
 
-vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint) {
+// What confvisSampleGeomAcrossCutToward reads of the map around v: the bilinear footprint's
+// fraction f, its four texels, and the blocks one texel over along s and t, each way (index 0:
+// towards +, 1: towards -). Gathered once for every corner and hint: lavapipe runs the corners'
+// ifs for every SIMD lane, so each corner gathering its own blocks doubled a lookup's gathers,
+// and the torn pieces' two limits at one crossing (warp.geom) gathered the same block twice.
+struct ConfvisGeomBlock {
+  vec2 f;
+  float n;
+  vec4 corner[4];
+  vec4 overS[2][4], overT[2][4];
+};
+
+ConfvisGeomBlock confvisGatherGeomBlock(vec3 v) {
   float sc, tc, ma;
   vec3 sAxis, tAxis;
   confvisCubeFaceCoordinates(v, sc, tc, ma, sAxis, tAxis);
-  float n = float(textureSize(confvisGeomMap, 0).x);
-  vec2 f = fract((0.5 * vec2(sc, tc) / ma + 0.5) * n - 0.5);
-  vec4 corner[4];
-  confvisGatherGeom(v, corner);
+  ConfvisGeomBlock block;
+  block.n = float(textureSize(confvisGeomMap, 0).x);
+  block.f = fract((0.5 * vec2(sc, tc) / ma + 0.5) * block.n - 0.5);
+  confvisGatherGeom(v, block.corner);
+  float texelStep = 2.0 * ma / block.n;  // one texel in sc or tc
+  confvisGatherGeom(v + texelStep * sAxis, block.overS[0]);
+  confvisGatherGeom(v - texelStep * sAxis, block.overS[1]);
+  confvisGatherGeom(v + texelStep * tAxis, block.overT[0]);
+  confvisGatherGeom(v - texelStep * tAxis, block.overT[1]);
+  return block;
+}
+
+// confvisSampleGeomAcrossCutToward from the block gathered at its point.
+vec4 confvisResolveGeomBlock(ConfvisGeomBlock block, vec3 hint) {
+  vec2 f = block.f;
+  float n = block.n;
+  vec4 corner[4] = block.corner;
   float weight[4] = float[4]((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
   vec3 unit[4];
   for (int k = 0; k < 4; ++k) unit[k] = normalize(corner[k].xyz);
@@ -180,7 +205,6 @@ vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint) {
   // row (column) through the texel beyond that neighbour, fetched one texel over (averaged where
   // both exist). So points between the last texel centre and the cut continue their side up to
   // the cut instead of clamping to that texel. (Mirrors conformal/src/cut_aware_lookup.cpp.)
-  float texelStep = 2.0 * ma / n;  // one texel in sc or tc
   for (int k = 0; k < 4; ++k) {
     if (member[k]) continue;
     int i = k % 2, j = k / 2;
@@ -195,18 +219,14 @@ vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint) {
     if (member[inRow]) {
       // The block one texel over along s, away from k: its texel in the neighbour's row lies
       // beyond the neighbour.
-      vec4 shifted[4];
-      confvisGatherGeom(v + (i == 1 ? -texelStep : texelStep) * sAxis, shifted);
-      vec3 beyond = shifted[2 * j + (i == 1 ? 0 : 1)].xyz;
+      vec3 beyond = block.overS[i][2 * j + (i == 1 ? 0 : 1)].xyz;
       if (distance(normalize(beyond), unit[inRow]) <= longSide) {
         sum += 2.0 * corner[inRow].xyz - beyond;
         lines += 1.0;
       }
     }
     if (member[inColumn]) {
-      vec4 shifted[4];
-      confvisGatherGeom(v + (j == 1 ? -texelStep : texelStep) * tAxis, shifted);
-      vec3 beyond = shifted[2 * (j == 1 ? 0 : 1) + i].xyz;
+      vec3 beyond = block.overT[j][2 * (j == 1 ? 0 : 1) + i].xyz;
       if (distance(normalize(beyond), unit[inColumn]) <= longSide) {
         sum += 2.0 * corner[inColumn].xyz - beyond;
         lines += 1.0;
@@ -238,6 +258,10 @@ vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint) {
   return vec4(normalize(direction), total > 0.0 ? validity / total : corner[nearest].w);
 }
 
+vec4 confvisSampleGeomAcrossCutToward(vec3 v, vec3 hint) {
+  return confvisResolveGeomBlock(confvisGatherGeomBlock(v), hint);
+}
+
 // Warps a point given relative to c: xyz = warped point relative to c, w = validity.
 vec4 confvisWarpRelative(vec3 relative) {
   float r = length(relative);
@@ -252,6 +276,17 @@ vec4 confvisWarpRelativeToward(vec3 relative, vec3 hint) {
   float r = length(relative);
   vec4 g = confvisSampleGeomAcrossCutToward(relative / max(r, 1e-30), hint);
   return vec4(r * g.xyz, g.w);
+}
+
+// confvisWarpRelativeToward of one point toward two hints (each side's limit at a point on the
+// cut), the map read once.
+void confvisWarpRelativeTowardEach(vec3 relative, vec3 hintA, vec3 hintB, out vec4 towardA,
+                                   out vec4 towardB) {
+  float r = length(relative);
+  ConfvisGeomBlock block = confvisGatherGeomBlock(relative / max(r, 1e-30));
+  vec4 a = confvisResolveGeomBlock(block, hintA), b = confvisResolveGeomBlock(block, hintB);
+  towardA = vec4(r * a.xyz, a.w);
+  towardB = vec4(r * b.xyz, b.w);
 }
 
 // confvisWarpRelative through confvisSampleGeomBilinear: false where that needs the four texels

@@ -79,8 +79,7 @@ void crossing(Corner p, Corner q, out Corner onP, out Corner onQ) {
                     normalize(mix(p.normal, q.normal, s)), mix(p.uv, q.uv, s));
   onP = x;
   onQ = x;
-  onP.warped = confvisWarpRelativeToward(x.relative, w0);
-  onQ.warped = confvisWarpRelativeToward(x.relative, w1);
+  confvisWarpRelativeTowardEach(x.relative, w0, w1, onP.warped, onQ.warped);
   // Each side's limit out to the display's rim, as the pre-pass moves its cut vertices: the
   // extrapolated limits stop short of it by a band (the square-root growth next to the cut).
   // A loop entered once or not at all (lavapipe runs both sides of an if for every lane).
