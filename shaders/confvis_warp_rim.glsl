@@ -13,8 +13,9 @@
 //     uploaded as the geom map (confvis/backends/vulkan/warp_interface.hpp: rayMapUploadData,
 //     coverageLayoutBinding), the same format and sampler settings (warpSamplerInfo).
 // Define CONFVIS_COVERAGE_BINDING before including this file to move the binding (default 1,
-// kCoverageBinding). Every stage that calls confvisSnapToRim needs it (the backend: the
-// conformal pre-pass and the geometry shader, warp.geom).
+// kCoverageBinding). Every stage that calls confvisSnapToRim or confvisRefineOnRayMap needs it
+// (the backend: the conformal pre-pass, the geometry shader, warp.geom, and the tessellation
+// evaluation, confvis_warp_tese.glsl).
 #ifndef CONFVIS_WARP_RIM_GLSL
 #define CONFVIS_WARP_RIM_GLSL
 

@@ -7,6 +7,7 @@
 
 #include "confvis_render_common.glsl"
 #include "confvis_warp.glsl"
+#include "confvis_warp_rim.glsl"
 
 layout(triangles, equal_spacing, ccw) in;
 
@@ -25,6 +26,22 @@ struct TessellatedVertex {
   vec2 uv;
 };
 
+// confvisWarpRelative, and where the bilinear blend cannot warp it (next to the cut) moved to where
+// the ray map shows it (confvisRefineOnRayMap), as warp_vertices_across_cut.comp does the corners:
+// the curves a patch draws between refined corners next to a cut's leaf (the left and right
+// walls' corners under cave5's missing ceiling) would otherwise bend back to the unrefined lookup.
+// Not with the snap to the rim off (params.w: 1 in the geometry shader's switches).
+vec4 confvisWarpRelativeRefined(vec3 relative) {
+  vec4 w;
+  if (confvisWarpRelativeBilinear(relative, w)) return w;
+  w = confvisWarpRelative(relative);
+  float distance = length(relative);
+  bool snap = (int(wallView().params.w + 0.5) - 1 & 1) == 0;
+  for (int once = 0; once < (snap && distance > 1e-9 ? 1 : 0); ++once)
+    w.xyz = distance * confvisRefineOnRayMap(relative / distance, normalize(w.xyz));
+  return w;
+}
+
 TessellatedVertex tessellatedVertex() {
   vec3 b = gl_TessCoord;
   TessellatedVertex v;
@@ -41,7 +58,7 @@ TessellatedVertex tessellatedVertex() {
   else if (b.x == 0.0 && b.y == 0.5 && inEdgeMidpoints[0].w > 0.0) v.warped = inEdgeMidpoints[0];
   else if (b.y == 0.0 && b.z == 0.5 && inEdgeMidpoints[1].w > 0.0) v.warped = inEdgeMidpoints[1];
   else if (b.z == 0.0 && b.x == 0.5 && inEdgeMidpoints[2].w > 0.0) v.warped = inEdgeMidpoints[2];
-  else v.warped = confvisWarpRelative(relative);
+  else v.warped = confvisWarpRelativeRefined(relative);
   return v;
 }
 

@@ -41,7 +41,10 @@ VkDescriptorSetLayout makeDescriptorSetLayout(
 }
 
 VkDescriptorSetLayout makeWarpSetLayout(VkDevice device, VkShaderStageFlags warpStages) {
-  const auto bindings = warpSetLayoutBindings(warpStages, VK_SHADER_STAGE_GEOMETRY_BIT);
+  // The ray map: warp.geom and the tessellation evaluation (confvis_warp_tese.glsl) read it.
+  const auto bindings = warpSetLayoutBindings(
+      warpStages, VK_SHADER_STAGE_GEOMETRY_BIT |
+                      (warpStages & VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT));
   return makeDescriptorSetLayout(device, bindings);
 }
 

@@ -92,10 +92,12 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
                {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr},
                {5, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_VERTEX_BIT, nullptr}});
   // Binding 1: the ray map, whose alpha is the display's coverage (the rim, where the pre-pass
-  // and warp.geom move the ends of pieces torn by the cut).
+  // and warp.geom move the ends of pieces torn by the cut; the tessellation evaluation refines
+  // points next to the cut's leaves on it).
   const auto warpBindings = warpSetLayoutBindings(
       kGeometryStages | VK_SHADER_STAGE_COMPUTE_BIT,
-      VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_COMPUTE_BIT);
+      VK_SHADER_STAGE_GEOMETRY_BIT | VK_SHADER_STAGE_COMPUTE_BIT |
+          VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT);
   warpSetLayout_ = setLayout(device, {warpBindings[0], warpBindings[1]});
   materialSetLayout_ = setLayout(device, {{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
                                            VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}});
