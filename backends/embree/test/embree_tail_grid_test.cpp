@@ -80,13 +80,7 @@ struct Eyes {
 
 Eyes plannedEye(const DisplayConfig& config, const std::string& wallName, Eye eye,
                 const glm::dvec3& head) {
-  RenderSettings settings;
-  settings.mode = RenderMode::Conformal;
-  settings.eyes = {eye};
-  settings.stereoRays = StereoRays::Exact;
-  settings.walls = {wallName};
-  settings.resolutionScale = test::scaleFor(kWallPixels);
-  settings.head.position = head;
+  const RenderSettings settings = test::exactStereoWallSettings(wallName, eye, kWallPixels, head);
   return {planRender(config, &dilationMap(), settings).images[0], settings};
 }
 

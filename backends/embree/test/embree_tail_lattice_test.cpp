@@ -60,13 +60,7 @@ LatticeErrors latticeErrors(const std::string& wallName, Eye eye, const glm::dve
                             int wallPixels = kWallPixels, bool asymptotes = false) {
   const DisplayConfig config = test::shippedConfig("cave5");
   const ConformalWarp warp(dilationMap());
-  RenderSettings settings;
-  settings.mode = RenderMode::Conformal;
-  settings.eyes = {eye};
-  settings.stereoRays = StereoRays::Exact;
-  settings.walls = {wallName};
-  settings.resolutionScale = test::scaleFor(wallPixels);
-  settings.head.position = head;
+  const RenderSettings settings = test::exactStereoWallSettings(wallName, eye, wallPixels, head);
   const PlannedImage planned = planRender(config, &dilationMap(), settings).images[0];
   const Wall& wall = *planned.view.wall;
   const double spacing = WallMapGrid::spacingFor(wall, warp.reference(),

@@ -25,6 +25,20 @@ inline DisplayConfig shippedConfig(const std::string& name) {
 // Scale that turns the shipped 1920-pixel CAVE walls into `pixels`-pixel test images.
 inline double scaleFor(int pixels) { return pixels / 1920.0; }
 
+// Conformal exact stereo rays of one eye on one wall, `pixels` wide, the head at `head`: the
+// frames whose tails the lattice and tail-grid tests take apart.
+inline RenderSettings exactStereoWallSettings(const std::string& wall, Eye eye, int pixels,
+                                              const glm::dvec3& head) {
+  RenderSettings settings;
+  settings.mode = RenderMode::Conformal;
+  settings.eyes = {eye};
+  settings.stereoRays = StereoRays::Exact;
+  settings.walls = {wall};
+  settings.resolutionScale = scaleFor(pixels);
+  settings.head.position = head;
+  return settings;
+}
+
 struct ImageDiff {
   std::size_t badPixels = 0;
   double maxDifference = 0.0;   // largest channel difference (RGBA)
