@@ -36,4 +36,12 @@ layout(push_constant) uniform Push {
 View currentView() { return views[push.viewBase + gl_ViewIndex]; }
 View wallView() { return views[push.viewBase]; }  // for the eye-independent params
 
+// The geometry shader's switches in params.w: the torn pieces' ends are moved out to the
+// display's rim (VulkanOptions::snapCutToRim; the tessellation evaluation's points next to the
+// cut's leaves refined on the ray map with it), the torn pieces drawn up to the cut
+// (VulkanOptions::drawTornPiecesUpToTheCut).
+int switches() { return int(wallView().params.w + 0.5) - 1; }
+bool snapsToRim() { return (switches() & 1) == 0; }
+bool drawsTornPieces() { return (switches() & 2) == 0; }
+
 #endif

@@ -138,4 +138,13 @@ vec3 confvisRefineOnRayMap(vec3 v, vec3 g) {
   return p;
 }
 
+// `warped`, the four-texel lookup's warp of `relative` (both relative to c), moved by
+// confvisRefineOnRayMap where `refine` (the snap to the rim switched on).
+vec4 confvisRefineWarpOnRayMap(vec3 relative, vec4 warped, bool refine) {
+  float distance = length(relative);
+  for (int once = 0; once < (refine && distance > 1e-9 ? 1 : 0); ++once)
+    warped.xyz = distance * confvisRefineOnRayMap(relative / distance, normalize(warped.xyz));
+  return warped;
+}
+
 #endif  // CONFVIS_WARP_RIM_GLSL

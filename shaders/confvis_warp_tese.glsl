@@ -30,16 +30,11 @@ struct TessellatedVertex {
 // the ray map shows it (confvisRefineOnRayMap), as warp_vertices_across_cut.comp does the corners:
 // the curves a patch draws between refined corners next to a cut's leaf (the left and right
 // walls' corners under cave5's missing ceiling) would otherwise bend back to the unrefined lookup.
-// Not with the snap to the rim off (params.w: 1 in the geometry shader's switches).
+// Not with the snap to the rim off (snapsToRim, confvis_render_common.glsl).
 vec4 confvisWarpRelativeRefined(vec3 relative) {
   vec4 w;
   if (confvisWarpRelativeBilinear(relative, w)) return w;
-  w = confvisWarpRelative(relative);
-  float distance = length(relative);
-  bool snap = (int(wallView().params.w + 0.5) - 1 & 1) == 0;
-  for (int once = 0; once < (snap && distance > 1e-9 ? 1 : 0); ++once)
-    w.xyz = distance * confvisRefineOnRayMap(relative / distance, normalize(w.xyz));
-  return w;
+  return confvisRefineWarpOnRayMap(relative, confvisWarpRelative(relative), snapsToRim());
 }
 
 TessellatedVertex tessellatedVertex() {

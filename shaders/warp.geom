@@ -44,13 +44,6 @@ void emit(Corner c) {
   EmitVertex();
 }
 
-// The geometry shader's switches in params.w (confvis_render_common.glsl): the torn pieces'
-// ends are moved out to the display's rim (VulkanOptions::snapCutToRim), the torn pieces drawn
-// up to the cut (VulkanOptions::drawTornPiecesUpToTheCut).
-int switches() { return int(wallView().params.w + 0.5) - 1; }
-bool snapsToRim() { return (switches() & 1) == 0; }
-bool drawsTornPieces() { return (switches() & 2) == 0; }
-
 // Bisection steps for the crossing of an edge with the cut: 2^-6 of the piece's edge (its
 // pieces are a texel of the geom map or two pixels, whichever is longer: a few hundredths of a
 // pixel). Each step is a full lookup; the torn pieces' split was half of the once-a-frame

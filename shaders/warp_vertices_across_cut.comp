@@ -13,9 +13,6 @@ void main() {
   if (slot >= queueDispatch[kQueueVertices].count) return;
   uint v = queuedVertices[slot];
   vec3 r = vertexRelative(v);
-  vec4 w = confvisWarpRelative(r);
-  float distance = length(r);
-  for (uint once = 0u; once < (prepass.snapCutToRim != 0u && distance > 1e-9 ? 1u : 0u); ++once)
-    w.xyz = distance * confvisRefineOnRayMap(r / distance, normalize(w.xyz));
-  warped[v] = keptWarp(w);
+  warped[v] = keptWarp(
+      confvisRefineWarpOnRayMap(r, confvisWarpRelative(r), prepass.snapCutToRim != 0u));
 }

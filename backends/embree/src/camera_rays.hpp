@@ -91,10 +91,11 @@ class CameraRays {
   // Exact stereo rays: the straight tail of the bent ray, its direction F(u) at [0, 3 kPacketSize)
   // and its start relative to the warp's centre at [3, 6 kPacketSize): the asymptote from the
   // tail grid where one is set (tailsAt), else W(last vertex) from the wall's grid (where the
-  // ray from c along u, or the last vertex, misses the wall: the cube map), and per lane `reach`, the farthest from c the curve bends (the eye's distance
-  // included; 0 where unlit, infinite where the ray lies on a line through c and needs
-  // curvedPath). Where the scene keeps beyond a lane's reach (setEmptyRadius), the tail alone is
-  // traced. Returns the largest reach of the lit lanes.
+  // ray from c along u, or the last vertex, misses the wall: the cube map), and per lane
+  // `reach`, the farthest from c the curve bends (the eye's distance included; 0 where unlit,
+  // infinite where the ray lies on a line through c and needs curvedPath). Where the scene
+  // keeps beyond a lane's reach (setEmptyRadius), the tail alone is traced. Returns the largest
+  // reach of the lit lanes.
   float exactTails(const float* px, const float* py, int count, float* run, float* reach) const;
   // exactTails' pieces, for TailLattice (tail_lattice.hpp), which interpolates the tails:
   // per lane, in closed form, the physical ray's unit direction u, the eye's distance h across

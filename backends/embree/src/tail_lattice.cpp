@@ -41,8 +41,7 @@ void TailLattice::build() {
   built_ = true;
   const int across = cellsAcross_ + 1, down = cellsDown_ + 1;
   const int nodeCount = across * down, cellCount = cellsAcross_ * cellsDown_;
-  const int total = nodeCount;
-  const int padded = (total + kPacketSize - 1) / kPacketSize * kPacketSize;
+  const int padded = (nodeCount + kPacketSize - 1) / kPacketSize * kPacketSize;
   // The positions: every cell corner, in wall pixels (the last repeated up to a whole packet).
   std::vector<float> wallX(static_cast<std::size_t>(padded)), wallY(static_cast<std::size_t>(padded));
   for (int j = 0; j < down; ++j)
@@ -50,9 +49,9 @@ void TailLattice::build() {
       wallX[static_cast<std::size_t>(j * across + i)] = static_cast<float>(x0_ + kTailCellPixels * i) * pixelToWall_.x;
       wallY[static_cast<std::size_t>(j * across + i)] = static_cast<float>(y0_ + kTailCellPixels * j) * pixelToWall_.y;
     }
-  for (int at = total; at < padded; ++at)
-    wallX[static_cast<std::size_t>(at)] = wallX[static_cast<std::size_t>(total - 1)],
-    wallY[static_cast<std::size_t>(at)] = wallY[static_cast<std::size_t>(total - 1)];
+  for (int at = nodeCount; at < padded; ++at)
+    wallX[static_cast<std::size_t>(at)] = wallX[static_cast<std::size_t>(nodeCount - 1)],
+    wallY[static_cast<std::size_t>(at)] = wallY[static_cast<std::size_t>(nodeCount - 1)];
   // The exact tails there, structure of arrays: unit direction D, the start's offset across it
   // O = S - (S.D) D, the physical ray's direction u, the eye's distance h across it, |S|, |O|.
   enum Field { kDx, kDy, kDz, kOx, kOy, kOz, kUx, kUy, kUz, kH, kStart, kOffset, kFields };
@@ -62,7 +61,7 @@ void TailLattice::build() {
     CameraRays::TailGeometry geometry;
     alignas(32) std::array<float, 6 * kPacketSize> tails;
     rays_.tailsAt(&wallX[static_cast<std::size_t>(first)], &wallY[static_cast<std::size_t>(first)],
-                  std::min(kPacketSize, total - first), geometry, tails.data());
+                  std::min(kPacketSize, nodeCount - first), geometry, tails.data());
     const auto component = [&](int k, int lane) {
       return tails[static_cast<std::size_t>(k * kPacketSize + lane)];
     };
