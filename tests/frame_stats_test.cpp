@@ -112,7 +112,7 @@ TEST(FrameStats, VulkanReportsItsDeviceAndTheReusedPrepass) {
   EXPECT_FALSE(first.embree);  // a rasterizer shoots no rays
   ASSERT_TRUE(first.vulkan && second.vulkan);
   const VulkanFrameStats& vulkan = *first.vulkan;
-  EXPECT_NE(vulkan.device.find(test::kLavapipe), std::string::npos) << vulkan.device;
+  EXPECT_NE(vulkan.device.find(test::testDevice()), std::string::npos) << vulkan.device;
   EXPECT_TRUE(vulkan.conformal);
   EXPECT_EQ(vulkan.walls, config.walls.size());
   EXPECT_EQ(vulkan.viewsPerPass, 1);  // mono

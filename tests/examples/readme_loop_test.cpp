@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "../../backends/vulkan/test/vulkan_test_support.hpp"
 #include "readme_loop.inc"  // the README's runDisplay, verbatim
 
 namespace {
@@ -109,7 +110,7 @@ TEST(ReadmeLoop, RendersAcrossThreeRebakesWithEmbree) {
 
 TEST(ReadmeLoop, RendersAcrossThreeRebakesWithVulkanOnLavapipe) {
   VulkanOptions options;
-  options.device = "llvmpipe";  // the tests' device (vulkan_test_support.hpp)
+  options.device = test::testDevice();
   const std::unique_ptr<RenderBackend> backend = makeVulkanBackend(options);
   expectThreeRebakesRendered(runReadmeLoop(*backend));
 }

@@ -56,14 +56,19 @@ class AppDevice {
     vkEnumeratePhysicalDevices(handles.instance, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
     vkEnumeratePhysicalDevices(handles.instance, &count, devices.data());
-    for (VkPhysicalDevice device : devices) {  // lavapipe, as every Vulkan test renders on
+    std::string wanted = testDevice();  // lavapipe, as every Vulkan test renders on
+    std::transform(wanted.begin(), wanted.end(), wanted.begin(), ::tolower);
+    for (VkPhysicalDevice device : devices) {
       VkPhysicalDeviceProperties properties;
       vkGetPhysicalDeviceProperties(device, &properties);
       std::string name = properties.deviceName;
       std::transform(name.begin(), name.end(), name.begin(), ::tolower);
-      if (name.find(kLavapipe) != std::string::npos) handles.physicalDevice = device;
+      const bool any = wanted.empty() || wanted == "auto";
+      if (!handles.physicalDevice && (any || name.find(wanted) != std::string::npos))
+        handles.physicalDevice = device;
     }
-    if (!handles.physicalDevice) throw std::runtime_error("no lavapipe device");
+    if (!handles.physicalDevice)
+      throw std::runtime_error("no Vulkan device named like '" + wanted + "'");
     std::vector<VkQueueFamilyProperties> families(8);
     count = 8;
     vkGetPhysicalDeviceQueueFamilyProperties(handles.physicalDevice, &count, families.data());
