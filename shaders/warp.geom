@@ -9,6 +9,7 @@
 #include "confvis_warp.glsl"
 #include "confvis_warp_rim.glsl"
 #include "confvis_warp_capture.glsl"
+#include "confvis_cut_crossing.glsl"
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 7) out;
@@ -23,15 +24,6 @@ layout(location = 0 CONFVIS_XFB(16)) out vec3 outWorld;
 layout(location = 1 CONFVIS_XFB(28)) out vec3 outNormal;
 layout(location = 2 CONFVIS_XFB(40)) out vec2 outUv;
 
-// A point of the drawn triangle: virtual point relative to c, warp, attributes.
-struct Corner {
-  vec3 relative;
-  vec4 warped;
-  vec3 world;
-  vec3 normal;
-  vec2 uv;
-};
-
 Corner inputCorner(int k) {
   return Corner(inRelative[k], inWarped[k], inWorld[k], inNormal[k], inUv[k]);
 }
@@ -44,43 +36,16 @@ void emit(Corner c) {
   EmitVertex();
 }
 
-// Bisection steps for the crossing of an edge with the cut: 2^-6 of the piece's edge (its
-// pieces are a texel of the geom map or two pixels, whichever is longer: a few hundredths of a
-// pixel). Each step is a full lookup; the torn pieces' split was half of the once-a-frame
-// capture's GPU time on lavapipe (10 steps: 6.3 ms a 20k-triangle cave5 frame, 6: 5.4-5.9 ms).
-const int kCutBisections = 6;
-
-// Where the cut crosses edge p-q (p on one side, q on the other): bisects the edge, keeping the
-// half whose warp turns the more (the jump), and returns the crossing's point on each side, each
-// its side's limit of the warp there (confvisWarpRelativeToward, hinted by that side's warp).
-void crossing(Corner p, Corner q, out Corner onP, out Corner onQ) {
-  float s0 = 0.0, s1 = 1.0;
-  vec3 w0 = p.warped.xyz, w1 = q.warped.xyz;
-  for (int step = 0; step < kCutBisections; ++step) {
-    float m = 0.5 * (s0 + s1);
-    vec3 wm = confvisWarpRelative(mix(p.relative, q.relative, m)).xyz;
-    if (confvisAngle(w0, wm) >= confvisAngle(wm, w1)) {
-      s1 = m;
-      w1 = wm;
-    } else {
-      s0 = m;
-      w0 = wm;
-    }
-  }
-  float s = 0.5 * (s0 + s1);
-  Corner x = Corner(mix(p.relative, q.relative, s), vec4(0.0), mix(p.world, q.world, s),
-                    normalize(mix(p.normal, q.normal, s)), mix(p.uv, q.uv, s));
-  onP = x;
-  onQ = x;
-  confvisWarpRelativeTowardEach(x.relative, w0, w1, onP.warped, onQ.warped);
-  // Each side's limit out to the display's rim, as the pre-pass moves its cut vertices: the
-  // extrapolated limits stop short of it by a band (the square-root growth next to the cut).
-  // A loop entered once or not at all (lavapipe runs both sides of an if for every lane).
-  for (int once = 0; once < (snapsToRim() ? 1 : 0); ++once) {
-    onP.warped.xyz = confvisSnapToRim(onP.warped.xyz, p.warped.xyz);
-    onQ.warped.xyz = confvisSnapToRim(onQ.warped.xyz, q.warped.xyz);
-  }
+#ifdef CONFVIS_CAPTURE
+// A record written as it stands (the capture's view projects by the identity).
+void emitDeferred(vec4 position, vec3 world, vec3 normal, vec2 uv) {
+  outWorld = world;
+  outNormal = normal;
+  outUv = uv;
+  gl_Position = position;
+  EmitVertex();
 }
+#endif
 
 // A piece the cut tears: corner `lone` (opposite the warp's shortest edge) on one side, the
 // others on the other. Drawn as the lone corner's triangle and the others' quad, each up to the
@@ -91,16 +56,27 @@ void crossing(Corner p, Corner q, out Corner onP, out Corner onQ) {
 // of the rim's cracks (BackendCrossCheckRim: 6.7 / 5.4 / 7.4 / 1.2 % off Embree against
 // 6.2 / 5.0 / 5.9 / 1.2 % drawn).
 void splitAtCut() {
-  float edgeAngle[3];
-  for (int k = 0; k < 3; ++k)
-    edgeAngle[k] = confvisAngle(inWarped[(k + 1) % 3].xyz, inWarped[(k + 2) % 3].xyz);
-  int lone = edgeAngle[0] <= edgeAngle[1] && edgeAngle[0] <= edgeAngle[2] ? 0
-           : edgeAngle[1] <= edgeAngle[2]                                 ? 1
-                                                                          : 2;
+  int lone = loneCorner(inWarped[0].xyz, inWarped[1].xyz, inWarped[2].xyz);
   Corner l = inputCorner(lone), a = inputCorner((lone + 1) % 3), b = inputCorner((lone + 2) % 3);
+#ifdef CONFVIS_CAPTURE
+  // The capture leaves the split to split_captured_at_cut.comp: lavapipe runs the split for all
+  // eight lanes of a SIMD group, and a quarter of the Dropping list's pieces are torn, so nearly
+  // every group paid the ~14 lookups and two rim searches (most of the capture's GPU time). The
+  // piece's corners go into the split's seven vertices (the same strips), each record marked by
+  // w = -1 - its vertex's number; the compute pass overwrites them with the split's vertices.
+  emitDeferred(vec4(l.relative, -1.0), l.world, l.normal, l.uv);
+  emitDeferred(vec4(l.warped.xyz, -2.0), a.warped.xyz, b.warped.xyz, vec2(0.0));
+  emitDeferred(vec4(0.0, 0.0, 0.0, -3.0), vec3(0.0), vec3(0.0), vec2(0.0));
+  EndPrimitive();
+  emitDeferred(vec4(a.relative, -4.0), a.world, a.normal, a.uv);
+  emitDeferred(vec4(0.0, 0.0, 0.0, -5.0), vec3(0.0), vec3(0.0), vec2(0.0));
+  emitDeferred(vec4(b.relative, -6.0), b.world, b.normal, b.uv);
+  emitDeferred(vec4(0.0, 0.0, 0.0, -7.0), vec3(0.0), vec3(0.0), vec2(0.0));
+  EndPrimitive();
+#else
   Corner xl, xa, yl, yb;
-  crossing(l, a, xl, xa);
-  crossing(l, b, yl, yb);
+  crossing(l, a, snapsToRim(), xl, xa);
+  crossing(l, b, snapsToRim(), yl, yb);
   emit(l);
   emit(xl);
   emit(yl);
@@ -110,6 +86,7 @@ void splitAtCut() {
   emit(b);
   emit(yb);
   EndPrimitive();
+#endif
 }
 
 void main() {

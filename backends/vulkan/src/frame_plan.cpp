@@ -72,6 +72,7 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   plan.dropOutsideSourceField = tessellation.dropOutsideSourceField;
   plan.warpOncePerFrame = tessellation.warpOncePerFrame;
   plan.capturedViewShiftForTests = tessellation.capturedViewShiftForTests;
+  plan.splitCapturedTornPiecesForTests = tessellation.splitCapturedTornPiecesForTests;
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;
   const bool conformal = settings.mode == RenderMode::Conformal;

@@ -21,6 +21,7 @@ struct TessellationOptions {
   bool drawTornPiecesUpToTheCut = true;  // VulkanOptions::drawTornPiecesUpToTheCut
   bool warpOncePerFrame = true;          // VulkanOptions::warpOncePerFrame
   std::uint32_t capturedViewShiftForTests = 0;  // VulkanOptions::capturedViewShiftForTests
+  bool splitCapturedTornPiecesForTests = true;  // VulkanOptions::splitCapturedTornPiecesForTests
 };
 
 struct FramePlan {
@@ -37,6 +38,7 @@ struct FramePlan {
   bool dropOutsideSourceField = false;  // TessellationOptions::dropOutsideSourceField
   bool warpOncePerFrame = true;          // TessellationOptions::warpOncePerFrame
   std::uint32_t capturedViewShiftForTests = 0;  // TessellationOptions::capturedViewShiftForTests
+  bool splitCapturedTornPiecesForTests = true;  // TessellationOptions::splitCapturedTornPieces...
 };
 
 // `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.

@@ -357,7 +357,9 @@ void FrameRenderer::captureWarp(const FramePlan& plan, const GpuScene& scene,
   // Reused with the pre-pass: the capture depends on nothing else but its view.
   if (!(prepassReused_ && captureCurrent_ && capturedThrough_ == *captureView)) {
     captureCurrent_ = false;  // until the capture below has completed
-    addGpuSeconds(capture_->capture(scene, prepass_, frameSet_, warpSet_, viewCount_, stopwatch_));
+    addGpuSeconds(capture_->capture(scene, prepass_, frameSet_, warpSet_, viewCount_,
+                                    plan.snapCutToRim, plan.splitCapturedTornPiecesForTests,
+                                    stopwatch_));
     capturedThrough_ = *captureView;
     captureCurrent_ = true;
   }

@@ -118,6 +118,9 @@ UniqueDescriptorSetLayout setLayout(VkDevice device,
                                     const std::vector<VkDescriptorSetLayoutBinding>& bindings);
 UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,
                                     const VkPushConstantRange& push);
+// A compute pipeline of `module`'s main (pipelines_compute.cpp).
+UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
+                               const UniqueShaderModule& module);
 
 class Pipelines {
  public:

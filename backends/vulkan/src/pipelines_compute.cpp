@@ -19,7 +19,6 @@
 #include "confvis_spirv/warp_vertices_comp.h"
 
 namespace confvis::vulkan {
-namespace {
 
 UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
                                const UniqueShaderModule& module) {
@@ -34,8 +33,6 @@ UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
         "vkCreateComputePipelines");
   return UniquePipeline(device, pipeline);
 }
-
-}  // namespace
 
 void Pipelines::createComputePipelines() {
   const VkDevice device = context_.device();

@@ -171,7 +171,8 @@ class VulkanBackend final : public VulkanRenderer {
                                                    options_.dropOutsideSourceField,
                                                    options_.drawTornPiecesUpToTheCut,
                                                    options_.warpOncePerFrame,
-                                                   options_.capturedViewShiftForTests};
+                                                   options_.capturedViewShiftForTests,
+                                                   options_.splitCapturedTornPiecesForTests};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
                           context_->capabilities().maxMultiviewViewCount);

@@ -38,6 +38,7 @@ WarpCapture::WarpCapture(VulkanContext& context, Pipelines& pipelines)
   end_ = deviceFunction<PFN_vkCmdEndTransformFeedbackEXT>(device, "vkCmdEndTransformFeedbackEXT");
   beginQuery_ = deviceFunction<PFN_vkCmdBeginQueryIndexedEXT>(device, "vkCmdBeginQueryIndexedEXT");
   endQuery_ = deviceFunction<PFN_vkCmdEndQueryIndexedEXT>(device, "vkCmdEndQueryIndexedEXT");
+  split_ = std::make_unique<CapturedCutSplit>(context, pipelines);
 }
 
 std::size_t WarpCapture::region(std::size_t draw, PrepassList list) {
@@ -51,7 +52,8 @@ WarpCapture::Range WarpCapture::range(std::size_t draw, PrepassList list) const 
 
 std::optional<double> WarpCapture::capture(const GpuScene& scene, const ConformalPrepass& prepass,
                                            VkDescriptorSet frameSet, VkDescriptorSet warpSet,
-                                           std::uint32_t captureView, GpuStopwatch& stopwatch) {
+                                           std::uint32_t captureView, bool snapToRim,
+                                           bool splitTornPieces, GpuStopwatch& stopwatch) {
   const std::size_t regions = 2 * scene.draws().size();
   capacity_.resize(regions, 0);
   ranges_.assign(regions, Range{});
@@ -86,11 +88,13 @@ std::optional<double> WarpCapture::capture(const GpuScene& scene, const Conforma
     if (buffer_.size() < bytes)
       buffer_ = Buffer(context_, bytes + bytes / 4,
                        VK_BUFFER_USAGE_TRANSFORM_FEEDBACK_BUFFER_BIT_EXT |
-                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
+                           VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                        BufferMemory::Device);
+    split_->bind(buffer_.get(), buffer_.size() / (3 * sizeof(CapturedVertex)),
+                 static_cast<std::uint32_t>(regions));
     context_.submitAndWait([&](VkCommandBuffer cmd) {
       stopwatch.start(cmd);
-      record(cmd, scene, prepass, frameSet, warpSet, captureView);
+      record(cmd, scene, prepass, frameSet, warpSet, captureView, snapToRim, splitTornPieces);
       stopwatch.stop(cmd);
     });
     ++captures_;
@@ -122,7 +126,8 @@ std::optional<double> WarpCapture::capture(const GpuScene& scene, const Conforma
 
 void WarpCapture::record(VkCommandBuffer cmd, const GpuScene& scene,
                          const ConformalPrepass& prepass, VkDescriptorSet frameSet,
-                         VkDescriptorSet warpSet, std::uint32_t captureView) {
+                         VkDescriptorSet warpSet, std::uint32_t captureView, bool snapToRim,
+                         bool splitTornPieces) {
   const std::uint32_t regions = static_cast<std::uint32_t>(2 * scene.draws().size());
   if (regions > 0) vkCmdResetQueryPool(cmd, queries_.get(), 0, regions);
   const Pipelines::Capture& capture = pipelines_.capture();
@@ -161,11 +166,21 @@ void WarpCapture::record(VkCommandBuffer cmd, const GpuScene& scene,
     }
   }
   vkCmdEndRenderPass(cmd);
+  std::vector<CapturedCutSplit::Region> dropping;
+  for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+    const std::uint32_t r = static_cast<std::uint32_t>(region(d, PrepassList::Dropping));
+    if (prepass.command(d, PrepassList::Dropping).indexCount > 0)
+      dropping.push_back({ranges_[r].firstVertex / 3, static_cast<std::uint32_t>(capacity_[r]), r});
+  }
+  if (splitTornPieces)
+    split_->record(cmd, queries_.get(), regions, dropping, frameSet, warpSet, snapToRim);
   // The walls' draws read the buffer as vertices (in later submissions).
   VkMemoryBarrier written{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  written.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_WRITE_BIT_EXT;
+  written.srcAccessMask = VK_ACCESS_TRANSFORM_FEEDBACK_WRITE_BIT_EXT | VK_ACCESS_SHADER_WRITE_BIT;
   written.dstAccessMask = VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT;
-  vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT,
+  vkCmdPipelineBarrier(cmd,
+                       VK_PIPELINE_STAGE_TRANSFORM_FEEDBACK_BIT_EXT |
+                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_PIPELINE_STAGE_VERTEX_INPUT_BIT, 0, 1, &written, 0, nullptr, 0,
                        nullptr);
 }

@@ -9,10 +9,12 @@
 // split (shaders/confvis_warp_capture.glsl has the record's layout).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "captured_cut_split.hpp"
 #include "conformal_prepass.hpp"
 #include "gpu_scene.hpp"
 #include "gpu_stopwatch.hpp"
@@ -40,11 +42,14 @@ class WarpCapture {
   // viewProj, params.w above 4: warp.tesc culls by no view). Each list's region is sized from
   // the previous capture's needs (at first a share per patch); a region that overflows (the
   // transform-feedback query's primitives needed above those written) grows to its need and the
-  // capture runs again, so no triangle is silently dropped. Returns the GPU time (nullopt
-  // without timestamps).
+  // capture runs again, so no triangle is silently dropped. The Dropping list's torn pieces
+  // are split in compute after it (captured_cut_split.hpp; not where `splitTornPieces` is false,
+  // a broken render for tests), their ends moved out to the rim where `snapToRim`
+  // (VulkanOptions::snapCutToRim). Returns the GPU time (nullopt without timestamps).
   std::optional<double> capture(const GpuScene& scene, const ConformalPrepass& prepass,
                                 VkDescriptorSet frameSet, VkDescriptorSet warpSet,
-                                std::uint32_t captureView, GpuStopwatch& stopwatch);
+                                std::uint32_t captureView, bool snapToRim,
+                                bool splitTornPieces, GpuStopwatch& stopwatch);
 
   struct Range {
     std::uint32_t firstVertex = 0, vertexCount = 0;
@@ -54,11 +59,14 @@ class WarpCapture {
   VkBuffer buffer() const { return buffer_.get(); }
   // Captures run since construction, including the reruns after an overflow (for tests).
   std::size_t captures() const { return captures_; }
+  // The torn pieces the last capture split in compute (for tests).
+  std::uint32_t tornPieces() const { return split_->tornPieces(); }
 
  private:
   static std::size_t region(std::size_t draw, PrepassList list);
   void record(VkCommandBuffer cmd, const GpuScene& scene, const ConformalPrepass& prepass,
-              VkDescriptorSet frameSet, VkDescriptorSet warpSet, std::uint32_t captureView);
+              VkDescriptorSet frameSet, VkDescriptorSet warpSet, std::uint32_t captureView,
+              bool snapToRim, bool splitTornPieces);
 
   VulkanContext& context_;
   Pipelines& pipelines_;
@@ -67,6 +75,7 @@ class WarpCapture {
   PFN_vkCmdEndTransformFeedbackEXT end_ = nullptr;
   PFN_vkCmdBeginQueryIndexedEXT beginQuery_ = nullptr;
   PFN_vkCmdEndQueryIndexedEXT endQuery_ = nullptr;
+  std::unique_ptr<CapturedCutSplit> split_;
   Buffer buffer_;
   UniqueQueryPool queries_;
   std::uint32_t queryCount_ = 0;

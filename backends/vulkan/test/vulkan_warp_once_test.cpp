@@ -1,7 +1,8 @@
 // The once-a-frame warp (VulkanOptions::warpOncePerFrame, warp_capture.hpp): the pre-pass's
 // tessellated lists tessellated, warped and split at the cut once, captured by transform
 // feedback, and drawn by every wall and eye with its own projection, must draw what each wall's
-// own tessellation draws. The captured positions drawn with another wall's projection must fail.
+// own tessellation draws. The captured positions drawn with another wall's projection must fail,
+// and so must the capture without its torn pieces' split in compute (captured_cut_split.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -40,10 +41,12 @@ TEST(VulkanWarpOncePerFrame, DrawsWhatEachWallsOwnTessellationDraws) {
   // and the capture reused); the captured triangles with the next wall's projection.
   RenderSettings moved = settings;
   moved.head.position = glm::dvec3(-0.2, 0.0, 0.15);
-  const auto render = [&](bool oncePerFrame, std::uint32_t viewShift = 0) {
+  const auto render = [&](bool oncePerFrame, std::uint32_t viewShift = 0,
+                          bool splitTornPieces = true) {
     VulkanOptions options;
     options.warpOncePerFrame = oncePerFrame;
     options.capturedViewShiftForTests = viewShift;
+    options.splitCapturedTornPiecesForTests = splitTornPieces;
     test::ValidatedBackend vk(options);
     vk->setScene(scene);
     std::pair<RenderResult, RenderResult> results{vk->render(config, &map, settings),
@@ -55,6 +58,7 @@ TEST(VulkanWarpOncePerFrame, DrawsWhatEachWallsOwnTessellationDraws) {
   const auto perWall = render(false);
   const auto once = render(true);
   const RenderResult wrongWall = render(true, 1).first;
+  const RenderResult unsplit = render(true, 0, false).first;
   const VulkanConformalStats& counts = perWall.first.stats.vulkan.value().conformalPrepass.value();
   ASSERT_GT(counts.trianglesTessellated, 30u);
   ASSERT_GT(counts.trianglesThroughGeometryShader, 0u);
@@ -76,11 +80,14 @@ TEST(VulkanWarpOncePerFrame, DrawsWhatEachWallsOwnTessellationDraws) {
   const double worstOnce = worst(once.first, perWall.first);
   const double worstMoved = worst(once.second, perWall.second);
   const double worstWrong = worst(wrongWall, perWall.first);
+  const double worstUnsplit = worst(unsplit, perWall.first);
   EXPECT_LE(worstOnce, kBudget);
   EXPECT_LE(worstMoved, kBudget);
   EXPECT_GT(worstWrong, kBudget) << "the wrong wall's projection passed";
+  EXPECT_GT(worstUnsplit, kBudget) << "the capture without its torn pieces' split passed";
   RecordProperty("worst_bad_fraction", std::to_string(std::max(worstOnce, worstMoved)));
   RecordProperty("wrong_wall_worst_bad_fraction", std::to_string(worstWrong));
+  RecordProperty("unsplit_worst_bad_fraction", std::to_string(worstUnsplit));
 }
 
 }  // namespace

@@ -91,6 +91,10 @@ struct VulkanOptions {
   // headlight of the wall this many walls further on (cyclically): a deliberately wrong render
   // for tests.
   std::uint32_t capturedViewShiftForTests = 0;
+  // Conformal mode, once a frame: false leaves the torn pieces' split in compute out, so the
+  // geometry shader's stand-ins for them are drawn as they are (nothing): a deliberately wrong
+  // render for tests.
+  bool splitCapturedTornPiecesForTests = true;
 };
 
 struct VulkanDeviceInfo {
