@@ -12,7 +12,9 @@
 # --full (by hand; it compiles the whole project with TSan, too long for CI): also
 #   `confvis walk` (re-bakes behind the frames) and `confvis view` (the live window) end to end
 #   (CliWalk, CliView): the CLI is built with TSan too and inherits TSAN_OPTIONS.
-# Any report fails the run (halt_on_error, tools/sanitizers/env.sh).
+# The test files compile -O0 (~20 % less compile time for them; they only start threads and
+# compare), the code under test -O1 as before. Any report fails the run (halt_on_error,
+# tools/sanitizers/env.sh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 full=0
@@ -22,7 +24,7 @@ launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 cmake -S . -B build-tsan -G Ninja -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_COMPILER=clang++-14 \
   "-DCMAKE_CXX_FLAGS=-O1 -gline-tables-only -fno-omit-frame-pointer -fsanitize=thread" \
-  -DCONFVIS_WERROR=OFF "${launcher[@]}" >/dev/null
+  -DCONFVIS_TEST_COMPILE_OPTIONS=-O0 -DCONFVIS_WERROR=OFF "${launcher[@]}" >/dev/null
 targets=(confvis_threaded_tests)
 if [ "${full}" = 1 ]; then targets+=(confvis_threaded_cli_tests); fi
 cmake --build build-tsan -j"$(nproc)" --target "${targets[@]}"
