@@ -52,7 +52,7 @@ struct EmbreeBackend::Impl {
       entry.tails = std::make_unique<embree::TailGrid>(
           warp, wall,
           embree::TailGrid::spacingFor(wall, warp.reference(), warp.map().resolution(), scale),
-          kTailGridMargin);
+          embree::TailGrid::marginFor(wall, warp.reference()));
       buildSeconds += secondsSince(start);
     }
     return *entry.tails;
@@ -155,10 +155,6 @@ struct EmbreeBackend::Impl {
     std::uint64_t lastUsed = 0;  // `renders` of Impl when last looked up
     std::unique_ptr<embree::DirectionTable> table;
   };
-  // How far past a wall's edges (metres) its tail grid reaches: the rays from c parallel to an
-  // eye's rays meet the wall's plane about |e - c| beyond the wall (more where the eye is nearer
-  // the wall than c); the tails of eyes farther out look their last vertex up instead.
-  static constexpr double kTailGridMargin = 0.3;
   struct GridEntry {
     std::unique_ptr<WallMapGrid> grid;
     std::uint64_t lastUsed = 0;

@@ -114,6 +114,10 @@ double TailGrid::spacingFor(const Wall& wall, const glm::dvec3& reference, int m
   return kFCoarsening * WallMapGrid::spacingFor(wall, reference, mapResolution, outputScale);
 }
 
+double TailGrid::marginFor(const Wall& wall, const glm::dvec3& reference) {
+  return kMarginPerDistance * std::abs(glm::dot(reference - wall.lowerLeft, wall.normal()));
+}
+
 bool TailGrid::at(const float* qx, const float* qy, int count, float* out) const {
   alignas(32) std::array<float, kPacketSize> gx, gy, mx, my;
   const float lastX = static_cast<float>(across_ - 1), lastY = static_cast<float>(down_ - 1);

@@ -38,8 +38,16 @@ class TailGrid {
   static double spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,
                            double outputScale);
 
-  // `spacing`: F nodes about that many wall pixels apart (spacingFor); `margin`:
-  // metres past each edge of the lit rectangle that the grid covers.
+  // How far past a wall's edges its grid reaches, in the display's units: the rays from c
+  // parallel to an eye's rays meet the wall's plane about |e - c| beyond the wall (more where the
+  // eye is nearer the wall than c), and tails of eyes farther out look their last vertex up
+  // instead. A fifth of c's distance from the wall's plane (0.3 m on cave5): a fixed 0.3 m made
+  // a CAVE in millimetres a grid a thousand times its walls' size (8 GB for 96-px walls).
+  static constexpr double kMarginPerDistance = 0.2;
+  static double marginFor(const Wall& wall, const glm::dvec3& reference);
+
+  // `spacing`: F nodes about that many wall pixels apart (spacingFor); `margin`: how far past
+  // each edge of the lit rectangle the grid covers (marginFor).
   TailGrid(const ConformalWarp& warp, const Wall& wall, double spacing, double margin);
 
   // For 8 positions q (wall pixels): F (not normalised) at [0, 24), A at [24, 48) and B at

@@ -22,7 +22,6 @@ namespace confvis::embree {
 namespace {
 
 constexpr int kWallPixels = 960;
-constexpr double kMargin = 0.3;  // the backend's kTailGridMargin
 
 const RetargetMap& dilationMap() {
   static const RetargetMap map = ceilinglessDilationMap(1.5, 256);
@@ -98,7 +97,8 @@ TailErrors tailErrors(const std::string& wallName, Eye eye, const glm::dvec3& he
   const WallMapGrid grid(warp, wall, spacing);
   const TailGrid tailGrid(warp, wall,
                           TailGrid::spacingFor(wall, warp.reference(), dilationMap().resolution(),
-                                               own.settings.resolutionScale), kMargin);
+                                               own.settings.resolutionScale),
+                          TailGrid::marginFor(wall, warp.reference()));
   CameraRays rays(own.planned.view, own.settings.camera, warp, grid, StereoRays::Exact, 12);
   rays.setTailGrid(&tailGrid);
   const CameraRays lastVertex(own.planned.view, own.settings.camera, warp, grid,
@@ -195,6 +195,33 @@ TEST(EmbreeTailGrid, AsymptoteTailsStayOnTheExactCurve) {
       EXPECT_GT(errors.droppedShift, 1.0);
       EXPECT_GT(errors.otherHead, 1.0);
     }
+}
+
+// The grid reaches past the walls in the display's units: cave5 in millimetres and in kilometres
+// gets the grid it gets in metres, node for node (a fixed 0.3 m margin made the millimetre CAVE's
+// grid a thousand times its walls' size: 8 GB, minutes a frame under ASan).
+TEST(EmbreeTailGrid, ItsReachFollowsTheDisplaysUnits) {
+  const DisplayConfig unit = test::shippedConfig("cave5");
+  const Wall& unitWall = unit.walls.front();
+  const double unitMargin = TailGrid::marginFor(unitWall, dilationMap().reference);
+  EXPECT_NEAR(unitMargin, 0.3, 0.05) << "cave5's walls stand 1.5 m from c";
+  const double spacing = TailGrid::spacingFor(unitWall, dilationMap().reference,
+                                              dilationMap().resolution(), 0.5);
+  std::size_t unitBytes = 0;
+  for (const double scale : {1.0, 1e-3, 1e3}) {
+    Wall wall = unitWall;
+    wall.lowerLeft *= scale;
+    wall.lowerRight *= scale;
+    wall.upperLeft *= scale;
+    RetargetMap map = dilationMap();
+    map.reference *= scale;
+    const ConformalWarp warp(map);
+    const double margin = TailGrid::marginFor(wall, warp.reference());
+    EXPECT_NEAR(margin / scale, unitMargin, 1e-9 * unitMargin) << "scale " << scale;
+    const TailGrid grid(warp, wall, spacing, margin);
+    if (scale == 1.0) unitBytes = grid.bytes();
+    EXPECT_EQ(grid.bytes(), unitBytes) << "scale " << scale;
+  }
 }
 
 }  // namespace
