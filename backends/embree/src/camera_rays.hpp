@@ -78,12 +78,6 @@ class CameraRays {
   // rays from c meet the grid; elsewhere, and for an override's rays, from the last vertex.
   void setTailGrid(const TailGrid* grid);
   const TailGrid* tailGrid() const { return tailGrid_; }
-  // The tail grid's constants for this eye (setTailGrid): q = scale p + offset in wall pixels;
-  // M w = a A + b B with a = aBase + aPerPx px, b = bBase + bPerPy py.
-  struct AsymptoteFrame {
-    float scale = 1, offsetX = 0, offsetY = 0, aBase = 0, aPerPx = 0, bBase = 0, bPerPy = 0;
-  };
-  const AsymptoteFrame& asymptoteFrame() const { return asymptote_; }
 
   // Per packet, in float, structure of arrays in a DirectionTable packet's layout, for `count`
   // (1..kPacketSize) samples at wall-pixel positions (px, py) (lanes from `count` on repeat a
@@ -114,8 +108,8 @@ class CameraRays {
   // tailGeometry and the unmasked tails (exactTails' run layout, unlit lanes included) of 8
   // positions, `count` of them meaningful (the cube map is asked only for those).
   // With a tail grid (setTailGrid), the tails are the curves' asymptotes from it where every
-  // lane's ray from c meets it (asymptoteTails); returns whether they are.
-  bool tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
+  // lane's ray from c meets it (asymptoteTails).
+  void tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
                float* tails) const;
   // tailsAt's tails from the tail grid: the asymptote c + M(v) w + s F(v), started on its line
   // as far from c as the curve reaches (`geometry`: tailGeometry's); false where a lane's ray
@@ -218,8 +212,12 @@ class CameraRays {
     glm::vec3 corner{0.0f}, across{0.0f}, down{0.0f};
   } packet_;
   glm::vec3 targetShift_{0.0f};
+  // The tail grid and this eye's constants for it (setTailGrid): q = scale p + offset in wall
+  // pixels; M w = a A + b B with a = aBase + aPerPx px, b = bBase + bPerPy py.
   const TailGrid* tailGrid_ = nullptr;
-  AsymptoteFrame asymptote_;
+  struct AsymptoteFrame {
+    float scale = 1, offsetX = 0, offsetY = 0, aBase = 0, aPerPx = 0, bBase = 0, bPerPy = 0;
+  } asymptote_;
   const ConformalWarp* warp_ = nullptr;
   const WallMapGrid* grid_ = nullptr;
   StereoRays stereoRays_ = StereoRays::Exact;

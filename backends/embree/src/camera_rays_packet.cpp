@@ -162,10 +162,10 @@ void CameraRays::tailGeometry(const float* px, const float* py, TailGeometry& ou
   out = geometry;
 }
 
-bool CameraRays::tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
+void CameraRays::tailsAt(const float* px, const float* py, int count, TailGeometry& geometry,
                          float* tails) const {
   tailGeometry(px, py, geometry);
-  if (tailGrid_ && asymptoteTails(px, py, count, geometry, tails)) return true;
+  if (tailGrid_ && asymptoteTails(px, py, count, geometry, tails)) return;
   alignas(32) Lanes tailX, tailY, tailZ, fx, fy, fz;
   mapDirections(geometry.ux.data(), geometry.uy.data(), geometry.uz.data(), count, tailX.data(),
                 tailY.data(), tailZ.data());
@@ -184,7 +184,6 @@ bool CameraRays::tailsAt(const float* px, const float* py, int count, TailGeomet
     tails[4 * kPacketSize + lane] = fy[lane] * lastScale;
     tails[5 * kPacketSize + lane] = fz[lane] * lastScale;
   }
-  return false;
 }
 
 float CameraRays::maskTails(const float* alpha, const float* laneReach, const float* tails,

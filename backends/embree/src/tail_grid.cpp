@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -61,60 +60,6 @@ void blendNodes(const glm::vec4* nodes, int fields, int across, int down, const 
   }
 }
 
-// Statistics of field `field` (of `fields` vec4 per node) of a grid `across` x `down` nodes
-// `stepX`, `stepY` wall pixels apart, per region of `regionNodes` x `regionNodes` nodes (the
-// region holding a node, or an interval's or a cell's first node, and for slopes also the one
-// holding its last node): a region's statistics hold for every blend of nodes inside it.
-void fieldStats(const glm::vec4* nodes, int fields, int field, int across, int down, float stepX,
-                float stepY, int regionNodes, int regionsAcross, TailGrid::FieldStats* regions) {
-  const auto node = [&](int i, int j) {
-    return glm::vec3(nodes[static_cast<std::size_t>(fields) * (static_cast<std::size_t>(j) * across + i) +
-                           static_cast<std::size_t>(field)]);
-  };
-  const auto region = [&](int i, int j) -> TailGrid::FieldStats& {
-    return regions[static_cast<std::size_t>(j / regionNodes) * regionsAcross + i / regionNodes];
-  };
-  for (int j = 0; j < down; ++j)
-    for (int i = 0; i < across; ++i) {
-      const glm::vec3 at = node(i, j);
-      TailGrid::FieldStats& own = region(i, j);
-      own.most = std::max(own.most, glm::length(at));
-      float steps[2] = {0.0f, 0.0f};  // to the next node along x and y
-      if (i + 1 < across) {
-        steps[0] = glm::length(node(i + 1, j) - at);
-        for (TailGrid::FieldStats* r : {&own, &region(i + 1, j)})
-          r->slope[0] = std::max(r->slope[0], steps[0] / stepX);
-      }
-      if (j + 1 < down) {
-        steps[1] = glm::length(node(i, j + 1) - at);
-        for (TailGrid::FieldStats* r : {&own, &region(i, j + 1)})
-          r->slope[1] = std::max(r->slope[1], steps[1] / stepY);
-      }
-      if (i > 0 && i + 1 < across)
-        own.second[0] = std::max(own.second[0], glm::length(node(i + 1, j) - 2.0f * at + node(i - 1, j)));
-      if (j > 0 && j + 1 < down)
-        own.second[1] = std::max(own.second[1], glm::length(node(i, j + 1) - 2.0f * at + node(i, j - 1)));
-      // A blend inside the cell from this node is within one step along x and one along y of it
-      // (the far corner through either neighbour: the larger detour of the two).
-      if (i + 1 < across && j + 1 < down) {
-        const float detour =
-            std::max(steps[0] + glm::length(node(i + 1, j + 1) - node(i + 1, j)),
-                     steps[1] + glm::length(node(i + 1, j + 1) - node(i, j + 1)));
-        const float least = glm::length(at) - detour;
-        own.least = std::min(own.least, least);
-      }
-    }
-}
-
-void combine(TailGrid::FieldStats& into, const TailGrid::FieldStats& from) {
-  into.least = std::min(into.least, from.least);
-  into.most = std::max(into.most, from.most);
-  for (int k = 0; k < 2; ++k) {
-    into.slope[k] = std::max(into.slope[k], from.slope[k]);
-    into.second[k] = std::max(into.second[k], from.second[k]);
-  }
-}
-
 }  // namespace
 
 TailGrid::TailGrid(const ConformalWarp& warp, const Wall& wall, double spacing, double margin) {
@@ -162,51 +107,6 @@ TailGrid::TailGrid(const ConformalWarp& warp, const Wall& wall, double spacing, 
       moments_[at + 1] = glm::vec4(glm::vec3(b), 0.0f);
     }
   });
-  // The check's statistics (smoothness), per region of kRegionNodes F nodes (kRegionNodes /
-  // kMomentStride moment nodes: the same regions).
-  // (The moment grid may reach one moment node past the last F node.)
-  constexpr int kMomentRegionNodes = kRegionNodes / kMomentStride;
-  regionsAcross_ = std::max((across_ - 1) / kRegionNodes, (momentsAcross_ - 1) / kMomentRegionNodes) + 1;
-  regionsDown_ = std::max((down_ - 1) / kRegionNodes, (momentsDown_ - 1) / kMomentRegionNodes) + 1;
-  const std::size_t regions = static_cast<std::size_t>(regionsAcross_) * regionsDown_;
-  FieldStats empty;
-  empty.least = std::numeric_limits<float>::infinity();
-  fStats_.assign(regions, empty);
-  momentStats_.assign(2 * regions, empty);
-  const auto fStepX = static_cast<float>(stepX), fStepY = static_cast<float>(stepY);
-  fieldStats(f_.data(), 1, 0, across_, down_, fStepX, fStepY, kRegionNodes, regionsAcross_,
-             fStats_.data());
-  for (int field = 0; field < 2; ++field)
-    fieldStats(moments_.data(), 2, field, momentsAcross_, momentsDown_, kMomentStride * fStepX,
-               kMomentStride * fStepY, kMomentRegionNodes, regionsAcross_,
-               momentStats_.data() + field * regions);
-}
-
-bool TailGrid::smoothness(float x0, float y0, float x1, float y1, Smoothness& out) const {
-  const float gx0 = (x0 - originX_) * nodesPerPixelX_, gy0 = (y0 - originY_) * nodesPerPixelY_;
-  const float gx1 = (x1 - originX_) * nodesPerPixelX_, gy1 = (y1 - originY_) * nodesPerPixelY_;
-  if (!(gx0 >= 0.0f && gy0 >= 0.0f && gx1 <= static_cast<float>(across_ - 1) &&
-        gy1 <= static_cast<float>(down_ - 1) && gx0 <= gx1 && gy0 <= gy1))
-    return false;
-  const int r0x = static_cast<int>(gx0) / kRegionNodes, r0y = static_cast<int>(gy0) / kRegionNodes;
-  const int r1x = std::min(static_cast<int>(gx1) / kRegionNodes, regionsAcross_ - 1);
-  const int r1y = std::min(static_cast<int>(gy1) / kRegionNodes, regionsDown_ - 1);
-  const std::size_t regions = static_cast<std::size_t>(regionsAcross_) * regionsDown_;
-  const std::size_t first = static_cast<std::size_t>(r0y) * regionsAcross_ + r0x;
-  out.f = fStats_[first];
-  out.a = momentStats_[first];
-  out.b = momentStats_[regions + first];
-  for (int ry = r0y; ry <= r1y; ++ry)
-    for (int rx = r0x; rx <= r1x; ++rx) {
-      const std::size_t at = static_cast<std::size_t>(ry) * regionsAcross_ + rx;
-      combine(out.f, fStats_[at]);
-      combine(out.a, momentStats_[at]);
-      combine(out.b, momentStats_[regions + at]);
-    }
-  out.fSpacing[0] = 1.0f / nodesPerPixelX_, out.fSpacing[1] = 1.0f / nodesPerPixelY_;
-  out.momentSpacing[0] = kMomentStride * out.fSpacing[0];
-  out.momentSpacing[1] = kMomentStride * out.fSpacing[1];
-  return true;
 }
 
 double TailGrid::spacingFor(const Wall& wall, const glm::dvec3& reference, int mapResolution,

@@ -47,28 +47,7 @@ class TailGrid {
   // first `count` lies outside the grid (later lanes are clamped into it).
   bool at(const float* qx, const float* qy, int count, float* out) const;
 
-  std::size_t bytes() const {
-    return (f_.size() + moments_.size()) * sizeof(glm::vec4) +
-           (fStats_.size() + momentStats_.size()) * sizeof(FieldStats);
-  }
-
-  // How smooth one field (F, A or B) is over a region, as bilinear blends of its nodes (each
-  // piecewise linear along a row or a column): a lower bound of the blend's length, an upper
-  // bound (the nodes' longest), the steepest slope (per wall pixel) and the largest second
-  // difference of neighbouring nodes (one node spacing, `spacing` wall pixels) along x and y.
-  struct FieldStats {
-    float least = 0.0f, most = 0.0f;
-    float slope[2] = {0.0f, 0.0f}, second[2] = {0.0f, 0.0f};
-  };
-  struct Smoothness {
-    FieldStats f, a, b;
-    float fSpacing[2] = {1.0f, 1.0f}, momentSpacing[2] = {1.0f, 1.0f};  // wall pixels
-  };
-  // The statistics of every region (kRegionNodes x kRegionNodes F nodes, computed once per map)
-  // that meets the rectangle [x0, x1] x [y0, y1] of q (wall pixels), combined; false where the
-  // rectangle reaches outside the grid (tail_bound.hpp turns them into the lattice's check).
-  bool smoothness(float x0, float y0, float x1, float y1, Smoothness& out) const;
-  static constexpr int kRegionNodes = 2 * kMomentStride;
+  std::size_t bytes() const { return (f_.size() + moments_.size()) * sizeof(glm::vec4); }
 
  private:
   float originX_ = 0, originY_ = 0;  // the first node's q, wall pixels
@@ -77,9 +56,6 @@ class TailGrid {
   int momentsAcross_ = 0, momentsDown_ = 0;  // A, B nodes
   std::vector<glm::vec4> f_;        // F in xyz
   std::vector<glm::vec4> moments_;  // A, B: two vec4 per node
-  int regionsAcross_ = 0, regionsDown_ = 0;
-  std::vector<FieldStats> fStats_;       // per region
-  std::vector<FieldStats> momentStats_;  // per region: A, B
 };
 
 }  // namespace confvis::embree

@@ -7,8 +7,6 @@
 #include <limits>
 
 #include "tail_blend.hpp"
-#include "tail_bound.hpp"
-#include "tail_grid.hpp"
 
 namespace confvis::embree {
 
@@ -26,7 +24,7 @@ float asinAbove(float x) {
 }  // namespace
 
 TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int y0, int x1,
-                         int y1, float tolerancePixels, TailCheck check)
+                         int y1, float tolerancePixels)
     : rays_(rays),
       pixelToWall_(static_cast<float>(job.pixelToWall.x), static_cast<float>(job.pixelToWall.y)),
       x0_(x0),
@@ -34,7 +32,6 @@ TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int
       cellsAcross_((x1 - x0 + kTailCellPixels - 1) / kTailCellPixels),
       cellsDown_((y1 - y0 + kTailCellPixels - 1) / kTailCellPixels),
       tolerancePixels_(tolerancePixels),
-      check_(check),
       simd_(job.shading.simd),
       // Packets (blocks of 4 x 2 from the tile's corner) must each lie inside one cell.
       usable_(job.tileSize % kTailCellPixels == 0 && kTailCellPixels % kBlockColumns == 0 &&
@@ -67,11 +64,10 @@ void TailLattice::build() {
   enum Field { kDx, kDy, kDz, kOx, kOy, kOz, kUx, kUy, kUz, kH, kStart, kOffset, kFields };
   std::vector<float> fields(static_cast<std::size_t>(kFields * padded));
   const auto field = [&](int f) { return fields.data() + static_cast<std::size_t>(f * padded); };
-  bool asymptotes = true;  // every node's tails from the tail grid
   for (int first = 0; first < padded; first += kPacketSize) {
     CameraRays::TailGeometry geometry;
     alignas(32) std::array<float, 6 * kPacketSize> tails;
-    asymptotes &= rays_.tailsAt(&wallX[static_cast<std::size_t>(first)], &wallY[static_cast<std::size_t>(first)],
+    rays_.tailsAt(&wallX[static_cast<std::size_t>(first)], &wallY[static_cast<std::size_t>(first)],
                   std::min(kPacketSize, nodeCount - first), geometry, tails.data());
     const auto component = [&](int k, int lane) {
       return tails[static_cast<std::size_t>(k * kPacketSize + lane)];
@@ -101,75 +97,10 @@ void TailLattice::build() {
   const float eyeDistance = glm::length(eye);
   const float sinAsymptote = static_cast<float>(std::sin(kAsymptoteAngle));
   const float tanAsymptote = static_cast<float>(std::tan(kAsymptoteAngle));
-  // The tile's check from the tail grid's statistics (tail_bound.hpp), over the tile's nodes
-  // (the nodes' check takes its second differences inside the tile too).
-  const float cellX = kTailCellPixels * pixelToWall_.x, cellY = kTailCellPixels * pixelToWall_.y;
-  const float tileLeft = static_cast<float>(x0_) * pixelToWall_.x;
-  const float tileTop = static_cast<float>(y0_) * pixelToWall_.y;
-  const float tileRight = tileLeft + static_cast<float>(cellsAcross_) * cellX;
-  const float tileBottom = tileTop + static_cast<float>(cellsDown_) * cellY;
-  // One output pixel's angle (across the ray, the smaller of across and down), the smallest at
-  // the tile's corners: it changes by a few per cent over a tile and peaks where the wall is
-  // nearest the eye, so that no point of the tile sees a smaller one.
-  const auto pixelAngleAt = [&](float wallPixelX, float wallPixelY) {
-    const glm::vec3 toWall =
-        rays_.rayBase() + wallPixelX * rays_.rayStepX() + wallPixelY * rays_.rayStepY();
-    const float distance = glm::length(toWall);
-    const glm::vec3 unit = toWall / distance;
-    const auto across1 = [&](const glm::vec3& step) {
-      return glm::length(step - glm::dot(step, unit) * unit) / distance;
-    };
-    return std::min(across1(pixelToWall_.x * rays_.rayStepX()),
-                    across1(pixelToWall_.y * rays_.rayStepY()));
-  };
-  const float pixelAngle =
-      std::min(std::min(pixelAngleAt(tileLeft, tileTop), pixelAngleAt(tileRight, tileTop)),
-               std::min(pixelAngleAt(tileLeft, tileBottom), pixelAngleAt(tileRight, tileBottom)));
-  const bool everyCell = std::isinf(tolerancePixels_);
-  const float bound = tolerancePixels_ * pixelAngle;
-  constexpr float kInfinity = std::numeric_limits<float>::infinity();
-  tileErrorBound_ = kInfinity;
-  const TailGrid* tailGrid = rays_.tailGrid();
-  if (tailGrid && asymptotes) {
-    const CameraRays::AsymptoteFrame& f = rays_.asymptoteFrame();
-    const float left = tileLeft, right = tileRight, top = tileTop, bottom = tileBottom;
-    const float qx0 = f.scale * left + f.offsetX, qx1 = f.scale * right + f.offsetX;
-    const float qy0 = f.scale * top + f.offsetY, qy1 = f.scale * bottom + f.offsetY;
-    TailGrid::Smoothness smoothness;
-    if (tailGrid->smoothness(std::min(qx0, qx1), std::min(qy0, qy1), std::max(qx0, qx1),
-                             std::max(qy0, qy1), smoothness)) {
-      TileFrame frame;
-      frame.step[0] = std::abs(f.scale) * cellX;
-      frame.step[1] = std::abs(f.scale) * cellY;
-      frame.aMost = std::max(std::abs(f.aBase + f.aPerPx * left), std::abs(f.aBase + f.aPerPx * right));
-      frame.bMost = std::max(std::abs(f.bBase + f.bPerPy * top), std::abs(f.bBase + f.bPerPy * bottom));
-      frame.aStep = std::abs(f.aPerPx) * cellX;
-      frame.bStep = std::abs(f.bPerPy) * cellY;
-      // The tile's least reach (tail_lattice.hpp's per cell): from its nodes' least h, less the
-      // tile's angular diameter (the widest chord between its corners' rays) times |e - c|.
-      float hLeast = kInfinity, chordSquared = 0.0f;
-      for (int n = 0; n < nodeCount; ++n) hLeast = std::min(hLeast, hs[n]);
-      const int tileCorners[4] = {0, across - 1, nodeCount - across, nodeCount - 1};
-      for (int a = 0; a < 4; ++a)
-        for (int b = a + 1; b < 4; ++b) {
-          const int na = tileCorners[a], nb = tileCorners[b];
-          const float cx = uX[na] - uX[nb], cy = uY[na] - uY[nb], cz = uZ[na] - uZ[nb];
-          chordSquared = std::max(chordSquared, cx * cx + cy * cy + cz * cz);
-        }
-      const float spread = eyeDistance * 2.0f * asinAbove(0.5f * std::sqrt(chordSquared));
-      frame.reach = std::max(eyeDistance, (hLeast - spread) / sinAsymptote);
-      tileErrorBound_ = check_.tileBoundScale * tileBlendErrorBound(smoothness, frame);
-    }
-  }
-  // Where the tile passes as a whole, every cell does (the nodes' estimate is at most the
-  // tile's bound); else each cell by its nodes.
-  const bool tilePasses = check_.mode != TailCheck::Mode::Nodes && tileErrorBound_ <= bound;
-  const bool nodeCheck = !tilePasses && check_.mode != TailCheck::Mode::TileOnly;
-  cellErrors_.assign(static_cast<std::size_t>(cellCount), kInfinity);
   // The lattice's second differences along x and y at every node with both neighbours in the
   // tile, once per node (each serves up to four cells): the turn's and the shift's lengths, which
   // a cell weighs by its own reach; a negative turn where the node lacks a neighbour.
-  std::vector<float> seconds(static_cast<std::size_t>(nodeCheck ? 4 * nodeCount : 0), -1.0f);
+  std::vector<float> seconds(static_cast<std::size_t>(4 * nodeCount), -1.0f);
   float* turnX = seconds.data();
   float* shiftX = turnX + nodeCount;
   float* turnY = shiftX + nodeCount;
@@ -184,12 +115,36 @@ void TailLattice::build() {
     turn = length(dX, dY, dZ);
     shift = length(oX, oY, oZ);
   };
-  for (int nj = 0; nj < (nodeCheck ? down : 0); ++nj)
+  for (int nj = 0; nj < down; ++nj)
     for (int ni = 0; ni < across; ++ni) {
       const int n = nj * across + ni;
       if (ni > 0 && ni + 1 < across) second(n - 1, n, n + 1, turnX[n], shiftX[n]);
       if (nj > 0 && nj + 1 < down) second(n - across, n, n + across, turnY[n], shiftY[n]);
     }
+  // One output pixel's angle (across the ray, the smaller of across and down), the smallest at
+  // the tile's corners: it changes by a few per cent over a tile and peaks where the wall is
+  // nearest the eye, so that no point of the tile sees a smaller one.
+  const auto pixelAngleAt = [&](float wallPixelX, float wallPixelY) {
+    const glm::vec3 toWall =
+        rays_.rayBase() + wallPixelX * rays_.rayStepX() + wallPixelY * rays_.rayStepY();
+    const float distance = glm::length(toWall);
+    const glm::vec3 unit = toWall / distance;
+    const auto across1 = [&](const glm::vec3& step) {
+      return glm::length(step - glm::dot(step, unit) * unit) / distance;
+    };
+    return std::min(across1(pixelToWall_.x * rays_.rayStepX()),
+                    across1(pixelToWall_.y * rays_.rayStepY()));
+  };
+  const float tileLeft = static_cast<float>(x0_) * pixelToWall_.x;
+  const float tileTop = static_cast<float>(y0_) * pixelToWall_.y;
+  const float tileRight = static_cast<float>(x0_ + kTailCellPixels * cellsAcross_) * pixelToWall_.x;
+  const float tileBottom = static_cast<float>(y0_ + kTailCellPixels * cellsDown_) * pixelToWall_.y;
+  const float pixelAngle =
+      std::min(std::min(pixelAngleAt(tileLeft, tileTop), pixelAngleAt(tileRight, tileTop)),
+               std::min(pixelAngleAt(tileLeft, tileBottom), pixelAngleAt(tileRight, tileBottom)));
+  const bool everyCell = std::isinf(tolerancePixels_);
+  const float bound = tolerancePixels_ * pixelAngle;
+  constexpr float kInfinity = std::numeric_limits<float>::infinity();
   // The check, cell by cell along each row (structure of arrays: the row's loop vectorises).
   std::vector<float> cellAlong(static_cast<std::size_t>(cellCount)), cellReach(cellAlong.size());
   for (int j = 0; j < cellsDown_; ++j) {
@@ -249,18 +204,14 @@ void TailLattice::build() {
       // neighbours in the tile. A cell with none along an axis (a tile one cell wide) is not
       // interpolated. (The exact centre the blend was also checked against until stereo24
       // changed no cell at 24-480 px walls: EmbreeTailLattice.*.)
-      float error = kInfinity;
-      if (nodeCheck) {
-        float alongX = -1.0f, alongY = -1.0f;  // negative: no node with both neighbours
-        for (int n : corners) {
-          alongX = std::max(alongX, turnX[n] < 0.0f ? -1.0f : turnX[n] + shiftX[n] / reach);
-          alongY = std::max(alongY, turnY[n] < 0.0f ? -1.0f : turnY[n] + shiftY[n] / reach);
-        }
-        if (alongX >= 0.0f && alongY >= 0.0f) error = 0.125f * (alongX + alongY);
-        cellErrors_[static_cast<std::size_t>(firstCell + i)] = error;
+      float alongX = -1.0f, alongY = -1.0f;  // negative: no node with both neighbours
+      for (int n : corners) {
+        alongX = std::max(alongX, turnX[n] < 0.0f ? -1.0f : turnX[n] + shiftX[n] / reach);
+        alongY = std::max(alongY, turnY[n] < 0.0f ? -1.0f : turnY[n] + shiftY[n] / reach);
       }
+      const float error = alongX >= 0.0f && alongY >= 0.0f ? 0.125f * (alongX + alongY) : kInfinity;
       pass_[static_cast<std::size_t>(firstCell + i)] =
-          everyCell || (offLine && (tilePasses || error <= bound)) ? 1 : 0;
+          everyCell || (offLine && error <= bound) ? 1 : 0;
     }
   }
   // The pixels' alpha does not depend on the eye: a cell whose grid samples are all lit needs
@@ -288,17 +239,6 @@ void TailLattice::build() {
         tileLit || (grid && grid->litThroughout(left, top, left + kTailCellPixels * pixelToWall_.x,
                                                 top + kTailCellPixels * pixelToWall_.y));
   }
-}
-
-float TailLattice::tileErrorBound() {
-  if (usable_ && !built_) build();
-  return tileErrorBound_;
-}
-
-float TailLattice::cellErrorEstimate(int x, int y) {
-  if (!usable_) return std::numeric_limits<float>::infinity();
-  if (!built_) build();
-  return cellErrors_[static_cast<std::size_t>(cellIndex(x, y))];
 }
 
 bool TailLattice::interpolated(int x, int y) {

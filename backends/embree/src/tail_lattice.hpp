@@ -39,23 +39,12 @@ inline constexpr int kTailCellPixels = 4;
 // The bound the centre check keeps, in output pixels (the curves' own bound is 0.25 px).
 inline constexpr float kTailTolerancePixels = 0.05f;
 
-// How the lattice checks its cells. Where the tails come from the tail grid, the whole tile is
-// first checked at once from the grid's statistics (tail_bound.hpp: an upper bound of the
-// per-node check, without second differences of the nodes); where that bound fails (or there is
-// no grid), each cell by its nodes' second differences. Tests force either one, and scale the
-// tile's bound (a deliberately too small bound must let through cells off by more than the
-// curves' bound).
-struct TailCheck {
-  enum class Mode { Tile, Nodes, TileOnly } mode = Mode::Tile;
-  float tileBoundScale = 1.0f;
-};
-
 class TailLattice {
  public:
   // The tile [x0, x1) x [y0, y1) of `job`'s image. Nothing is evaluated until the first tails().
   // A tolerance of infinity interpolates every cell (tests: what the check rejects).
   TailLattice(const CameraRays& rays, const TileJob& job, int x0, int y0, int x1, int y1,
-              float tolerancePixels = kTailTolerancePixels, TailCheck check = {});
+              float tolerancePixels = kTailTolerancePixels);
 
   // CameraRays::exactTails for a packet of this tile (its positions px, py): interpolated where
   // its cell passed the check (each lane's reach then the cell's bound, at least its own), else
@@ -71,11 +60,6 @@ class TailLattice {
 
   // Whether the cell holding output pixel (x, y) of the tile is interpolated (builds the lattice).
   bool interpolated(int x, int y);
-  // The check's figures (build the lattice; tests): the tile's bound from the tail grid
-  // (infinity without one), and the per-node estimate of the cell holding pixel (x, y) (both
-  // angles; infinity where the cell has no estimate, or the nodes' check did not run).
-  float tileErrorBound();
-  float cellErrorEstimate(int x, int y);
 
  private:
   void build();
@@ -87,9 +71,6 @@ class TailLattice {
   glm::vec2 pixelToWall_{1.0f};
   int x0_ = 0, y0_ = 0, cellsAcross_ = 0, cellsDown_ = 0;
   float tolerancePixels_ = kTailTolerancePixels;
-  TailCheck check_;
-  float tileErrorBound_ = 0.0f;
-  std::vector<float> cellErrors_;  // per cell: the nodes' estimate (where that check ran)
   TailPlacement placement_;  // the camera's (CameraRays::rotation, placedCentre)
   SimdLevel simd_ = SimdLevel::Sse2;  // which variant of the blend runs (tail_blend.hpp)
   bool usable_ = false;  // tiles aligned to whole cells only

@@ -51,18 +51,13 @@ struct LatticeErrors {
   // regardless (tolerance infinity).
   double worstRejectedForcedPixels = 0.0;
   double worstAcceptedForcedPixels = 0.0;  // the same over the cells it accepts
-  // The tile's bound from the tail grid (TailCheck) against the nodes' estimates of its cells.
-  int tiles = 0, tilesWithBound = 0, tilesPassing = 0;  // passing: within the tolerance
-  int cellsAboveTileBound = 0;  // cells whose nodes' estimate exceeds their tile's bound
-  double worstEstimateOverBound = 0.0;
 };
 
 // Every packet of the image of `eye` on `wallName` seen from `head`, 1 sample a pixel.
 // `asymptotes`: the lattice's nodes from a TailGrid (the backend's exact stereo rays), else from
 // each node's last vertex.
 LatticeErrors latticeErrors(const std::string& wallName, Eye eye, const glm::dvec3& head,
-                            int wallPixels = kWallPixels, bool asymptotes = false,
-                            TailCheck check = {}) {
+                            int wallPixels = kWallPixels, bool asymptotes = false) {
   const DisplayConfig config = test::shippedConfig("cave5");
   const ConformalWarp warp(dilationMap());
   const RenderSettings settings = test::exactStereoWallSettings(wallName, eye, wallPixels, head);
@@ -89,31 +84,7 @@ LatticeErrors latticeErrors(const std::string& wallName, Eye eye, const glm::dve
     for (int x0 = 0; x0 < job.width; x0 += job.tileSize) {
       const int x1 = std::min(x0 + job.tileSize, job.width);
       const int y1 = std::min(y0 + job.tileSize, job.height);
-      TailLattice lattice(rays, job, x0, y0, x1, y1, kTailTolerancePixels, check);
-      // The tile's bound against every cell's estimate by its nodes.
-      TailLattice nodes(rays, job, x0, y0, x1, y1, kTailTolerancePixels,
-                        {TailCheck::Mode::Nodes, 1.0f});
-      const float tileBound = nodes.tileErrorBound();
-      ++errors.tiles;
-      if (std::isfinite(tileBound)) {
-        ++errors.tilesWithBound;
-        // The check's tolerance at the tile's corner pixel (within a few per cent of its least).
-        const glm::dvec3 toCorner = glm::dvec3(rays.rayBase()) +
-                                    double(x0 * job.pixelToWall.x) * glm::dvec3(rays.rayStepX()) +
-                                    double(y0 * job.pixelToWall.y) * glm::dvec3(rays.rayStepY());
-        const glm::dvec3 corner = glm::normalize(toCorner);
-        const double cornerAngle =
-            glm::length(stepX - glm::dot(stepX, corner) * corner) / glm::length(toCorner);
-        errors.tilesPassing += tileBound <= kTailTolerancePixels * cornerAngle ? 1 : 0;
-        for (int y = y0; y < y1; y += kTailCellPixels)
-          for (int x = x0; x < x1; x += kTailCellPixels) {
-            const float estimate = nodes.cellErrorEstimate(x, y);
-            if (!std::isfinite(estimate)) continue;
-            errors.cellsAboveTileBound += estimate > tileBound ? 1 : 0;
-            errors.worstEstimateOverBound =
-                std::max(errors.worstEstimateOverBound, double(estimate) / tileBound);
-          }
-      }
+      TailLattice lattice(rays, job, x0, y0, x1, y1);
       TailLattice forced(rays, job, x0, y0, x1, y1, std::numeric_limits<float>::infinity());
       for (int y = y0; y < y1; y += kBlockRows)
         for (int x = x0; x < x1; x += kBlockColumns) {
@@ -221,46 +192,6 @@ TEST(EmbreeTailLattice, TheCheckRejectsCellsTooWideForTheBound) {
     EXPECT_LT(errors.interpolatedCells, 0.5);
     EXPECT_GT(errors.worstRejectedForcedPixels, 0.3);
     EXPECT_LT(errors.worstPixels, 2.0 * kTailTolerancePixels);
-  }
-}
-
-// The tile's check from the tail grid's statistics (tail_bound.hpp) bounds the nodes' own
-// estimate in every cell of every tile, and passes a share of the tiles at 480-px walls (the rest
-// fall back on the nodes' check).
-TEST(EmbreeTailLattice, TheTileBoundCoversEveryCellsEstimate) {
-  for (int pixels : {96, 240, kWallPixels})
-    for (const char* wall : {"front", "left", "floor"})
-      for (Eye eye : {Eye::Left, Eye::Right}) {
-        const std::string name = std::string(wall) + (eye == Eye::Left ? "_left_" : "_right_") +
-                                 std::to_string(pixels);
-        SCOPED_TRACE(name);
-        const LatticeErrors errors = latticeErrors(wall, eye, {0.06, 0.04, -0.04}, pixels, true);
-        RecordProperty(name + "_tiles_passing",
-                       std::to_string(double(errors.tilesPassing) / errors.tiles));
-        RecordProperty(name + "_estimate_over_bound", std::to_string(errors.worstEstimateOverBound));
-        EXPECT_EQ(errors.cellsAboveTileBound, 0);
-        EXPECT_GT(errors.tilesWithBound, 0.9 * errors.tiles);
-        // The side walls' tiles pass the tile's check in part at 480 px (the floor's none).
-        if (pixels == kWallPixels && std::string(wall) != "floor") {
-          EXPECT_GT(errors.tilesPassing, 0.3 * errors.tiles);
-        }
-      }
-}
-
-// With the tile's bound alone (no nodes' check to fall back on), the lattice stays within its
-// tolerance where cells span too wide an angle (24-px walls); a deliberately too small bound (a
-// thousandth) lets those cells through, off by more than the curves' whole bound (0.25 px).
-// (The floor's 24-px tiles reach past its tail grid: no tile bound there.)
-TEST(EmbreeTailLattice, ATooSmallTileBoundFailsTheAccuracyBound) {
-  for (const char* wall : {"front", "left"}) {
-    SCOPED_TRACE(wall);
-    const LatticeErrors honest = latticeErrors(wall, Eye::Left, {0.06, 0.04, -0.04}, 24, true,
-                                               {TailCheck::Mode::TileOnly, 1.0f});
-    EXPECT_LT(honest.worstPixels, 2.0 * kTailTolerancePixels);
-    const LatticeErrors broken = latticeErrors(wall, Eye::Left, {0.06, 0.04, -0.04}, 24, true,
-                                               {TailCheck::Mode::TileOnly, 1e-3f});
-    RecordProperty(std::string(wall) + "_too_small_worst_px", std::to_string(broken.worstPixels));
-    EXPECT_GT(broken.worstPixels, 0.25);
   }
 }
 
