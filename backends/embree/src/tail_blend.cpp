@@ -59,8 +59,10 @@ struct Blended {
   Ints lit;
 };
 
-Blended blend(const TailCell& cell, const float* px, const float* py, const float* alpha,
-              int count) {
+// Inlined into both callers: a call returns the 7 vectors through memory (measured: the
+// fused path was ~2 % of a moving-head frame slower than the run and runPacket with it).
+[[gnu::always_inline]] inline Blended blend(const TailCell& cell, const float* px,
+                                            const float* py, const float* alpha, int count) {
   const Floats tx = (load(px) - cell.left) * cell.perX;
   const Floats ty = (load(py) - cell.top) * cell.perY;
   const Floats w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
