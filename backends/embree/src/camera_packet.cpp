@@ -143,6 +143,12 @@ bool setUpPaths(const CameraRays& rays, const TileJob& job, const PacketSamples&
   alignas(32) Lanes px, py, reach;
   alignas(32) std::array<float, 6 * kPacketSize> run;
   packetPositions(job, samples, px, py);
+  RTCRay8& ray = hits.rayhit.ray;
+  if (tails && tails->straightRays(samples, px.data(), py.data(),
+                                   rays.emptyRadius(),
+                                   {ray.org_x, ray.org_y, ray.org_z, ray.dir_x, ray.dir_y,
+                                    ray.dir_z, hits.valid.data()}))
+    return true;  // the lattice's tails placed at once, as runPacket places them
   const float packetReach =
       tails ? tails->tails(samples, px.data(), py.data(), run.data(), reach.data())
             : rays.exactTails(px.data(), py.data(), samples.count, run.data(), reach.data());

@@ -53,10 +53,16 @@ Floats select(const Ints& mask, const Floats& v) {
   return reinterpret_cast<Floats>(mask & reinterpret_cast<Ints>(v));
 }
 
-}  // namespace
+// The blended tails of lit lanes (unit direction, start), zeros elsewhere, and the lit mask.
+struct Blended {
+  Floats direction[3], start[3];
+  Ints lit;
+};
 
-float blendTails(const TailCell& cell, const float* px, const float* py, const float* alpha,
-                 int count, float* run, float* reach) {
+// Inlined into both callers: a call returns the 7 vectors through memory (measured: the
+// fused path was ~2 % of a moving-head frame slower than the run and runPacket with it).
+[[gnu::always_inline]] inline Blended blend(const TailCell& cell, const float* px,
+                                            const float* py, const float* alpha, int count) {
   const Floats tx = (load(px) - cell.left) * cell.perX;
   const Floats ty = (load(py) - cell.top) * cell.perY;
   const Floats w00 = (1.0f - tx) * (1.0f - ty), w10 = tx * (1.0f - ty);
@@ -72,15 +78,47 @@ float blendTails(const TailCell& cell, const float* px, const float* py, const f
   const Ints lane = {0, 1, 2, 3, 4, 5, 6, 7};
   const Ints lit = alpha ? (load(alpha) >= 0.5f) : (lane < count);
   const Floats along = cell.along + Floats{};
+  Blended out;
+  out.lit = lit;
   for (std::size_t k = 0; k < 3; ++k) {
     const Floats direction = blended[k] * inverseLength;
-    store(select(lit, direction), run + k * kPacketSize);
-    store(select(lit, blended[3 + k] + along * direction), run + (3 + k) * kPacketSize);
+    out.direction[k] = select(lit, direction);
+    out.start[k] = select(lit, blended[3 + k] + along * direction);
   }
-  store(select(lit, cell.reach + Floats{}), reach);
+  return out;
+}
+
+}  // namespace
+
+float blendTails(const TailCell& cell, const float* px, const float* py, const float* alpha,
+                 int count, float* run, float* reach) {
+  const Blended b = blend(cell, px, py, alpha, count);
+  for (std::size_t k = 0; k < 3; ++k) {
+    store(b.direction[k], run + k * kPacketSize);
+    store(b.start[k], run + (3 + k) * kPacketSize);
+  }
+  store(select(b.lit, cell.reach + Floats{}), reach);
   for (std::size_t k = 0; k < kPacketSize; ++k)
-    if (lit[k]) return cell.reach;
+    if (b.lit[k]) return cell.reach;
   return 0.0f;
+}
+
+void blendRays(const TailCell& cell, const float* px, const float* py, const float* alpha,
+               int count, const TailPlacement& placement, const TailRays& rays) {
+  const Blended b = blend(cell, px, py, alpha, count);
+  const auto& m = placement.rotation;  // m[3 column + row]
+  // runPacket's expressions: m[0][r] x + m[1][r] y + m[2][r] z, origins c + that.
+  const auto turned = [&](const Floats* v, int row) {
+    return m[row] * v[0] + m[3 + row] * v[1] + m[6 + row] * v[2];
+  };
+  float* const directions[3] = {rays.dirX, rays.dirY, rays.dirZ};
+  float* const origins[3] = {rays.orgX, rays.orgY, rays.orgZ};
+  for (int row = 0; row < 3; ++row) {
+    store(turned(b.direction, row), directions[row]);
+    store(placement.centre[static_cast<std::size_t>(row)] + turned(b.start, row), origins[row]);
+  }
+  const Ints traced = (b.direction[0] != 0.0f) | (b.direction[1] != 0.0f) | (b.direction[2] != 0.0f);
+  std::memcpy(rays.valid, &traced, sizeof traced);
 }
 
 }  // namespace confvis::embree::CONFVIS_SIMD_NAMESPACE

@@ -28,13 +28,31 @@ struct TailCell {
 // line inside the ball, which holds no hit: the same hits. `alpha`: nullptr where the cell is
 // lit throughout (the first `count` lanes lit). Unlit lanes (alpha < 0.5): zeros and reach 0; lit ones: reach
 // `cell.reach`. exactTails' run layout; returns the largest reach.
+// The camera's placement of a run of tails (camera_packet.cpp's runPacket): its rotation
+// (glm's column-major mat3) and where c is placed.
+struct TailPlacement {
+  std::array<float, 9> rotation{};
+  std::array<float, 3> centre{};
+};
+// A packet's rays (RTCRay8's origins and directions, structure of arrays, and the lanes to
+// trace): blendTails' tails placed by the camera as runPacket places a run of them, the same
+// floats in the same order, without the run between (the frame's straight packets).
+struct TailRays {
+  float *orgX, *orgY, *orgZ, *dirX, *dirY, *dirZ;
+  int* valid;
+};
+
 namespace sse2 {
 float blendTails(const TailCell& cell, const float* px, const float* py, const float* alpha,
                  int count, float* run, float* reach);
+void blendRays(const TailCell& cell, const float* px, const float* py, const float* alpha,
+               int count, const TailPlacement& placement, const TailRays& rays);
 }
 namespace avx2 {
 float blendTails(const TailCell& cell, const float* px, const float* py, const float* alpha,
                  int count, float* run, float* reach);
+void blendRays(const TailCell& cell, const float* px, const float* py, const float* alpha,
+               int count, const TailPlacement& placement, const TailRays& rays);
 }
 
 inline float blendTails(SimdLevel level, const TailCell& cell, const float* px, const float* py,
@@ -44,6 +62,16 @@ inline float blendTails(SimdLevel level, const TailCell& cell, const float* px, 
 #endif
   (void)level;
   return sse2::blendTails(cell, px, py, alpha, count, run, reach);
+}
+
+inline void blendRays(SimdLevel level, const TailCell& cell, const float* px, const float* py,
+                      const float* alpha, int count, const TailPlacement& placement,
+                      const TailRays& rays) {
+#ifdef CONFVIS_EMBREE_AVX2
+  if (level == SimdLevel::Avx2) return avx2::blendRays(cell, px, py, alpha, count, placement, rays);
+#endif
+  (void)level;
+  sse2::blendRays(cell, px, py, alpha, count, placement, rays);
 }
 
 }  // namespace confvis::embree

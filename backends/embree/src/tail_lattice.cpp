@@ -35,7 +35,14 @@ TailLattice::TailLattice(const CameraRays& rays, const TileJob& job, int x0, int
       simd_(job.shading.simd),
       // Packets (blocks of 4 x 2 from the tile's corner) must each lie inside one cell.
       usable_(job.tileSize % kTailCellPixels == 0 && kTailCellPixels % kBlockColumns == 0 &&
-              kTailCellPixels % kBlockRows == 0) {}
+              kTailCellPixels % kBlockRows == 0) {
+  const glm::mat3& m = rays.rotation();
+  for (int column = 0; column < 3; ++column)
+    for (int row = 0; row < 3; ++row)
+      placement_.rotation[static_cast<std::size_t>(3 * column + row)] = m[column][row];
+  const glm::vec3& c = rays.placedCentre();
+  placement_.centre = {c.x, c.y, c.z};
+}
 
 void TailLattice::build() {
   built_ = true;
@@ -238,6 +245,22 @@ bool TailLattice::interpolated(int x, int y) {
   if (!usable_) return false;
   if (!built_) build();
   return pass_[static_cast<std::size_t>(cellIndex(x, y))] != 0;
+}
+
+bool TailLattice::straightRays(const PacketSamples& samples, const float* px, const float* py,
+                               double emptyRadius, const TailRays& rays) {
+  if (!interpolated(samples.x, samples.y)) return false;
+  const int cell = cellIndex(samples.x, samples.y);
+  const TailCell& corners = cells_[static_cast<std::size_t>(cell)];
+  if (!(corners.reach < emptyRadius)) return false;
+  if (lit_[static_cast<std::size_t>(cell)]) {
+    blendRays(simd_, corners, px, py, nullptr, samples.count, placement_, rays);
+    return true;
+  }
+  alignas(32) Lanes alpha;
+  rays_.pixelAlpha(px, py, samples.count, alpha.data());
+  blendRays(simd_, corners, px, py, alpha.data(), samples.count, placement_, rays);
+  return true;
 }
 
 float TailLattice::tails(const PacketSamples& samples, const float* px, const float* py,

@@ -52,6 +52,12 @@ class TailLattice {
   float tails(const PacketSamples& samples, const float* px, const float* py, float* run,
               float* reach);
 
+  // A straight packet's rays at once (blendRays: tails() placed as runPacket places them), where
+  // the packet's cell is interpolated and its reach lies inside `emptyRadius`; else false and
+  // nothing written (the caller takes tails()).
+  bool straightRays(const PacketSamples& samples, const float* px, const float* py,
+                    double emptyRadius, const TailRays& rays);
+
   // Whether the cell holding output pixel (x, y) of the tile is interpolated (builds the lattice).
   bool interpolated(int x, int y);
 
@@ -65,6 +71,7 @@ class TailLattice {
   glm::vec2 pixelToWall_{1.0f};
   int x0_ = 0, y0_ = 0, cellsAcross_ = 0, cellsDown_ = 0;
   float tolerancePixels_ = kTailTolerancePixels;
+  TailPlacement placement_;  // the camera's (CameraRays::rotation, placedCentre)
   SimdLevel simd_ = SimdLevel::Sse2;  // which variant of the blend runs (tail_blend.hpp)
   bool usable_ = false;  // tiles aligned to whole cells only
   bool built_ = false;

@@ -3,9 +3,12 @@
 // baseline and AVX2 builds bit for bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -142,6 +145,61 @@ TEST(EmbreeTailBlend, BaselineAndAvx2BuildsAgreeBitForBit) {
     ASSERT_EQ(baselineReach, avxReach);
   }
 #endif
+}
+
+// blendRays: the tails blendTails writes, placed by the camera as camera_packet.cpp's runPacket
+// places a run (m[0][r] x + m[1][r] y + m[2][r] z, origins c + that, lanes with a non-zero
+// direction traced): the same floats, in both builds. A transposed rotation must differ.
+TEST(EmbreeTailBlend, PlacedRaysAreTheRunsTailsPlaced) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  using Blend = float (*)(const TailCell&, const float*, const float*, const float*, int, float*,
+                          float*);
+  using Place = void (*)(const TailCell&, const float*, const float*, const float*, int,
+                         const TailPlacement&, const TailRays&);
+  std::vector<std::pair<Blend, Place>> builds = {{sse2::blendTails, sse2::blendRays}};
+#if defined(__x86_64__)
+  if (detectedSimdLevel() == SimdLevel::Avx2) builds.push_back({avx2::blendTails, avx2::blendRays});
+#endif
+  for (const auto& [blendTailsOf, blendRaysOf] : builds)
+    for (int trial = 0; trial < 500; ++trial) {
+      const TailCell cell = randomCell(random);
+      const Packet p = randomPacket(cell, random);
+      glm::mat3 m;
+      for (int column = 0; column < 3; ++column)
+        for (int row = 0; row < 3; ++row) m[column][row] = unit(random);
+      const glm::vec3 c(unit(random), unit(random), unit(random));
+      TailPlacement placement;
+      for (int column = 0; column < 3; ++column)
+        for (int row = 0; row < 3; ++row)
+          placement.rotation[static_cast<std::size_t>(3 * column + row)] = m[column][row];
+      placement.centre = {c.x, c.y, c.z};
+      std::array<float, 6 * kPacketSize> run;
+      std::array<float, kPacketSize> reach;
+      blendTailsOf(cell, p.px.data(), p.py.data(), p.alpha.data(), kPacketSize, run.data(),
+                   reach.data());
+      std::array<std::array<float, kPacketSize>, 6> placed;  // origins, directions
+      std::array<int, kPacketSize> valid;
+      blendRaysOf(cell, p.px.data(), p.py.data(), p.alpha.data(), kPacketSize, placement,
+                  {placed[0].data(), placed[1].data(), placed[2].data(), placed[3].data(),
+                   placed[4].data(), placed[5].data(), valid.data()});
+      bool transposedDiffers = false;
+      for (int lane = 0; lane < kPacketSize; ++lane) {
+        const auto at = [&](int k) { return run[static_cast<std::size_t>(k * kPacketSize + lane)]; };
+        const float sx = at(0), sy = at(1), sz = at(2), ox = at(3), oy = at(4), oz = at(5);
+        for (int r = 0; r < 3; ++r) {
+          const float direction = m[0][r] * sx + m[1][r] * sy + m[2][r] * sz;
+          const float origin = c[r] + (m[0][r] * ox + m[1][r] * oy + m[2][r] * oz);
+          ASSERT_EQ(placed[static_cast<std::size_t>(3 + r)][static_cast<std::size_t>(lane)], direction);
+          ASSERT_EQ(placed[static_cast<std::size_t>(r)][static_cast<std::size_t>(lane)], origin);
+          const float transposed = m[r][0] * sx + m[r][1] * sy + m[r][2] * sz;
+          transposedDiffers = transposedDiffers || transposed != direction;
+        }
+        ASSERT_EQ(valid[static_cast<std::size_t>(lane)], sx != 0.0f || sy != 0.0f || sz != 0.0f ? -1 : 0);
+      }
+      const bool anyTraced = std::find(valid.begin(), valid.end(), -1) != valid.end();
+      EXPECT_EQ(transposedDiffers, anyTraced);
+    }
 }
 
 }  // namespace
