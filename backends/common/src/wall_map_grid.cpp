@@ -9,6 +9,8 @@
 #endif
 #include <tbb/parallel_for.h>
 
+#include "confvis/backends/detail/bilinear_sse.hpp"
+
 namespace confvis {
 namespace {
 
@@ -85,7 +87,7 @@ void WallMapGrid::at(int count, const float* px, const float* py, float* x, floa
   const __m128 lastColumn = _mm_set1_ps(static_cast<float>(columns_ - 1));
   const __m128 lastRow = _mm_set1_ps(static_cast<float>(rows_ - 1));
   const __m128 rowStride = _mm_set1_ps(static_cast<float>(columns_ + 1));
-  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+  const __m128 zero = _mm_setzero_ps();
   const bool exactInFloat = samples_.size() < (std::size_t{1} << 24);
   for (; exactInFloat && k + 4 <= count; k += 4) {
     const __m128 gx = _mm_min_ps(
@@ -104,13 +106,7 @@ void WallMapGrid::at(int count, const float* px, const float* py, float* x, floa
     for (int lane = 0; lane < 4; ++lane) {
       const float* row0 = &samples_[static_cast<std::size_t>(first[lane])].x;
       const float* row1 = row0 + 4 * (columns_ + 1);
-      const __m128 tx = _mm_set1_ps(takeX[lane]), ty = _mm_set1_ps(takeY[lane]);
-      const __m128 kx = _mm_sub_ps(one, tx), ky = _mm_sub_ps(one, ty);
-      const __m128 top = _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(row0), kx),
-                                    _mm_mul_ps(_mm_loadu_ps(row0 + 4), tx));
-      const __m128 bottom = _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(row1), kx),
-                                       _mm_mul_ps(_mm_loadu_ps(row1 + 4), tx));
-      s[lane] = _mm_add_ps(_mm_mul_ps(top, ky), _mm_mul_ps(bottom, ty));
+      s[lane] = detail::blendCellCorners(row0, row1, 4, takeX[lane], takeY[lane]);
     }
     _MM_TRANSPOSE4_PS(s[0], s[1], s[2], s[3]);
     _mm_storeu_ps(x + k, s[0]);

@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "camera_rays.hpp"
+#include "confvis/backends/detail/bilinear_sse.hpp"
 
 namespace confvis::embree {
 
@@ -26,18 +27,11 @@ void blendNodes(const glm::vec4* nodes, int fields, int across, int down, const 
       const float x = gx[first + lane], y = gy[first + lane];
       const int i = std::min(static_cast<int>(x), across - 2);
       const int j = std::min(static_cast<int>(y), down - 2);
-      const __m128 tx = _mm_set1_ps(x - static_cast<float>(i));
-      const __m128 ty = _mm_set1_ps(y - static_cast<float>(j));
-      const __m128 kx = _mm_sub_ps(_mm_set1_ps(1.0f), tx), ky = _mm_sub_ps(_mm_set1_ps(1.0f), ty);
+      const float tx = x - static_cast<float>(i), ty = y - static_cast<float>(j);
       const float* n00 = &nodes[static_cast<std::size_t>(fields) * (static_cast<std::size_t>(j) * across + i)].x;
       const float* n01 = n00 + 4 * fields * across;
-      for (int f = 0; f < fields; ++f) {
-        const __m128 top = _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(n00 + 4 * f), kx),
-                                      _mm_mul_ps(_mm_loadu_ps(n00 + 4 * (fields + f)), tx));
-        const __m128 bottom = _mm_add_ps(_mm_mul_ps(_mm_loadu_ps(n01 + 4 * f), kx),
-                                         _mm_mul_ps(_mm_loadu_ps(n01 + 4 * (fields + f)), tx));
-        s[f][lane] = _mm_add_ps(_mm_mul_ps(top, ky), _mm_mul_ps(bottom, ty));
-      }
+      for (int f = 0; f < fields; ++f)
+        s[f][lane] = detail::blendCellCorners(n00 + 4 * f, n01 + 4 * f, 4 * fields, tx, ty);
     }
     for (int f = 0; f < fields; ++f) {
       _MM_TRANSPOSE4_PS(s[f][0], s[f][1], s[f][2], s[f][3]);
