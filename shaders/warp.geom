@@ -8,6 +8,7 @@
 #include "confvis_render_common.glsl"
 #include "confvis_warp.glsl"
 #include "confvis_warp_rim.glsl"
+#include "confvis_rim_limit.glsl"
 #include "confvis_warp_capture.glsl"
 
 layout(triangles) in;
@@ -77,8 +78,9 @@ void crossing(Corner p, Corner q, out Corner onP, out Corner onQ) {
   // extrapolated limits stop short of it by a band (the square-root growth next to the cut).
   // A loop entered once or not at all (lavapipe runs both sides of an if for every lane).
   for (int once = 0; once < (snapsToRim() ? 1 : 0); ++once) {
-    onP.warped.xyz = confvisSnapToRim(onP.warped.xyz, p.warped.xyz);
-    onQ.warped.xyz = confvisSnapToRim(onQ.warped.xyz, q.warped.xyz);
+    vec3 direction = normalize(x.relative);  // next to a leaf, where the ray map shows x
+    onP.warped.xyz = confvisRimLimit(direction, onP.warped.xyz, p.warped.xyz);
+    onQ.warped.xyz = confvisRimLimit(direction, onQ.warped.xyz, q.warped.xyz);
   }
 }
 
