@@ -38,17 +38,18 @@ bool confvisOnRim(vec3 g) {
 
 // limit: a side's limit of the warp at the crossing (relative to c), own: the warp of that side's
 // corner, crossing: the crossing's virtual direction (unit). confvisSnapToRim from own; where that
-// misses the rim next to a leaf, ten Gauss-Newton steps on the ray map first, without
-// confvisRefineOnRayMap's gates (a limit at the cut is where the geom lookup is least like the ray
-// map; gated, the notch kept 306 black pixels, 244 without). Loops rather than ifs: lavapipe runs
-// both sides of an if for all SIMD lanes.
+// misses the rim next to a leaf, four Gauss-Newton steps on the ray map first (ten give the same
+// images; two leave the left wall's corner worse), without confvisRefineOnRayMap's gates (a limit
+// at the cut is where the geom lookup is least like the ray map; gated, the notch kept 306 black
+// pixels, 244 without). Loops rather than ifs: lavapipe runs both sides of an if for all lanes,
+// so every torn piece pays the descent (the 20k baked frame on lavapipe: a few % more GPU time).
 vec3 confvisRimLimit(vec3 crossing, vec3 limit, vec3 own) {
   vec3 snapped = confvisSnapToRim(limit, own);
   vec3 start = normalize(limit);
   float stretch;
   vec3 first = confvisRayNewtonStep(crossing, start, stretch);
   bool missed = !confvisOnRim(snapped) && stretch < 0.25;
-  vec3 shown = confvisDescendOnRayMap(crossing, start, first, missed ? 10 : 0);
+  vec3 shown = confvisDescendOnRayMap(crossing, start, first, missed ? 4 : 0);
   for (int once = 0; once < (missed ? 1 : 0); ++once)
     snapped = confvisSnapToRim(length(limit) * shown, own);
   return snapped;
