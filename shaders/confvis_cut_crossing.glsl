@@ -6,6 +6,8 @@
 #ifndef CONFVIS_CUT_CROSSING_GLSL
 #define CONFVIS_CUT_CROSSING_GLSL
 
+#include "confvis_rim_limit.glsl"
+
 // A point of the drawn triangle: virtual point relative to c, warp, attributes.
 struct Corner {
   vec3 relative;
@@ -46,11 +48,13 @@ void crossing(Corner p, Corner q, bool snapToRim, out Corner onP, out Corner onQ
   onQ = x;
   confvisWarpRelativeTowardEach(x.relative, w0, w1, onP.warped, onQ.warped);
   // Each side's limit out to the display's rim, as the pre-pass moves its cut vertices: the
-  // extrapolated limits stop short of it by a band (the square-root growth next to the cut).
-  // A loop entered once or not at all (lavapipe runs both sides of an if for every lane).
+  // extrapolated limits stop short of it by a band (the square-root growth next to the cut), and
+  // next to a leaf they stay by their own corners (confvisRimLimit). A loop entered once or not
+  // at all (lavapipe runs both sides of an if for every lane).
   for (int once = 0; once < (snapToRim ? 1 : 0); ++once) {
-    onP.warped.xyz = confvisSnapToRim(onP.warped.xyz, p.warped.xyz);
-    onQ.warped.xyz = confvisSnapToRim(onQ.warped.xyz, q.warped.xyz);
+    vec3 direction = normalize(x.relative);  // next to a leaf, where the ray map shows x
+    onP.warped.xyz = confvisRimLimit(direction, onP.warped.xyz, p.warped.xyz);
+    onQ.warped.xyz = confvisRimLimit(direction, onQ.warped.xyz, q.warped.xyz);
   }
 }
 

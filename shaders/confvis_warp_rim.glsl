@@ -95,6 +95,31 @@ bool confvisGeomFootprintValid(vec3 v) {
   return min(min(alpha.x, alpha.y), min(alpha.z, alpha.w)) >= 0.5;
 }
 
+// Up to `steps` Gauss-Newton steps on the ray map from physical direction p toward the one that
+// shows virtual direction v (both unit), the first of them `first` (confvisRayNewtonStep at p),
+// each at most four ray texels long and kept only where the display shows it and the ray map's
+// residual shrinks.
+vec3 confvisDescendOnRayMap(vec3 v, vec3 p, vec3 first, int steps) {
+  float texel = 2.0 / float(textureSize(confvisCoverageMap, 0).x);
+  float stretch;
+  float residual = distance(confvisRayDirection(p), v);
+  for (int k = 0; k < steps; ++k) {
+    vec3 s = k == 0 ? first : confvisRayNewtonStep(v, p, stretch);
+    s *= min(1.0, 4.0 * texel / max(length(s), 1e-20));  // at most four texels a step
+    // Halved while it leaves the display (the ray map's extension past the rim is extrapolated)
+    // or does not shrink the residual.
+    bool taken = false;
+    for (int halving = 0; halving < 6 && !taken; ++halving, s *= 0.5) {
+      vec3 q = normalize(p + s);
+      float r = distance(confvisRayDirection(q), v);
+      taken = r < residual && confvisDisplayShows(q);
+      p = taken ? q : p;
+      residual = taken ? r : residual;
+    }
+  }
+  return p;
+}
+
 // The cut's ends (issue 23, point 5). Where the source's cut ends (a leaf of the cut: cave5's
 // ceiling-corner directions), T_geom grows like a square root (T_ray like a square), and every
 // lookup of the geom map, the four-texel one included, puts a point on or right next to the leaf
@@ -111,22 +136,7 @@ vec3 confvisRefineOnRayMap(vec3 v, vec3 g) {
   vec3 first = confvisRayNewtonStep(v, g, stretch);
   bool refine = length(first) > 0.5 * texel && confvisGeomFootprintValid(v) &&
                 confvisDisplayShows(g);
-  vec3 p = g;
-  float residual = distance(confvisRayDirection(g), v);
-  for (int k = 0; k < (refine ? 10 : 0); ++k) {
-    vec3 s = k == 0 ? first : confvisRayNewtonStep(v, p, stretch);
-    s *= min(1.0, 4.0 * texel / max(length(s), 1e-20));  // at most four texels a step
-    // Halved while it leaves the display (the ray map's extension past the rim is extrapolated)
-    // or does not shrink the residual.
-    bool taken = false;
-    for (int halving = 0; halving < 6 && !taken; ++halving, s *= 0.5) {
-      vec3 q = normalize(p + s);
-      float r = distance(confvisRayDirection(q), v);
-      taken = r < residual && confvisDisplayShows(q);
-      p = taken ? q : p;
-      residual = taken ? r : residual;
-    }
-  }
+  vec3 p = confvisDescendOnRayMap(v, g, first, refine ? 10 : 0);
   // On the leaf itself T_ray is flat (its stretch vanishes like the distance to the leaf's image,
   // a point of the rim), and the bilinear ray map's preimage of the leaf stays up to a texel
   // below the rim, while Embree's pixels up to the rim see directions next to the leaf: where the
