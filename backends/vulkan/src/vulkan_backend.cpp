@@ -172,7 +172,9 @@ class VulkanBackend final : public VulkanRenderer {
                                                    options_.drawTornPiecesUpToTheCut,
                                                    options_.warpOncePerFrame,
                                                    options_.capturedViewShiftForTests,
-                                                   options_.splitCapturedTornPiecesForTests};
+                                                   options_.splitCapturedTornPiecesForTests,
+                                                   options_.cullFlatListPerWall,
+                                                   options_.cullFlatListAgainstNextWallForTests};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
                           context_->capabilities().maxMultiviewViewCount);
@@ -208,6 +210,7 @@ class VulkanBackend final : public VulkanRenderer {
       prepass.prepassSeconds = counts.seconds;
       prepass.prepassGpuSeconds = counts.gpuSeconds;
       prepass.prepassReused = counts.reused;
+      prepass.flatTrianglesPerWall = counts.flatPerWall;
       for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
         prepass.passGpuSeconds[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
     }

@@ -95,6 +95,13 @@ struct VulkanOptions {
   // geometry shader's stand-ins for them are drawn as they are (nothing): a deliberately wrong
   // render for tests.
   bool splitCapturedTornPiecesForTests = true;
+  // Conformal mode: each wall draws only the flat-list triangles that may show on it (the
+  // warped corners tested against its eyes' frusta in compute, every frame); false: every wall
+  // draws the whole flat list.
+  bool cullFlatListPerWall = true;
+  // Conformal mode: each wall's flat list is culled against the next wall's frusta: a
+  // deliberately wrong render for tests.
+  bool cullFlatListAgainstNextWallForTests = false;
 };
 
 struct VulkanDeviceInfo {
