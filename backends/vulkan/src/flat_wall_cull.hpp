@@ -8,6 +8,9 @@
 // which a reused pre-pass does not see, so the cull runs every conformal frame (a cheap pass over
 // the flat list). The order within a wall's list follows atomic appends; only triangles that tie
 // in depth on the same pixel could tell, as they already can in the pieces list.
+// VulkanOptions::cullFlatListPerWall turns it on; off by default, since on lavapipe the walls'
+// draws gained nothing from it (off-wall triangles are rejected cheaply after vertex shading)
+// while the pass itself cost ~6 % of a 200k-triangle frame (backends/vulkan/README.md).
 #include <cstdint>
 #include <vector>
 

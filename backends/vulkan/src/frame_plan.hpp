@@ -22,7 +22,7 @@ struct TessellationOptions {
   bool warpOncePerFrame = true;          // VulkanOptions::warpOncePerFrame
   std::uint32_t capturedViewShiftForTests = 0;  // VulkanOptions::capturedViewShiftForTests
   bool splitCapturedTornPiecesForTests = true;  // VulkanOptions::splitCapturedTornPiecesForTests
-  bool cullFlatListPerWall = true;                  // VulkanOptions::cullFlatListPerWall
+  bool cullFlatListPerWall = false;                 // VulkanOptions::cullFlatListPerWall
   bool cullFlatListAgainstNextWallForTests = false;  // VulkanOptions::cullFlatListAgainst...
 };
 
@@ -41,7 +41,7 @@ struct FramePlan {
   bool warpOncePerFrame = true;          // TessellationOptions::warpOncePerFrame
   std::uint32_t capturedViewShiftForTests = 0;  // TessellationOptions::capturedViewShiftForTests
   bool splitCapturedTornPiecesForTests = true;  // TessellationOptions::splitCapturedTornPieces...
-  bool cullFlatListPerWall = true;                  // TessellationOptions::cullFlatListPerWall
+  bool cullFlatListPerWall = false;                 // TessellationOptions::cullFlatListPerWall
   bool cullFlatListAgainstNextWallForTests = false;  // TessellationOptions::cullFlatListAgainst...
 };
 
