@@ -9,7 +9,7 @@
 // the flat list). The order within a wall's list follows atomic appends; only triangles that tie
 // in depth on the same pixel could tell, as they already can in the pieces list.
 // VulkanOptions::cullFlatListPerWall turns it on; off by default, since on lavapipe the walls'
-// draws gained nothing from it (off-wall triangles are rejected cheaply after vertex shading)
+// draws gained nothing measurable from it (off-wall triangles seem to be rejected cheaply)
 // while the pass itself cost ~6 % of a 200k-triangle frame (backends/vulkan/README.md).
 #include <cstdint>
 #include <vector>
