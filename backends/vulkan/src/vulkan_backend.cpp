@@ -173,7 +173,9 @@ class VulkanBackend final : public VulkanRenderer {
                                                    options_.warpOncePerFrame,
                                                    options_.capturedViewShiftForTests,
                                                    options_.splitCapturedTornPiecesForTests,
-                                                   options_.cullFlatListPerWall,
+                                                   options_.cullFlatListPerWall.value_or(
+                                                       context_->capabilities().kind !=
+                                                       vulkan::DeviceKind::Cpu),
                                                    options_.cullFlatListAgainstNextWallForTests};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
