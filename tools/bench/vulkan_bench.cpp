@@ -345,6 +345,11 @@ int main(int argc, char** argv) {
   app.add_flag("--time-passes", timePasses,
                "time each pass of the pre-pass (GPU time, median ms) below each row of the timing "
                "table; the timestamps between them slow the navigating frame slightly");
+  std::string flatCull = "auto";
+  app.add_option("--flat-cull", flatCull,
+                 "cull the pre-pass's flat list per wall: on, off, or auto (on for GPUs; "
+                 "VulkanOptions::cullFlatListPerWall)")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
   app.add_option("--bake-resolution", bakeResolution, "texels per face of the baked map")
       ->check(CLI::PositiveNumber);
   app.add_option("--save-images", imageDir,
@@ -363,6 +368,7 @@ int main(int argc, char** argv) {
     // "reused" column is the frame that only moves the head (VulkanOptions::reusePrepass).
     options.reusePrepass = false;
     options.tessellationErrorPixels = errorPixels;
+    if (flatCull != "auto") options.cullFlatListPerWall = flatCull == "on";
     VulkanOptions navigatingOptions = options;
     navigatingOptions.timePrepassPasses = timePasses;
     auto backend = makeVulkanBackend(navigatingOptions);

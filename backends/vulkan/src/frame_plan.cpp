@@ -73,6 +73,8 @@ FramePlan planFrame(const DisplayConfig& config, const RetargetMap* map,
   plan.warpOncePerFrame = tessellation.warpOncePerFrame;
   plan.capturedViewShiftForTests = tessellation.capturedViewShiftForTests;
   plan.splitCapturedTornPiecesForTests = tessellation.splitCapturedTornPiecesForTests;
+  plan.cullFlatListPerWall = tessellation.cullFlatListPerWall;
+  plan.cullFlatListAgainstNextWallForTests = tessellation.cullFlatListAgainstNextWallForTests;
   plan.walls = selectWalls(config, settings);
   plan.eyes = settings.eyes;
   const bool conformal = settings.mode == RenderMode::Conformal;

@@ -22,6 +22,8 @@ struct TessellationOptions {
   bool warpOncePerFrame = true;          // VulkanOptions::warpOncePerFrame
   std::uint32_t capturedViewShiftForTests = 0;  // VulkanOptions::capturedViewShiftForTests
   bool splitCapturedTornPiecesForTests = true;  // VulkanOptions::splitCapturedTornPiecesForTests
+  bool cullFlatListPerWall = false;                 // VulkanOptions::cullFlatListPerWall
+  bool cullFlatListAgainstNextWallForTests = false;  // VulkanOptions::cullFlatListAgainst...
 };
 
 struct FramePlan {
@@ -39,6 +41,8 @@ struct FramePlan {
   bool warpOncePerFrame = true;          // TessellationOptions::warpOncePerFrame
   std::uint32_t capturedViewShiftForTests = 0;  // TessellationOptions::capturedViewShiftForTests
   bool splitCapturedTornPiecesForTests = true;  // TessellationOptions::splitCapturedTornPieces...
+  bool cullFlatListPerWall = false;                 // TessellationOptions::cullFlatListPerWall
+  bool cullFlatListAgainstNextWallForTests = false;  // TessellationOptions::cullFlatListAgainst...
 };
 
 // `map` must be non-null in conformal mode; `maxViews` is the device's multiview limit.

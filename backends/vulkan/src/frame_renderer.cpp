@@ -43,7 +43,7 @@ bool operator==(const ViewData& a, const ViewData& b) {
 FrameRenderer::FrameRenderer(VulkanContext& context, Pipelines& pipelines,
                              bool timePrepassPasses)
     : context_(context), pipelines_(pipelines), prepass_(context, pipelines), stopwatch_(context),
-      timePrepassPasses_(timePrepassPasses) {
+      timePrepassPasses_(timePrepassPasses), flatCull_(context, pipelines) {
   const VkDevice device = context.device();
   FrameDescriptors made = allocateFrameDescriptors(context, pipelines);
   pool_ = std::move(made.pool);
@@ -205,7 +205,23 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
     drawAll(pass.plain.get(), scene.indexBuffer(), PrepassList::Flat);
     return;
   }
-  drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), PrepassList::Flat);
+  if (flatCulled_) {  // the wall's own flat list (flat_wall_cull.hpp)
+    const std::uint32_t wall = request.viewBase / cullEyes_;
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.conformalFlat.get());
+    vkCmdBindIndexBuffer(cmd, flatCull_.indices(), 0, VK_INDEX_TYPE_UINT32);
+    for (std::size_t d = 0; d < scene.draws().size(); ++d) {
+      const GpuScene::Draw& draw = scene.draws()[d];
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
+                              0, nullptr);
+      const PushConstants push{draw.baseColorFactor, request.viewBase,
+                               draw.hasNormals ? 1u : 0u, 0};
+      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+      vkCmdDrawIndexedIndirect(cmd, flatCull_.commands(), flatCull_.commandOffset(wall, d), 1,
+                               sizeof(VkDrawIndexedIndirectCommand));
+    }
+  } else {
+    drawAll(pass.conformalFlat.get(), prepass_.flatIndices(), PrepassList::Flat);
+  }
   // The pieces index the edge midpoints and cut vertices after the scene's (GpuScene's layout).
   drawAll(pass.conformalFlat.get(), prepass_.pieceIndices(), PrepassList::Pieces);
   if (drawCaptured_) {
@@ -264,6 +280,9 @@ FrameRenderer::PrepassCounts FrameRenderer::prepassCounts(const GpuScene& scene)
     counts.passGpuSeconds = prepassPassSeconds_;
   counts.reused = prepassReused_;
   counts.splitAlongCut = prepass_.trianglesSplitAlongCut();
+  if (flatCulled_)
+    for (std::uint32_t wall = 0; wall < flatCull_.walls(); ++wall)
+      counts.flatPerWall.push_back(flatCull_.wallTriangles(wall));
   for (std::size_t d = 0; d < scene.draws().size(); ++d) {
     counts.flat += prepass_.flatTriangles(d) +
                    prepass_.command(d, PrepassList::Pieces).indexCount / 3;
@@ -307,6 +326,7 @@ void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
       conformal && capture_ ? captureViewOf(plan) : std::nullopt;
   uploadFrame(plan, captureView);
   drawCaptured_ = false;
+  flatCulled_ = false;
   if (conformal) {
     std::vector<glm::vec4> viewParams;
     for (const ViewData& view : plan.views) viewParams.push_back(view.params);
@@ -332,6 +352,20 @@ void FrameRenderer::prepareFrame(const FramePlan& plan, const GpuScene& scene,
       addGpuSeconds(prepassGpuSeconds_);
       prepassInputs_ = inputs;
       prepassCurrent_ = true;
+    }
+    // The walls' own flat lists, every frame: the frusta follow the head, which a reused
+    // pre-pass does not see (flat_wall_cull.hpp).
+    if (plan.cullFlatListPerWall) {
+      cullEyes_ = static_cast<std::uint32_t>(plan.eyes.size());
+      context_.submitAndWait([&](VkCommandBuffer cmd) {
+        stopwatch_.start(cmd);
+        flatCull_.record(cmd, scene, frameSet_, prepass_.flatIndices(), prepass_.warped(),
+                         static_cast<std::uint32_t>(plan.walls.size()), cullEyes_,
+                         plan.cullFlatListAgainstNextWallForTests);
+        stopwatch_.stop(cmd);
+      });
+      addGpuSeconds(stopwatch_.seconds());
+      flatCulled_ = true;
     }
     // warp.tesc reads the edge levels (set 0, binding 2), warp.vert the tessellated lists, the
     // scene's vertices and their warps (bindings 3-5); the set is idle now that the pre-pass has

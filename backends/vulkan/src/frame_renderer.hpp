@@ -13,6 +13,7 @@
 #include "confvis/backends/vulkan/external_device.hpp"
 #include "confvis/base/progress.hpp"
 #include "conformal_prepass.hpp"
+#include "flat_wall_cull.hpp"
 #include "frame_plan.hpp"
 #include "gpu_stopwatch.hpp"
 #include "gpu_scene.hpp"
@@ -50,6 +51,8 @@ class FrameRenderer {
     bool reused = false;   // the previous conformal frame's pre-pass was still current
     // Each pass's GPU time (ConformalPrepass::kPassNames' order) where the passes were timed.
     std::vector<double> passGpuSeconds;
+    // Per wall: the flat-list triangles its pass drew (empty where the per-wall cull is off).
+    std::vector<std::uint64_t> flatPerWall;
   };
   PrepassCounts prepassCounts(const GpuScene& scene) const;
 
@@ -124,6 +127,9 @@ class FrameRenderer {
   bool captureCurrent_ = false;  // the buffer holds the current pre-pass's lists...
   ViewData capturedThrough_{};   // ...as drawn through this view
   std::uint32_t viewCount_ = 0, capturedViewShift_ = 0;  // plan.views.size(), in views
+  FlatWallCull flatCull_;
+  bool flatCulled_ = false;       // this frame's walls draw the per-wall flat lists...
+  std::uint32_t cullEyes_ = 1;    // ...of views[wall * cullEyes_ + eye]
 };
 
 }  // namespace confvis::vulkan

@@ -83,7 +83,9 @@ Pipelines::Pipelines(VulkanContext& context) : context_(context) {
   frameSetLayout_ = setLayout(
       device, {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, kAllStages | VK_SHADER_STAGE_COMPUTE_BIT,
                 nullptr},
-               {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr},
+               // The views: also the per-wall cull of the flat list (flat_wall_cull.cpp).
+               {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages | VK_SHADER_STAGE_COMPUTE_BIT,
+                nullptr},
                {2, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
                 nullptr},
                // The conformal vertex shaders read their vertices themselves

@@ -172,7 +172,11 @@ class VulkanBackend final : public VulkanRenderer {
                                                    options_.drawTornPiecesUpToTheCut,
                                                    options_.warpOncePerFrame,
                                                    options_.capturedViewShiftForTests,
-                                                   options_.splitCapturedTornPiecesForTests};
+                                                   options_.splitCapturedTornPiecesForTests,
+                                                   options_.cullFlatListPerWall.value_or(
+                                                       context_->capabilities().kind !=
+                                                       vulkan::DeviceKind::Cpu),
+                                                   options_.cullFlatListAgainstNextWallForTests};
     const vulkan::FramePlan plan =
         vulkan::planFrame(config, map, settings, tessellation,
                           context_->capabilities().maxMultiviewViewCount);
@@ -208,6 +212,7 @@ class VulkanBackend final : public VulkanRenderer {
       prepass.prepassSeconds = counts.seconds;
       prepass.prepassGpuSeconds = counts.gpuSeconds;
       prepass.prepassReused = counts.reused;
+      prepass.flatTrianglesPerWall = counts.flatPerWall;
       for (std::size_t i = 0; i < counts.passGpuSeconds.size(); ++i)
         prepass.passGpuSeconds[vulkan::ConformalPrepass::kPassNames[i]] = counts.passGpuSeconds[i];
     }

@@ -91,6 +91,9 @@ struct VulkanConformalStats {
   // "prepass_pass_gpu_seconds": each compute pass's GPU time by pass name, only where
   // VulkanOptions::timePrepassPasses asked for them and the pre-pass ran.
   std::map<std::string, double> passGpuSeconds;
+  // Per wall drawn (the plan's order): the flat-list triangles its pass drew after the per-wall
+  // cull (VulkanOptions::cullFlatListPerWall; empty where it is off). Not written to the JSON.
+  std::vector<std::uint64_t> flatTrianglesPerWall;
 };
 
 // What only the Vulkan rasterizer measures.

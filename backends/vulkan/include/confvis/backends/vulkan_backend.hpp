@@ -5,6 +5,7 @@
 // device with tessellation and geometry shaders and multiview, lavapipe included.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,16 @@ struct VulkanOptions {
   // geometry shader's stand-ins for them are drawn as they are (nothing): a deliberately wrong
   // render for tests.
   bool splitCapturedTornPiecesForTests = true;
+  // Conformal mode: each wall draws only the flat-list triangles that may show on it (the
+  // warped corners tested against its eyes' frusta in compute, every frame); false: every wall
+  // draws the whole flat list. Unset: on for GPUs, off for CPU drivers. On an H200 the 1M-triangle
+  // baked frame's GPU time went from 1.52x plain to 0.82x at 480-px walls (1.25x to 1.11x at
+  // 1920 px); on lavapipe it saved nothing at 20k triangles and cost ~6 % at 200k
+  // (backends/vulkan/README.md).
+  std::optional<bool> cullFlatListPerWall;
+  // Conformal mode: each wall's flat list is culled against the next wall's frusta: a
+  // deliberately wrong render for tests.
+  bool cullFlatListAgainstNextWallForTests = false;
 };
 
 struct VulkanDeviceInfo {
