@@ -27,11 +27,7 @@ constexpr VkDeviceSize kTornHeader = 16;   // count, then the indirect dispatch'
 CapturedCutSplit::CapturedCutSplit(VulkanContext& context, const Pipelines& pipelines)
     : context_(context) {
   const VkDevice device = context.device();
-  std::vector<VkDescriptorSetLayoutBinding> bindings;
-  for (std::uint32_t binding = 0; binding < 3; ++binding)
-    bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                        VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-  setLayout_ = setLayout(device, bindings);
+  setLayout_ = computeBuffersSetLayout(device, 3);
   layout_ = pipelineLayout(
       device, {pipelines.frameSetLayout(), pipelines.warpSetLayout(), setLayout_.get()},
       {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(SplitConstants)});

@@ -26,11 +26,7 @@ constexpr std::uint32_t kCullGroup = 64;  // its local size
 FlatWallCull::FlatWallCull(VulkanContext& context, const Pipelines& pipelines)
     : context_(context) {
   const VkDevice device = context.device();
-  std::vector<VkDescriptorSetLayoutBinding> bindings;
-  for (std::uint32_t binding = 0; binding < 4; ++binding)
-    bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
-                        VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
-  setLayout_ = setLayout(device, bindings);
+  setLayout_ = computeBuffersSetLayout(device, 4);
   layout_ = pipelineLayout(device, {pipelines.frameSetLayout(), setLayout_.get()},
                            {VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(CullConstants)});
   pipeline_ = computePipeline(device, layout_.get(),

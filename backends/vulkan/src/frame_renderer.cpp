@@ -182,16 +182,22 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
     vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
     if (c.indexCount > 0) vkCmdDraw(cmd, c.indexCount, 1, c.firstIndex, 0);
   };
+  // Draw d's material and push constants, bound; the constants returned for the patch lists.
+  const auto bindMaterial = [&](std::size_t d) {
+    const GpuScene::Draw& draw = scene.draws()[d];
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
+                            0, nullptr);
+    const PushConstants push{draw.baseColorFactor, request.viewBase, draw.hasNormals ? 1u : 0u,
+                             0};
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+    return push;
+  };
   const auto drawAll = [&](VkPipeline pipeline, VkBuffer indices, PrepassList list) {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
     if (indices != VK_NULL_HANDLE) vkCmdBindIndexBuffer(cmd, indices, 0, VK_INDEX_TYPE_UINT32);
     for (std::size_t d = 0; d < scene.draws().size(); ++d) {
       const GpuScene::Draw& draw = scene.draws()[d];
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
-                              0, nullptr);
-      const PushConstants push{draw.baseColorFactor, request.viewBase,
-                               draw.hasNormals ? 1u : 0u, 0};
-      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+      const PushConstants push = bindMaterial(d);
       if (!request.conformal)
         vkCmdDrawIndexed(cmd, draw.indexCount, 1, draw.firstIndex, draw.vertexOffset, 0);
       else if (list == PrepassList::Flat || list == PrepassList::Pieces)  // its list and count
@@ -210,12 +216,7 @@ void FrameRenderer::recordDraws(VkCommandBuffer cmd, const Pipelines::Pass& pass
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.conformalFlat.get());
     vkCmdBindIndexBuffer(cmd, flatCull_.indices(), 0, VK_INDEX_TYPE_UINT32);
     for (std::size_t d = 0; d < scene.draws().size(); ++d) {
-      const GpuScene::Draw& draw = scene.draws()[d];
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 2, 1, &draw.material,
-                              0, nullptr);
-      const PushConstants push{draw.baseColorFactor, request.viewBase,
-                               draw.hasNormals ? 1u : 0u, 0};
-      vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_ALL_GRAPHICS, 0, sizeof(push), &push);
+      bindMaterial(d);
       vkCmdDrawIndexedIndirect(cmd, flatCull_.commands(), flatCull_.commandOffset(wall, d), 1,
                                sizeof(VkDrawIndexedIndirectCommand));
     }

@@ -118,6 +118,8 @@ UniqueDescriptorSetLayout setLayout(VkDevice device,
                                     const std::vector<VkDescriptorSetLayoutBinding>& bindings);
 UniquePipelineLayout pipelineLayout(VkDevice device, const std::vector<VkDescriptorSetLayout>& sets,
                                     const VkPushConstantRange& push);
+// `count` storage buffers at bindings 0 .. count - 1 for a compute pass (pipelines_compute.cpp).
+UniqueDescriptorSetLayout computeBuffersSetLayout(VkDevice device, std::uint32_t count);
 // A compute pipeline of `module`'s main (pipelines_compute.cpp).
 UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
                                const UniqueShaderModule& module);

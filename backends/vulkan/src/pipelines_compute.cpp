@@ -20,6 +20,14 @@
 
 namespace confvis::vulkan {
 
+UniqueDescriptorSetLayout computeBuffersSetLayout(VkDevice device, std::uint32_t count) {
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  for (std::uint32_t binding = 0; binding < count; ++binding)
+    bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
+                        VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
+  return setLayout(device, bindings);
+}
+
 UniquePipeline computePipeline(VkDevice device, VkPipelineLayout layout,
                                const UniqueShaderModule& module) {
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};

@@ -10,10 +10,8 @@
 #include <string>
 #include <utility>
 
-#include "confvis/conformal/bake_display.hpp"
-#include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_image_checks.hpp"
-#include "vulkan_test_support.hpp"
+#include "vulkan_two_frames.hpp"
 
 namespace confvis {
 namespace {
@@ -25,29 +23,13 @@ constexpr float kTolerance = 0.05f;
 constexpr double kBudget = 0.0005;
 
 TEST(VulkanFlatWallCull, EachWallDrawsWhatTheWholeFlatListDraws) {
-  const DisplayConfig config = test::loadConfig("cave5");
-  const RetargetMap map = test::bakeUncached(config, 64);
-  BuiltinSceneOptions sceneOptions;
-  sceneOptions.subdivision = 40;  // 19k triangles
-  const Scene scene = builtinScene("checker-sphere", sceneOptions);
-  RenderSettings settings;
-  settings.mode = RenderMode::Conformal;
-  settings.resolutionScale = test::scaleFor(config, 128);
-  settings.eyes = {Eye::Left, Eye::Right};
-  settings.head.position = glm::dvec3(0.1, 0.05, 0.1);
-  RenderSettings moved = settings;  // the next frame: the pre-pass reused, the frusta moved
-  moved.head.position = glm::dvec3(-0.2, 0.0, 0.15);
+  const test::TwoFrames two;
+  const DisplayConfig& config = two.config;
   const auto render = [&](bool cull, bool nextWallsFrusta = false) {
     VulkanOptions options;
     options.cullFlatListPerWall = cull;
     options.cullFlatListAgainstNextWallForTests = nextWallsFrusta;
-    test::ValidatedBackend vk(options);
-    vk->setScene(scene);
-    std::pair<RenderResult, RenderResult> results{vk->render(config, &map, settings),
-                                                  vk->render(config, &map, moved)};
-    EXPECT_TRUE(results.second.stats.vulkan.value().conformalPrepass.value().prepassReused);
-    test::expectNoValidationMessages(vk);
-    return results;
+    return two.render(options);
   };
   const auto whole = render(false);
   const auto culled = render(true);

@@ -9,10 +9,8 @@
 #include <string>
 #include <utility>
 
-#include "confvis/conformal/bake_display.hpp"
-#include "confvis/engine/builtin_scenes.hpp"
 #include "vulkan_image_checks.hpp"
-#include "vulkan_test_support.hpp"
+#include "vulkan_two_frames.hpp"
 
 namespace confvis {
 namespace {
@@ -25,35 +23,16 @@ constexpr float kTolerance = 0.05f;
 constexpr double kBudget = 0.001;
 
 TEST(VulkanWarpOncePerFrame, DrawsWhatEachWallsOwnTessellationDraws) {
-  // cave5's baked map: bent triangles, and torn pieces at its cut that the geometry shader
-  // splits, on several walls; two eyes in one multiview pass.
-  const DisplayConfig config = test::loadConfig("cave5");
-  const RetargetMap map = test::bakeUncached(config, 64);
-  BuiltinSceneOptions sceneOptions;
-  sceneOptions.subdivision = 40;  // 19k triangles
-  const Scene scene = builtinScene("checker-sphere", sceneOptions);
-  RenderSettings settings;
-  settings.mode = RenderMode::Conformal;
-  settings.resolutionScale = test::scaleFor(config, 128);
-  settings.eyes = {Eye::Left, Eye::Right};
-  settings.head.position = glm::dvec3(0.1, 0.05, 0.1);
   // Per wall and once a frame (that frame, and the next one with the head moved: the pre-pass
   // and the capture reused); the captured triangles with the next wall's projection.
-  RenderSettings moved = settings;
-  moved.head.position = glm::dvec3(-0.2, 0.0, 0.15);
+  const test::TwoFrames two;
   const auto render = [&](bool oncePerFrame, std::uint32_t viewShift = 0,
                           bool splitTornPieces = true) {
     VulkanOptions options;
     options.warpOncePerFrame = oncePerFrame;
     options.capturedViewShiftForTests = viewShift;
     options.splitCapturedTornPiecesForTests = splitTornPieces;
-    test::ValidatedBackend vk(options);
-    vk->setScene(scene);
-    std::pair<RenderResult, RenderResult> results{vk->render(config, &map, settings),
-                                                  vk->render(config, &map, moved)};
-    EXPECT_TRUE(results.second.stats.vulkan.value().conformalPrepass.value().prepassReused);
-    test::expectNoValidationMessages(vk);
-    return results;
+    return two.render(options);
   };
   const auto perWall = render(false);
   const auto once = render(true);
