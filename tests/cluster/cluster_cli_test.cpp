@@ -181,6 +181,10 @@ struct RunningWalk {
   RunningWalk(const std::string& name, const std::string& options) {
     out = scratch(name);
     pids = scratch(name + "-pids");
+    // scratch() is per process id, and ids come round again: a frame or pid file left by an
+    // earlier run under the same id would be taken for this walk's (a dead rank's pid).
+    fs::remove_all(out);
+    fs::remove_all(pids);
     fs::create_directories(pids);
     const std::string walk = std::string(CONFVIS_CLI_PATH) +
                              " walk --frames 400 --fps 8 --scale 0.02 --bake-resolution 32 -q "
