@@ -71,4 +71,5 @@ for suite in $("$bin/confvis_tests" --gtest_filter="$filter" --gtest_list_tests 
   step "tests-${suite//\//-}" 150 "$bin/confvis_tests" --gtest_filter="$suite.*"
 done
 step goldens 150 "$bin/confvis_tests" --gtest_filter='BuiltinScenes/VulkanGolden*'
-grep -HE "^\[  (PASSED|FAILED) " "$out"/tests-*.txt "$out"/goldens.txt 2>/dev/null
+grep -HE "^\[  (PASSED|FAILED) " "$out"/tests-*.txt "$out"/goldens.txt 2>/dev/null ||
+  true  # the goldens step may be left out
