@@ -21,13 +21,6 @@ struct TailCell {
   float along = 0.0f;  // how far along the blended line from O each sample starts
 };
 
-// Per lane (wall-pixel position px, py; alpha the map's at the sample): the blended D
-// normalised, and as the start O + cell.along D on the blended line (O blended too), which the
-// lattice keeps no farther from c than the cell's reach. Only lanes whose reach lies inside the
-// empty ball are traced as tails, and there this start and the one on the curve lie on the same
-// line inside the ball, which holds no hit: the same hits. `alpha`: nullptr where the cell is
-// lit throughout (the first `count` lanes lit). Unlit lanes (alpha < 0.5): zeros and reach 0; lit ones: reach
-// `cell.reach`. exactTails' run layout; returns the largest reach.
 // The camera's placement of a run of tails (camera_packet.cpp's runPacket): its rotation
 // (glm's column-major mat3) and where c is placed.
 struct TailPlacement {
@@ -42,6 +35,14 @@ struct TailRays {
   int* valid;
 };
 
+// Per lane (wall-pixel position px, py; alpha the map's at the sample): the blended D
+// normalised, and as the start O + cell.along D on the blended line (O blended too), which the
+// lattice keeps no farther from c than the cell's reach. Only lanes whose reach lies inside the
+// empty ball are traced as tails, and there this start and the one on the curve lie on the same
+// line inside the ball, which holds no hit: the same hits. `alpha`: nullptr where the cell is
+// lit throughout (the first `count` lanes lit). Unlit lanes (alpha < 0.5): zeros and reach 0; lit
+// ones: reach `cell.reach`. exactTails' run layout; returns the largest reach. blendRays: the
+// same tails placed (TailPlacement) straight into `rays`, lanes traced where lit.
 namespace sse2 {
 float blendTails(const TailCell& cell, const float* px, const float* py, const float* alpha,
                  int count, float* run, float* reach);
