@@ -23,10 +23,7 @@ namespace {
 constexpr double kSphereRadius = 10.0;  // the checker-sphere's, around c
 constexpr int kWallPixels = 64;
 
-const RetargetMap& dilationMap() {
-  static const RetargetMap map = ceilinglessDilationMap(1.5, 256);
-  return map;
-}
+using test::dilationMap;
 
 // Where the ray of the eye of `view` through its wall (physical direction d, reaching the wall at
 // t = 1) meets the checker-sphere, traced in double with the cube map's own lookups: exact rays

@@ -23,10 +23,7 @@ namespace {
 
 constexpr int kWallPixels = 960;
 
-const RetargetMap& dilationMap() {
-  static const RetargetMap map = ceilinglessDilationMap(1.5, 256);
-  return map;
-}
+using test::dilationMap;
 
 glm::dvec3 runVector(const float* run, int first, int lane) {
   return {run[first * kPacketSize + lane], run[(first + 1) * kPacketSize + lane],

@@ -24,10 +24,7 @@ namespace {
 
 constexpr int kWallPixels = 480;
 
-const RetargetMap& dilationMap() {
-  static const RetargetMap map = ceilinglessDilationMap(1.5, 256);
-  return map;
-}
+using test::dilationMap;
 
 // How far one lane's tail (direction D, start S relative to c) is from another's, in output
 // pixels of `pixelAngle`, for a hit `reach` or more from c (tails only trace hits beyond their

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "confvis/backends/analytic_maps.hpp"
 #include "confvis/backends/embree/embree_backend.hpp"
 #include "confvis/backends/render_plan.hpp"
 #include "confvis/engine/builtin_scenes.hpp"
@@ -24,6 +25,13 @@ inline DisplayConfig shippedConfig(const std::string& name) {
 
 // Scale that turns the shipped 1920-pixel CAVE walls into `pixels`-pixel test images.
 inline double scaleFor(int pixels) { return pixels / 1920.0; }
+
+// The analytic dilation map without a ceiling (analytic_maps.hpp; factor 1.5, 256 texels), made
+// once: the moving-head, tail-grid and tail-lattice tests' map with a known exact curve.
+inline const RetargetMap& dilationMap() {
+  static const RetargetMap map = ceilinglessDilationMap(1.5, 256);
+  return map;
+}
 
 // Conformal exact stereo rays of one eye on one wall, `pixels` wide, the head at `head`: the
 // frames whose tails the lattice and tail-grid tests take apart.
